@@ -63,8 +63,78 @@ def run_basis(args) -> None:
           f"{time.perf_counter() - start:.1f} s")
 
 
+def add_serve(parser):
+    from eigendance.server import DEFAULT_HOST, DEFAULT_PORT
+
+    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING",
+                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC) "
+                             "and mapping JSON files to put in the library")
+    parser.add_argument("--host", default=DEFAULT_HOST,
+                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
+    parser.add_argument("--port", type=int, default=DEFAULT_PORT,
+                        help=f"port (default {DEFAULT_PORT})")
+    parser.add_argument("-k", type=int, default=150,
+                        help="harmonics per mesh basis (default 150)")
+    parser.add_argument("--max-upload-mb", type=int, default=64,
+                        help="largest file a page may upload, MiB (default 64)")
+
+
+def run_serve(args) -> None:
+    from eigendance.server import run, terminal_progress
+    from eigendance.server.app import create_app
+
+    library = _library(args)
+    for path in args.files:
+        library.add_path(path)
+    terminal_progress(library)
+    run(create_app(library=library), args.host, args.port,
+        announce=f"eigendance: serving on {_url(args.host, args.port)}")
+
+
+def add_demo(parser):
+    from eigendance.server import DEFAULT_HOST, DEFAULT_PORT, DEMO_K
+
+    parser.add_argument("--host", default=DEFAULT_HOST,
+                        help=f"address to listen on (default {DEFAULT_HOST})")
+    parser.add_argument("--port", type=int, default=DEFAULT_PORT,
+                        help=f"port (default {DEFAULT_PORT})")
+    parser.add_argument("-k", type=int, default=DEMO_K,
+                        help=f"harmonics of the demo mesh (default {DEMO_K})")
+    parser.add_argument("--max-upload-mb", type=int, default=64,
+                        help="largest file a page may upload, MiB (default 64)")
+
+
+def run_demo(args) -> None:
+    from eigendance.server import demo_paths, run, terminal_progress
+    from eigendance.server.app import create_app
+
+    library = _library(args)
+    terminal_progress(library)
+    for path in demo_paths(library.folder):
+        library.add_path(path)
+    run(create_app(library=library), args.host, args.port,
+        announce=f"eigendance demo: open {_url(args.host, args.port)} in a browser")
+
+
+def _library(args):
+    import tempfile
+
+    from eigendance.server.library import Library
+
+    return Library(tempfile.mkdtemp(prefix="eigendance-library-"), k=args.k,
+                   max_upload_bytes=args.max_upload_mb << 20)
+
+
+def _url(host: str, port: int) -> str:
+    shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
+    shown = f"[{shown}]" if ":" in shown else shown
+    return f"http://{shown}:{port}/"
+
+
 COMMANDS = {
     "basis": (add_basis, run_basis, "compute the manifold-harmonic basis of a mesh"),
+    "serve": (add_serve, run_serve, "serve the web app: live player and animated gallery"),
+    "demo": (add_demo, run_demo, "serve the web app with the built-in mesh and music"),
 }
 
 

@@ -1,0 +1,80 @@
+"""`eigendance serve` / `eigendance demo`: the web app's HTTP server (DESIGN §1, §6, §8).
+
+Routes (every error is a one-line JSON object ``{"error": "…"}`` with a 4xx status):
+
+- ``GET /api/library`` — meshes (with basis state), songs and mappings.
+- ``GET /api/meshes/{id}/basis.bin`` — the basis as a binary bundle (`binary.basis_bundle`).
+- ``GET /api/songs/{id}/spectrogram.bin``, ``GET /api/songs/{id}/audio``.
+- ``GET /api/jobs/{id}`` and ``/api/jobs/{id}/events`` (server-sent events) — basis progress.
+- ``POST /api/upload?name=FILE`` — raw body; mesh, audio or mapping JSON by suffix and content.
+- ``POST /api/gallery`` ``{mesh, song, size}`` and ``POST /api/breed`` ``{parents, size, seed}``
+  — mappings from `eigendance.mapping` (the one implementation).
+- ``GET /api/mappings/{id}``, ``POST /api/mappings?name=`` — saved mappings.
+- ``/`` — the built front end (package folder ``static/``, built from ``web/`` by ``make``).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+
+DEFAULT_HOST = "127.0.0.1"
+DEFAULT_PORT = 8765
+DEMO_K = 150
+
+
+def run(app, host: str, port: int, announce: str | None = None) -> None:
+    """Serve `app` until interrupted; print `announce` (one line) once the socket listens."""
+    import uvicorn
+
+    config = uvicorn.Config(app, host=host, port=port, log_level="warning", access_log=False)
+    server = uvicorn.Server(config)
+    if announce:
+        original = server.startup
+
+        async def startup(sockets=None):
+            await original(sockets=sockets)
+            if server.started:
+                print(announce, flush=True)
+
+        server.startup = startup
+    server.run()
+    if not server.started:
+        from eigendance.errors import EigendanceError
+
+        raise EigendanceError(f"cannot listen on {host}:{port} (in use, or not allowed)")
+
+
+def terminal_progress(library) -> None:
+    """Show basis jobs on stderr: a tqdm bar on a terminal, a line at the end otherwise."""
+    from tqdm import tqdm
+
+    bars = {}
+
+    def listener(job):
+        bar = bars.get(job.id)
+        if bar is None:
+            bar = bars[job.id] = tqdm(total=job.total, desc="basis eigenpairs", unit="pair",
+                                      file=sys.stderr, disable=not sys.stderr.isatty(),
+                                      leave=False)
+        bar.update(max(0, job.done - bar.n))
+        if job.state in ("done", "error"):
+            bar.close()
+            if job.state == "error":
+                print(f"eigendance: basis failed: {job.message}", file=sys.stderr)
+
+    library.progress_listeners.append(listener)
+
+
+def demo_paths(folder: str) -> list[str]:
+    """The built-in mesh and the procedural track (written once as WAV into `folder`)."""
+    from importlib import resources
+
+    from eigendance.server.deps import demo_track, write_wav
+
+    mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
+    song = os.path.join(folder, "eigendance-demo-music.wav")
+    if not os.path.exists(song):
+        samples, sample_rate = demo_track()
+        write_wav(song, samples, sample_rate)
+    return [mesh, song]

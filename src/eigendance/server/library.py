@@ -1,0 +1,235 @@
+"""The server's library: meshes (with their basis jobs), songs (with spectrograms), mappings.
+
+Items get short random ids; files a person uploads are stored as ``<id><suffix>`` inside the
+library folder, so names from the network never become paths. Bases are computed by one worker
+thread through `HarmonicBasis.from_mesh` (and its on-disk cache); each job records its progress
+for the page (server-sent events).
+"""
+
+from __future__ import annotations
+
+import os
+import secrets
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+
+from eigendance.errors import EigendanceError
+from eigendance.mesh import MESH_SUFFIXES
+
+AUDIO_SUFFIXES = (".wav", ".mp3", ".ogg", ".oga", ".opus", ".flac", ".m4a")
+MAPPING_SUFFIXES = (".json",)
+
+
+def new_id() -> str:
+    return secrets.token_hex(6)
+
+
+@dataclass
+class Job:
+    id: str
+    kind: str
+    total: int
+    done: int = 0
+    state: str = "queued"  # queued | running | done | error
+    message: str = ""
+    started: float = field(default_factory=time.time)
+    changed: threading.Condition = field(default_factory=threading.Condition)
+
+    def update(self, **values) -> None:
+        with self.changed:
+            for name, value in values.items():
+                setattr(self, name, value)
+            self.changed.notify_all()
+
+    def as_json(self) -> dict:
+        return {"id": self.id, "kind": self.kind, "state": self.state, "done": self.done,
+                "total": self.total, "message": self.message}
+
+
+@dataclass
+class MeshItem:
+    id: str
+    name: str
+    path: str
+    k: int
+    vertices: int = 0
+    job: Job | None = None
+    basis: object = None
+    bundle: bytes | None = None
+
+    def as_json(self) -> dict:
+        return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
+                "ready": self.basis is not None,
+                "job": self.job.as_json() if self.job else None}
+
+
+@dataclass
+class SongItem:
+    id: str
+    name: str
+    path: str
+    spectrogram: object = None
+    bundle: bytes | None = None
+
+    def as_json(self) -> dict:
+        duration = float(getattr(self.spectrogram, "duration", 0) or 0)
+        return {"id": self.id, "name": self.name, "duration": duration}
+
+
+@dataclass
+class MappingItem:
+    id: str
+    name: str
+    data: dict
+
+    def as_json(self) -> dict:
+        return {"id": self.id, "name": self.name}
+
+
+def kind_of(name: str) -> str:
+    suffix = os.path.splitext(name)[1].lower()
+    if suffix in MESH_SUFFIXES:
+        return "mesh"
+    if suffix in AUDIO_SUFFIXES:
+        return "song"
+    if suffix in MAPPING_SUFFIXES:
+        return "mapping"
+    raise EigendanceError(f"{os.path.basename(name)}: unknown file type '{suffix}' (meshes: "
+                          f"{' '.join(MESH_SUFFIXES)}; audio: {' '.join(AUDIO_SUFFIXES)}; "
+                          "mappings: .json)")
+
+
+class Library:
+    def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
+                 spectrogram_options: dict | None = None):
+        self.folder = folder
+        os.makedirs(folder, exist_ok=True)
+        self.k = k
+        self.max_upload_bytes = max_upload_bytes
+        self.spectrogram_options = spectrogram_options or {}
+        self.meshes: dict[str, MeshItem] = {}
+        self.songs: dict[str, SongItem] = {}
+        self.mappings: dict[str, MappingItem] = {}
+        self.jobs: dict[str, Job] = {}
+        self.lock = threading.Lock()
+        self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="basis")
+        self.progress_listeners = []  # callables(job) for the terminal
+
+    # --- adding items -----------------------------------------------------------------------
+    def add_path(self, path: str, name: str | None = None, k: int | None = None):
+        """Register a file by its kind (suffix). Meshes start a basis job; songs are decoded."""
+        name = name or os.path.basename(path)
+        kind = kind_of(name)
+        if not os.path.isfile(path):
+            raise EigendanceError(f"{path}: no such file")
+        if kind == "mesh":
+            return self.add_mesh(path, name, k)
+        if kind == "song":
+            return self.add_song(path, name)
+        return self.add_mapping_file(path, name)
+
+    def add_mesh(self, path: str, name: str, k: int | None = None) -> MeshItem:
+        from eigendance.mesh import load_mesh
+
+        mesh = load_mesh(path)  # raises EigendanceError on anything unreadable
+        if mesh.non_manifold_edge_count():
+            laplacian = "robust"
+        else:
+            laplacian = "cotan"
+        k = max(2, min(k or self.k, len(mesh.vertices) - 2))
+        item = MeshItem(new_id(), name, path, k, len(mesh.vertices))
+        job = Job(new_id(), "basis", k)
+        item.job = job
+        with self.lock:
+            self.meshes[item.id] = item
+            self.jobs[job.id] = job
+        self.worker.submit(self._solve, item, mesh, laplacian)
+        return item
+
+    def _solve(self, item: MeshItem, mesh, laplacian: str) -> None:
+        from eigendance.harmonics import HarmonicBasis
+        from eigendance.server.binary import basis_bundle
+
+        job = item.job
+        job.update(state="running")
+
+        def progress(done):
+            job.update(done=int(min(done, job.total)))
+            for listener in self.progress_listeners:
+                listener(job)
+
+        try:
+            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress)
+            item.bundle = basis_bundle(basis, item.name)
+            item.basis = basis
+            job.update(state="done", done=job.total)
+        except EigendanceError as error:
+            job.update(state="error", message=str(error))
+        except Exception as error:  # noqa: BLE001 - reported to the page, never crashes the server
+            job.update(state="error", message=f"{item.name}: basis failed ({error})")
+        for listener in self.progress_listeners:
+            listener(job)
+
+    def add_song(self, path: str, name: str) -> SongItem:
+        from eigendance.server.binary import spectrogram_bundle
+        from eigendance.server.deps import Spectrogram
+
+        try:
+            spectrogram = Spectrogram.from_file(path, **self.spectrogram_options)
+        except EigendanceError:
+            raise
+        except Exception as error:  # noqa: BLE001 - decoders raise many types
+            raise EigendanceError(f"{name}: cannot decode the audio ({error})") from None
+        item = SongItem(new_id(), name, path, spectrogram)
+        item.bundle = spectrogram_bundle(spectrogram, name)
+        with self.lock:
+            self.songs[item.id] = item
+        return item
+
+    def add_mapping_file(self, path: str, name: str) -> MappingItem:
+        import json
+
+        try:
+            with open(path, encoding="utf-8") as file:
+                data = json.load(file)
+        except (OSError, ValueError) as error:
+            raise EigendanceError(f"{name}: not a JSON mapping ({error})") from None
+        return self.add_mapping(data, name)
+
+    def add_mapping(self, data, name: str) -> MappingItem:
+        from eigendance.server.deps import mapping_from_json, mapping_to_json
+
+        try:
+            mapping = mapping_from_json(data)
+        except EigendanceError:
+            raise
+        except Exception as error:  # noqa: BLE001
+            raise EigendanceError(f"{name}: not a valid mapping ({error})") from None
+        item = MappingItem(new_id(), name, mapping_to_json(mapping))
+        with self.lock:
+            self.mappings[item.id] = item
+        return item
+
+    # --- lookups ----------------------------------------------------------------------------
+    def as_json(self) -> dict:
+        with self.lock:
+            return {"meshes": [m.as_json() for m in self.meshes.values()],
+                    "songs": [s.as_json() for s in self.songs.values()],
+                    "mappings": [m.as_json() for m in self.mappings.values()]}
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Block until every basis job has finished (tests, CLI)."""
+        deadline = None if timeout is None else time.time() + timeout
+        for job in list(self.jobs.values()):
+            with job.changed:
+                while job.state in ("queued", "running"):
+                    left = None if deadline is None else deadline - time.time()
+                    if left is not None and left <= 0:
+                        return False
+                    job.changed.wait(left)
+        return True
+
+    def close(self) -> None:
+        self.worker.shutdown(wait=False, cancel_futures=True)
