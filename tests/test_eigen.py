@@ -63,10 +63,9 @@ def test_bands_agree_with_eigsh(sphere_problem, sphere_bands):
 
 def test_several_components_each_have_a_zero_eigenvalue():
     mesh = load_mesh(fixture_path("meshes", "teapot.obj"))
-    from eigendance.harmonics import HarmonicBasis
-
     from scipy.sparse.csgraph import connected_components
 
+    from eigendance.harmonics import HarmonicBasis
     from eigendance.mesh import Mesh
 
     basis = HarmonicBasis.from_mesh(mesh, 20, laplacian="robust")

@@ -61,7 +61,7 @@ def _sorted_m_normalised(values, vectors, mass):
 
 PER_BAND = 150          # eigenpairs per band: fastest per pair in measurements (notes)
 OVERLAP = 0.15          # fraction of a band's width shared with its neighbours
-RESIDUAL_TOLERANCE = 1e-9  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, checked for every accepted pair
+RESIDUAL_TOLERANCE = 1e-7  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, checked for every accepted pair
 
 
 @dataclass

@@ -32,7 +32,8 @@ def laplacian(vertices: np.ndarray, faces: np.ndarray,
             np.ascontiguousarray(vertices), np.ascontiguousarray(faces))
         mass = mass_matrix.diagonal()
     else:
-        raise EigendanceError(f"unknown Laplacian '{kind}' (expected one of {', '.join(LAPLACIANS)})")
+        raise EigendanceError(
+            f"unknown Laplacian '{kind}' (expected one of {', '.join(LAPLACIANS)})")
     stiffness = sp.csc_matrix(stiffness, dtype=np.float64)
     stiffness = (stiffness + stiffness.T) / 2  # exact symmetry for the symmetric solvers
     mass = np.asarray(mass, dtype=np.float64)
