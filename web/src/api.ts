@@ -1,0 +1,83 @@
+// The server's JSON/binary API (eigendance.server).
+import { basisFromBundle, parseBundle, spectrumFromBundle } from "./bundle";
+import type { Basis, Spectrum } from "./bundle";
+import type { Mapping } from "./filter";
+
+export interface Job { id: string; kind: string; state: string; done: number; total: number;
+  message: string; }
+export interface MeshInfo { id: string; name: string; k: number; vertices: number; ready: boolean;
+  job: Job | null; }
+export interface SongInfo { id: string; name: string; duration: number; }
+export interface Library { meshes: MeshInfo[]; songs: SongInfo[]; mappings: { id: string;
+  name: string }[]; }
+
+async function checked(response: Response): Promise<Response> {
+  if (!response.ok) {
+    let message = `${response.status} ${response.statusText}`;
+    try { message = (await response.json()).error ?? message; } catch { /* not JSON */ }
+    throw new Error(message);
+  }
+  return response;
+}
+
+export async function getJSON<T>(url: string): Promise<T> {
+  return (await checked(await fetch(url))).json();
+}
+
+export async function postJSON<T>(url: string, body: unknown): Promise<T> {
+  return (await checked(await fetch(url, {
+    method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body),
+  }))).json();
+}
+
+export const library = () => getJSON<Library>("api/library");
+
+export async function basis(meshId: string): Promise<Basis> {
+  const response = await checked(await fetch(`api/meshes/${meshId}/basis.bin`));
+  return basisFromBundle(parseBundle(await response.arrayBuffer()));
+}
+
+export async function spectrum(songId: string): Promise<Spectrum> {
+  const response = await checked(await fetch(`api/songs/${songId}/spectrogram.bin`));
+  return spectrumFromBundle(parseBundle(await response.arrayBuffer()));
+}
+
+export async function audioBytes(songId: string): Promise<ArrayBuffer> {
+  return (await checked(await fetch(`api/songs/${songId}/audio`))).arrayBuffer();
+}
+
+export async function gallery(mesh: string, song: string, size: number): Promise<Mapping[]> {
+  return (await postJSON<{ mappings: Mapping[] }>("api/gallery", { mesh, song, size })).mappings;
+}
+
+export async function breed(parents: Mapping[], size: number, seed: number): Promise<Mapping[]> {
+  return (await postJSON<{ mappings: Mapping[] }>("api/breed", { parents, size, seed })).mappings;
+}
+
+export async function upload(file: File): Promise<any> {
+  const response = await fetch(`api/upload?name=${encodeURIComponent(file.name)}`, {
+    method: "POST", body: file,
+  });
+  return (await checked(response)).json();
+}
+
+/** Follow a basis job by server-sent events until it is done (resolves) or fails (rejects). */
+export function followJob(jobId: string, onProgress: (job: Job) => void): Promise<Job> {
+  return new Promise((resolve, reject) => {
+    const source = new EventSource(`api/jobs/${jobId}/events`);
+    source.onmessage = (event) => {
+      const job = JSON.parse(event.data) as Job;
+      onProgress(job);
+      if (job.state === "done") { source.close(); resolve(job); }
+      if (job.state === "error") { source.close(); reject(new Error(job.message)); }
+    };
+    source.onerror = () => {
+      source.close();
+      getJSON<Job>(`api/jobs/${jobId}`).then((job) => {
+        if (job.state === "done") resolve(job);
+        else if (job.state === "error") reject(new Error(job.message));
+        else followJob(jobId, onProgress).then(resolve, reject);
+      }, reject);
+    };
+  });
+}

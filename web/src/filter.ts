@@ -1,0 +1,117 @@
+// The filter of DESIGN §3–§4, evaluated per frame in the browser; the same numbers as the Python
+// reference (eigendance.mapping / eigendance.animate).
+import type { Basis, Spectrum } from "./bundle";
+
+export interface Mapping {
+  format: "eigendance.mapping";
+  version: number;
+  bands: number;
+  transfer: number[];
+  amplification: number[];
+  seed: number | null;
+}
+
+/** Band values at time t: linear interpolation between the two nearest analysis frames. */
+export function spectrumAt(spectrum: Spectrum, t: number, out?: Float32Array,
+                           values: Float32Array = spectrum.values): Float32Array {
+  const B = spectrum.bands;
+  const result = out ?? new Float32Array(B);
+  const position = Math.min(Math.max(t * spectrum.rate, 0), spectrum.frames - 1);
+  const low = Math.floor(position);
+  const high = Math.min(low + 1, spectrum.frames - 1);
+  const f = position - low;
+  for (let b = 0; b < B; b++) {
+    result[b] = (1 - f) * values[low * B + b] + f * values[high * B + b];
+  }
+  return result;
+}
+
+/** Extra smoothing of the spectrogram frames with time constant tau (s); tau = 0: unchanged. */
+export function smoothed(spectrum: Spectrum, tau: number): Float32Array {
+  if (!(tau > 0)) return spectrum.values;
+  const B = spectrum.bands;
+  const m = Math.exp(-1 / (spectrum.rate * tau));
+  const out = new Float32Array(spectrum.values.length);
+  const state = new Float64Array(B);
+  for (let j = 0; j < spectrum.frames; j++) {
+    for (let b = 0; b < B; b++) {
+      state[b] = m * state[b] + (1 - m) * spectrum.values[j * B + b];
+      out[j * B + b] = state[b];
+    }
+  }
+  return out;
+}
+
+/** Amplification resampled to k entries by normalised index (DESIGN §8). */
+export function resampleAmplification(amplification: number[], k: number): Float64Array {
+  const K = amplification.length;
+  const out = new Float64Array(k);
+  for (let v = 0; v < k; v++) {
+    out[v] = K === k ? amplification[v]
+      : amplification[Math.min(K - 1, Math.floor(((v + 0.5) / k) * K))];
+  }
+  return out;
+}
+
+/** A mapping prepared for one basis: band → harmonic index, and amplification per harmonic. */
+export interface Prepared {
+  k: number;
+  harmonicOfBand: Int32Array;
+  amplification: Float64Array;
+}
+
+export function prepare(mapping: Mapping, k: number): Prepared {
+  const harmonicOfBand = new Int32Array(mapping.transfer.length);
+  mapping.transfer.forEach((t, b) => {
+    harmonicOfBand[b] = Math.min(k - 1, Math.floor(t * k));
+  });
+  return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k) };
+}
+
+/** φ(ν) = gain · a(ν) · Σ_{ξ: ν(ξ)=ν} g̃(ξ) + 1. */
+export function filterValues(prepared: Prepared, bandValues: ArrayLike<number>, gain = 1,
+                             out?: Float64Array): Float64Array {
+  const phi = out ?? new Float64Array(prepared.k);
+  const sums = new Float64Array(prepared.k);
+  const B = prepared.harmonicOfBand.length;
+  for (let b = 0; b < B; b++) sums[prepared.harmonicOfBand[b]] += bandValues[b];
+  for (let v = 0; v < prepared.k; v++) phi[v] = gain * prepared.amplification[v] * sums[v] + 1;
+  return phi;
+}
+
+/**
+ * Per-tile weights for the deformation shader: for texel j (harmonics 4j…4j+3) three vec4s,
+ * the x, y and z rows of (φ − 1) ⊙ X̃. Layout: out[(3j + c)·4 + q] = (φ_{4j+q} − 1) X̃_{4j+q,c}.
+ */
+export function shaderWeights(basis: Basis, phi: ArrayLike<number>, out?: Float32Array):
+    Float32Array {
+  const weights = out ?? new Float32Array(basis.k4 * 12);
+  weights.fill(0);
+  for (let v = 0; v < basis.k; v++) {
+    const j = v >> 2, q = v & 3, d = phi[v] - 1;
+    for (let c = 0; c < 3; c++) weights[(3 * j + c) * 4 + q] = d * basis.coefficients[3 * v + c];
+  }
+  return weights;
+}
+
+/** CPU path: positions X + U((φ − 1) ⊙ X̃) from the same weights the shader gets. */
+export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array): Float32Array {
+  const positions = out ?? new Float32Array(basis.n * 3);
+  const U = basis.harmonics, W = 4 * basis.k4;
+  for (let i = 0; i < basis.n; i++) {
+    let x = 0, y = 0, z = 0;
+    const row = i * W;
+    for (let j = 0; j < basis.k4; j++) {
+      const u0 = U[row + 4 * j], u1 = U[row + 4 * j + 1], u2 = U[row + 4 * j + 2],
+        u3 = U[row + 4 * j + 3];
+      const w = 12 * j;
+      x += u0 * weights[w] + u1 * weights[w + 1] + u2 * weights[w + 2] + u3 * weights[w + 3];
+      y += u0 * weights[w + 4] + u1 * weights[w + 5] + u2 * weights[w + 6] + u3 * weights[w + 7];
+      z += u0 * weights[w + 8] + u1 * weights[w + 9] + u2 * weights[w + 10] + u3 * weights[w + 11];
+    }
+    positions[3 * i] = basis.vertices[3 * i] + x;
+    positions[3 * i + 1] = basis.vertices[3 * i + 1] + y;
+    positions[3 * i + 2] = basis.vertices[3 * i + 2] + z;
+  }
+  return positions;
+}
