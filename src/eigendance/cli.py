@@ -7,6 +7,7 @@ adds its arguments. Errors in the input print one line `eigendance: error: …` 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 
@@ -129,12 +130,115 @@ def _url(host: str, port: int) -> str:
     shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
     shown = f"[{shown}]" if ":" in shown else shown
     return f"http://{shown}:{port}/"
+def add_spectrum(parser):
+    parser.add_argument("audio", help="audio file: WAV, FLAC, OGG, MP3, M4A/AAC, Opus, …")
+    parser.add_argument("--rate", type=float, default=100.0,
+                        help="analysis frames per second (default 100)")
+    parser.add_argument("--bands", type=int, default=64, help="number of bands (default 64)")
+    parser.add_argument("-o", "--output", required=True, help="spectrogram file to write (.npz)")
+    parser.add_argument("--png", help="also draw the spectrogram into this picture (.png)")
+    parser.add_argument("--force", action="store_true", help="overwrite existing outputs")
+
+
+def run_spectrum(args) -> None:
+    from eigendance.audio import Spectrogram
+    from eigendance.files import refuse_overwrite
+
+    refuse_overwrite(args.output, args.force)
+    if args.png:
+        refuse_overwrite(args.png, args.force)
+    start = time.perf_counter()
+    spectrogram = Spectrogram.from_file(args.audio, rate=args.rate, bands=args.bands)
+    spectrogram.save(args.output)
+    if args.png:
+        spectrogram.save_png(args.png, title=os.path.basename(args.audio))
+    print(f"{args.output}: {len(spectrogram.times)} frames × {spectrogram.bands} bands, "
+          f"{spectrogram.duration:.2f} s at {spectrogram.sample_rate} Hz, "
+          f"{time.perf_counter() - start:.1f} s")
+
+
+def add_gallery(parser):
+    parser.add_argument("basis", help="basis file (.npz) or mesh file (solved with -k)")
+    parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file")
+    parser.add_argument("-n", "--size", type=int, default=8,
+                        help="number of gallery items (default 8; even for an initial gallery)")
+    parser.add_argument("--seed", type=int, default=0, help="breeding seed (default 0)")
+    parser.add_argument("--breed", nargs="+", metavar="MAPPING",
+                        help="breed children of these mapping files instead of the initial "
+                             "gallery")
+    parser.add_argument("-k", type=int, default=300,
+                        help="harmonics when BASIS is a mesh file (default 300)")
+    parser.add_argument("-o", "--output", required=True, help="folder for 0.json, 1.json, …")
+    parser.add_argument("--force", action="store_true", help="overwrite existing mappings")
+
+
+def run_gallery(args) -> None:
+    from eigendance.animate import basis_from_path, spectrogram_from_path
+    from eigendance.files import refuse_overwrite
+    from eigendance.mapping import Mapping, breed, initial_gallery
+
+    if args.size < 1:
+        raise EigendanceError(f"-n must be a positive integer, got {args.size}")
+    paths = [os.path.join(args.output, f"{i}.json") for i in range(args.size)]
+    for path in paths:
+        refuse_overwrite(path, args.force)
+    if args.breed:
+        parents = [Mapping.load(path) for path in args.breed]
+        items = breed(parents, args.size, args.seed)
+    else:
+        basis = basis_from_path(args.basis, args.k)
+        spectrogram = spectrogram_from_path(args.spectrogram)
+        items = initial_gallery(basis, spectrogram, args.size)
+    for item, path in zip(items, paths, strict=True):
+        item.save(path)
+    what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"
+    print(f"{args.output}: {len(items)} mappings ({what})")
+
+
+def add_animate(parser):
+    parser.add_argument("mesh", help="mesh file, or basis file (.npz)")
+    parser.add_argument("audio", help="audio file, or spectrogram file (.npz)")
+    parser.add_argument("--mapping", help="mapping JSON (default: the initial-gallery item of "
+                                          "8 that moves the mesh most)")
+    parser.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
+    parser.add_argument("-k", type=int, default=300,
+                        help="harmonics when MESH is a mesh file (default 300)")
+    parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
+    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+
+
+def run_animate(args) -> None:
+    from tqdm import tqdm
+
+    from eigendance.animate import basis_from_path, spectrogram_from_path, write_animation
+    from eigendance.files import refuse_overwrite
+    from eigendance.mapping import Mapping, strongest_item
+
+    refuse_overwrite(args.output, args.force)
+    start = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    bar, update = progress_bar(args.k, "eigenpairs")
+    with bar:
+        basis = basis_from_path(args.mesh, args.k, progress=update)
+    spectrogram = spectrogram_from_path(args.audio, bands=mapping.bands if mapping else 64)
+    if mapping is None:
+        mapping = strongest_item(basis, spectrogram)
+    frames = tqdm(desc="frames", unit="frame", file=sys.stderr, disable=not sys.stderr.isatty(),
+                  leave=False)
+    with frames:
+        count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
+                                progress=lambda done: frames.update(done - frames.n))
+    print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
+          f"{time.perf_counter() - start:.1f} s")
 
 
 COMMANDS = {
     "basis": (add_basis, run_basis, "compute the manifold-harmonic basis of a mesh"),
     "serve": (add_serve, run_serve, "serve the web app: live player and animated gallery"),
     "demo": (add_demo, run_demo, "serve the web app with the built-in mesh and music"),
+    "spectrum": (add_spectrum, run_spectrum, "compute the banded loudness spectrogram of music"),
+    "gallery": (add_gallery, run_gallery, "write an initial or bred gallery of mappings"),
+    "animate": (add_animate, run_animate, "compute vertex positions of a mesh dancing to music"),
 }
 
 

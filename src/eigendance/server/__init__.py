@@ -70,11 +70,10 @@ def demo_paths(folder: str) -> list[str]:
     """The built-in mesh and the procedural track (written once as WAV into `folder`)."""
     from importlib import resources
 
-    from eigendance.server.deps import demo_track, write_wav
+    from eigendance.demo_music import write_demo_wav
 
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
     song = os.path.join(folder, "eigendance-demo-music.wav")
     if not os.path.exists(song):
-        samples, sample_rate = demo_track()
-        write_wav(song, samples, sample_rate)
+        write_demo_wav(song)
     return [mesh, song]

@@ -191,7 +191,7 @@ def create_app(paths=(), library: Library | None = None, folder: str | None = No
         return JSONResponse({"kind": kind, "item": item.as_json()}, status_code=201)
 
     async def gallery(request):
-        from eigendance.server.deps import initial_gallery, mapping_to_json
+        from eigendance.mapping import initial_gallery
 
         body = await json_body(request)
         if not isinstance(body, dict):
@@ -202,31 +202,25 @@ def create_app(paths=(), library: Library | None = None, folder: str | None = No
         if not isinstance(size, int) or not 1 <= size <= MAX_GALLERY:
             raise HTTPException(400, f"size must be an integer from 1 to {MAX_GALLERY}")
         items = await asyncio.to_thread(initial_gallery, item.basis, song.spectrogram, size=size)
-        return JSONResponse({"mappings": [mapping_to_json(m) for m in items]})
+        return JSONResponse({"mappings": [m.to_json() for m in items]})
 
     async def breed_route(request):
-        from eigendance.server.deps import breed, mapping_from_json, mapping_to_json
+        from eigendance.mapping import Mapping, breed
 
         body = await json_body(request)
         if not isinstance(body, dict) or not isinstance(body.get("parents"), list):
             raise HTTPException(400, "expected a JSON object {parents: [mappings], size, seed}")
-        size, seed = body.get("size", 8), body.get("seed")
+        size, seed = body.get("size", 8), body.get("seed", 0)
         if not isinstance(size, int) or not 1 <= size <= MAX_GALLERY:
             raise HTTPException(400, f"size must be an integer from 1 to {MAX_GALLERY}")
-        if seed is not None and not isinstance(seed, int):
-            raise HTTPException(400, "seed must be an integer or null")
+        if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**32:
+            raise HTTPException(400, "seed must be an integer from 0 to 2³² − 1")
         if not body["parents"]:
             raise HTTPException(400, "select at least one parent to breed")
-        parents = []
-        for data in body["parents"]:
-            try:
-                parents.append(mapping_from_json(data))
-            except EigendanceError:
-                raise
-            except Exception as problem:  # noqa: BLE001
-                raise HTTPException(400, f"malformed parent mapping ({problem})") from None
+        parents = [Mapping.from_json(data, f"parent {index + 1}")
+                   for index, data in enumerate(body["parents"])]
         children = breed(parents, size=size, seed=seed)
-        return JSONResponse({"mappings": [mapping_to_json(m) for m in children]})
+        return JSONResponse({"mappings": [m.to_json() for m in children]})
 
     async def get_mapping(request):
         item = library.mappings.get(request.path_params["id"])

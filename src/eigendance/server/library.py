@@ -173,8 +173,8 @@ class Library:
             listener(job)
 
     def add_song(self, path: str, name: str) -> SongItem:
+        from eigendance.audio import Spectrogram
         from eigendance.server.binary import spectrogram_bundle
-        from eigendance.server.deps import Spectrogram
 
         try:
             spectrogram = Spectrogram.from_file(path, **self.spectrogram_options)
@@ -199,15 +199,10 @@ class Library:
         return self.add_mapping(data, name)
 
     def add_mapping(self, data, name: str) -> MappingItem:
-        from eigendance.server.deps import mapping_from_json, mapping_to_json
+        from eigendance.mapping import Mapping
 
-        try:
-            mapping = mapping_from_json(data)
-        except EigendanceError:
-            raise
-        except Exception as error:  # noqa: BLE001
-            raise EigendanceError(f"{name}: not a valid mapping ({error})") from None
-        item = MappingItem(new_id(), name, mapping_to_json(mapping))
+        mapping = Mapping.from_json(data, name)  # EigendanceError naming the bad field
+        item = MappingItem(new_id(), name, mapping.to_json())
         with self.lock:
             self.mappings[item.id] = item
         return item
