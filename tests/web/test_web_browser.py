@@ -1,0 +1,143 @@
+"""End to end in headless Chromium (SwiftShader WebGL2) on the app served by `eigendance serve`.
+
+Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from web_helpers import CAT, E2E_K, open_app
+
+pytestmark = pytest.mark.web
+TIMES = (0.5, 1.7, 4.2)
+
+
+@pytest.fixture(scope="module")
+def page(browser, live_server):
+    page = open_app(browser, live_server["url"], "?render&size=6")
+    yield page
+    assert not page.errors, page.errors
+    page.close()
+
+
+@pytest.fixture(scope="module")
+def reference(web_files):
+    """The Python side: the same basis (from the shared cache) and spectrogram."""
+    import os
+
+    from eigendance.audio import Spectrogram
+    from eigendance.harmonics import HarmonicBasis
+
+    os.environ["EIGENDANCE_CACHE_DIR"] = web_files["cache"]
+    basis = HarmonicBasis.from_mesh(CAT, E2E_K)
+    return basis, Spectrogram.from_file(web_files["song"])
+
+
+def tiles_at(page, t):
+    page.evaluate(f"window.eigendance.renderAt({t})")
+    return [np.array(p, dtype=np.float64).reshape(-1, 3)
+            for p in page.evaluate("window.eigendance.tilePixels(3)")]
+
+
+def test_server_announces_a_localhost_url(live_server):
+    assert live_server["url"].startswith("http://127.0.0.1:")
+
+
+def test_gallery_shows_s_non_blank_mutually_different_tiles(page):
+    info = page.evaluate("window.eigendance.info()")
+    assert info["tiles"] == 6 and info["k"] == E2E_K and info["n"] == 7949
+    tiles = tiles_at(page, 2.0)
+    background = tiles[0][0]
+    for pixels in tiles:
+        drawn = np.abs(pixels - background).sum(axis=1) > 30
+        assert drawn.mean() > 0.05, "a tile is blank"
+    for i in range(len(tiles)):
+        for j in range(i + 1, len(tiles)):
+            assert np.abs(tiles[i] - tiles[j]).mean() > 1.0, f"tiles {i} and {j} look the same"
+
+
+def test_tiles_move_with_the_music(page):
+    first, later = page.evaluate("""() => {
+        const e = window.eigendance;
+        return [e.readPositions(0, 0.05), e.readPositions(0, 3.0)];
+    }""")
+    moved = np.abs(np.array(first) - np.array(later)).max()
+    assert moved > 1e-4
+
+
+def test_gpu_positions_equal_the_python_reference(page, reference):
+    from eigendance.animate import positions_at
+    from eigendance.mapping import Mapping
+
+    basis, spectrogram = reference
+    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
+    mappings = page.evaluate("window.eigendance.mappings()")
+    for tile in (0, 3, 5):
+        mapping = Mapping.from_json(mappings[tile])
+        for t in TIMES:
+            gpu = np.array(page.evaluate(f"window.eigendance.readPositions({tile}, {t})"))
+            gpu = basis.to_original(gpu.reshape(-1, 3))
+            expected = positions_at(basis, spectrogram, mapping, t)
+            error = np.abs(gpu - expected).max() / diagonal
+            assert error < 1e-4, f"tile {tile} at t={t}: error {error:.2e} of the diagonal"
+            cpu = np.array(page.evaluate(f"window.eigendance.cpuPositions({tile}, {t})"))
+            assert np.abs(basis.to_original(cpu.reshape(-1, 3)) - expected).max() / diagonal \
+                < 1e-4
+
+
+def test_select_and_breed_make_a_new_generation(page):
+    from eigendance.mapping import Mapping, breed
+
+    before = page.evaluate("window.eigendance.mappings()")
+    page.click(".tile[data-index='1'] .view")
+    page.click(".tile[data-index='4'] .view")
+    assert page.evaluate("window.eigendance.info().selected") == [1, 4]
+    assert page.is_enabled("#breed")
+    page.evaluate("window.eigendance.breed(1234)")
+    info = page.evaluate("window.eigendance.info()")
+    assert info["generation"] == 1 and info["generations"] == 2 and info["tiles"] == 6
+    children = page.evaluate("window.eigendance.mappings()")
+    expected = breed([Mapping.from_json(before[1]), Mapping.from_json(before[4])], 6, 1234)
+    assert children == [m.to_json() for m in expected]
+    assert page.inner_text("#generation") == "generation 2 of 2"
+    tiles = tiles_at(page, 1.0)
+    assert len(tiles) == 6
+    page.click("#back")
+    assert page.evaluate("window.eigendance.mappings()") == before
+    page.click("#forward")
+    assert page.evaluate("window.eigendance.mappings()") == children
+
+
+def test_player_view_and_harmonics_explorer(page, tmp_path):
+    page.evaluate("window.eigendance.open(2)")
+    assert page.evaluate("window.eigendance.info().view") == "player"
+    page.evaluate("window.eigendance.renderAt(1.0)")
+    plain = page.screenshot(clip={"x": 300, "y": 150, "width": 500, "height": 450})
+    page.fill("#harmonic", "5")
+    page.dispatch_event("#harmonic", "input")
+    page.evaluate("window.eigendance.renderAt(1.0)")
+    coloured = page.screenshot(clip={"x": 300, "y": 150, "width": 500, "height": 450})
+    assert plain != coloured
+    assert "harmonic 5" in page.inner_text("#player-info")
+    page.fill("#harmonic", "-1")
+    page.dispatch_event("#harmonic", "input")
+    page.click("#tab-gallery")
+    assert page.evaluate("window.eigendance.info().view") == "gallery"
+
+
+def test_uploaded_mesh_gets_its_basis_and_appears(browser, live_server, web_files):
+    page = open_app(browser, live_server["url"], "?render&size=4")
+    first = page.evaluate("window.eigendance.info().meshId")
+    page.set_input_files("#upload", web_files["sphere"])
+    page.wait_for_function(f"window.eigendance.info().meshId !== '{first}' && "
+                           "document.getElementById('status').textContent.includes('ready')",
+                           timeout=60_000)
+    info = page.evaluate("window.eigendance.info()")
+    assert info["n"] == 162 and info["tiles"] == 4
+    options = page.eval_on_selector_all("#mesh option", "o => o.map(x => x.textContent)")
+    assert "sphere.obj" in options
+    for pixels in tiles_at(page, 1.0):
+        assert (np.abs(pixels - pixels[0]).sum(axis=1) > 30).mean() > 0.02
+    assert not page.errors, page.errors
+    page.close()

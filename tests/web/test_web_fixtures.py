@@ -1,0 +1,21 @@
+"""The committed Vitest fixtures (web/test/fixtures) still match the Python reference."""
+
+import json
+import os
+
+import numpy as np
+from web_fixture_writer import FOLDER, build
+
+
+def test_committed_fixtures_match_the_python_reference():
+    fresh = json.loads(build()["reference.json"])
+    with open(os.path.join(FOLDER, "reference.json")) as file:
+        committed = json.load(file)
+    assert committed["times"] == fresh["times"]
+    np.testing.assert_allclose(committed["values"], fresh["values"], atol=1e-9)
+    assert len(committed["cases"]) == len(fresh["cases"])
+    for old, new in zip(committed["cases"], fresh["cases"], strict=True):
+        np.testing.assert_allclose(old["mapping"]["transfer"], new["mapping"]["transfer"])
+        np.testing.assert_allclose(old["phi"], new["phi"], rtol=1e-9, atol=1e-9)
+        # Positions do not depend on eigenvector signs; allow solver round-off.
+        np.testing.assert_allclose(old["positions"], new["positions"], atol=1e-7)

@@ -1,0 +1,229 @@
+"""The HTTP API (Starlette TestClient): library, bundles, jobs, uploads, errors, CLI defaults."""
+
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+import pytest
+from starlette.testclient import TestClient
+from web_helpers import write_icosphere, write_song
+
+from eigendance.server.app import create_app
+from eigendance.server.binary import unpack
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("server-files")
+    return {"mesh": write_icosphere(folder / "ball.obj", 2),
+            "song": write_song(folder / "tune.wav", 2.0), "folder": folder}
+
+
+@pytest.fixture
+def client(files, tmp_path):
+    app = create_app([files["mesh"], files["song"]], folder=str(tmp_path / "library"), k=12,
+                     max_upload_bytes=200_000)
+    library = app.state.library
+    assert library.wait(60)
+    with TestClient(app) as test_client:
+        test_client.library = library
+        yield test_client
+    library.close()
+
+
+def ids(client):
+    data = client.get("/api/library").json()
+    return data["meshes"][0]["id"], data["songs"][0]["id"]
+
+
+def library_snapshot(client):
+    data = client.get("/api/library").json()
+    return ([m["id"] for m in data["meshes"]], [s["id"] for s in data["songs"]],
+            [m["id"] for m in data["mappings"]])
+
+
+def test_library_lists_the_files_with_a_ready_basis(client):
+    data = client.get("/api/library").json()
+    assert [m["name"] for m in data["meshes"]] == ["ball.obj"]
+    assert data["meshes"][0]["ready"] and data["meshes"][0]["k"] == 12
+    assert data["meshes"][0]["job"]["state"] == "done"
+    assert [s["name"] for s in data["songs"]] == ["tune.wav"]
+    assert data["songs"][0]["duration"] == pytest.approx(2.0, abs=0.01)
+
+
+def test_basis_bundle_holds_the_packed_harmonics(client):
+    mesh_id, _ = ids(client)
+    response = client.get(f"/api/meshes/{mesh_id}/basis.bin")
+    assert response.status_code == 200
+    meta, arrays = unpack(response.content)
+    basis = client.library.meshes[mesh_id].basis
+    assert meta["n"] == basis.n == 162 and meta["k"] == 12
+    assert arrays["harmonics"].shape == (162, 12)
+    np.testing.assert_allclose(arrays["harmonics"], basis.eigenvectors, atol=1e-6)
+    np.testing.assert_allclose(arrays["vertices"], basis.vertices, atol=1e-6)
+    assert arrays["faces"].dtype == np.uint32 and arrays["faces"].shape == basis.faces.shape
+
+
+def test_spectrogram_bundle_and_audio_bytes(client, files):
+    _, song_id = ids(client)
+    meta, arrays = unpack(client.get(f"/api/songs/{song_id}/spectrogram.bin").content)
+    spectrogram = client.library.songs[song_id].spectrogram
+    assert meta["rate"] == 100 and meta["bands"] == 64
+    np.testing.assert_array_equal(arrays["values"], spectrogram.values)
+    np.testing.assert_allclose(arrays["times"], spectrogram.times, atol=1e-6)
+    audio = client.get(f"/api/songs/{song_id}/audio")
+    assert audio.headers["content-type"] == "audio/wav"
+    with open(files["song"], "rb") as file:
+        assert audio.content == file.read()
+
+
+def test_gallery_and_breeding_use_the_python_mapping_module(client):
+    from eigendance.mapping import Mapping, breed, initial_gallery
+
+    mesh_id, song_id = ids(client)
+    response = client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id, "size": 6})
+    mappings = response.json()["mappings"]
+    expected = initial_gallery(client.library.meshes[mesh_id].basis,
+                               client.library.songs[song_id].spectrogram, size=6)
+    assert mappings == [m.to_json() for m in expected]
+    parents = [mappings[1], mappings[4]]
+    children = client.post("/api/breed", json={"parents": parents, "size": 6, "seed": 42}).json()
+    again = client.post("/api/breed", json={"parents": parents, "size": 6, "seed": 42}).json()
+    assert children == again
+    direct = breed([Mapping.from_json(p) for p in parents], size=6, seed=42)
+    assert children["mappings"] == [m.to_json() for m in direct]
+
+
+def test_mesh_upload_runs_a_basis_job_with_server_sent_events(client, files):
+    with open(write_icosphere(files["folder"] / "up.obj", 1), "rb") as file:
+        data = file.read()
+    response = client.post("/api/upload?name=small%20ball.obj", content=data)
+    assert response.status_code == 201, response.text
+    body = response.json()
+    assert body["kind"] == "mesh"
+    events = []
+    with client.stream("GET", f"/api/jobs/{body['job']['id']}/events") as stream:
+        for line in stream.iter_lines():
+            if line.startswith("data: "):
+                events.append(json.loads(line[6:]))
+    assert events[-1]["state"] == "done" and events[-1]["done"] == events[-1]["total"]
+    mesh = client.get(f"/api/meshes/{body['item']['id']}").json()
+    assert mesh["ready"] and mesh["name"] == "small ball.obj" and mesh["vertices"] == 42
+    assert client.get(f"/api/meshes/{body['item']['id']}/basis.bin").status_code == 200
+
+
+def test_song_and_mapping_uploads(client, files):
+    with open(files["song"], "rb") as file:
+        response = client.post("/api/upload?name=again.wav", content=file.read())
+    assert response.status_code == 201 and response.json()["kind"] == "song"
+    mesh_id, song_id = ids(client)
+    mapping = client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id,
+                                                "size": 2}).json()["mappings"][0]
+    response = client.post("/api/upload?name=m.json", content=json.dumps(mapping).encode())
+    assert response.status_code == 201 and response.json()["kind"] == "mapping"
+    assert client.get(f"/api/mappings/{response.json()['item']['id']}").json() == mapping
+
+
+def error_of(response, status):
+    assert response.status_code == status, response.text
+    body = response.json()
+    assert set(body) == {"error"} and "\n" not in body["error"] and body["error"]
+    return body["error"]
+
+
+@pytest.mark.parametrize("name", ["../../evil.obj", "..%2F..%2Fevil.obj", "/etc/evil.obj",
+                                  "..\\..\\evil.obj"])
+def test_path_traversal_in_upload_names_stays_inside_the_library(client, files, tmp_path, name):
+    with open(files["mesh"], "rb") as file:
+        data = file.read()
+    response = client.post(f"/api/upload?name={name}", content=data)
+    assert response.status_code == 201
+    assert response.json()["item"]["name"] == "evil.obj"
+    for root in (tmp_path, tmp_path.parent, files["folder"]):
+        assert not os.path.exists(os.path.join(root, "evil.obj"))
+    stored = client.library.meshes[response.json()["item"]["id"]].path
+    assert os.path.dirname(stored) == client.library.folder
+
+
+@pytest.mark.parametrize(("name", "content", "status", "words"), [
+    ("big.obj", b"v 0 0 0\n" * 40_000, 413, "limit"),
+    ("tool.exe", b"MZ\x90\x00", 415, "unknown file type"),
+    ("noname", b"v 0 0 0", 415, "unknown file type"),
+    ("", b"v 0 0 0", 400, "name"),
+    ("..", b"v 0 0 0", 400, "name"),
+    ("binary.obj", b"\x00\x01\x02garbage", 415, "not a OBJ"),
+    ("points.obj", b"v 0 0 0\nv 1 0 0\n", 400, "triangles"),
+    ("empty.obj", b"", 415, "empty"),
+    ("fake.wav", b"this is not audio at all", 415, "not a WAV"),
+    ("broken.wav", b"RIFF\x10\x00\x00\x00WAVEjunkjunkjunk", 400, "audio"),
+    ("fake.glb", b"{}", 415, "not a GLB"),
+    ("bad.json", b"{\"format\": \"nope\"}", 400, "format"),
+    ("text.json", b"not json", 415, "not a JSON"),
+])
+def test_bad_uploads_are_one_line_json_errors_and_leave_the_library_intact(
+        client, name, content, status, words):
+    before = library_snapshot(client)
+    message = error_of(client.post(f"/api/upload?name={name}", content=content), status)
+    assert words.lower() in message.lower()
+    assert library_snapshot(client) == before
+    assert not [f for f in os.listdir(client.library.folder) if f.startswith("upload-")]
+
+
+@pytest.mark.parametrize("path", ["/api/meshes/nope", "/api/meshes/nope/basis.bin",
+                                  "/api/songs/nope/spectrogram.bin", "/api/songs/nope/audio",
+                                  "/api/jobs/nope", "/api/jobs/nope/events",
+                                  "/api/mappings/nope", "/api/no/such/route"])
+def test_unknown_ids_are_404_json(client, path):
+    assert "no " in error_of(client.get(path), 404)
+
+
+@pytest.mark.parametrize(("route", "body", "status"), [
+    ("/api/gallery", b"{not json", 400),
+    ("/api/gallery", b"[]", 400),
+    ("/api/gallery", b"{\"mesh\": \"nope\", \"song\": \"nope\"}", 404),
+    ("/api/breed", b"{\"parents\": []}", 400),
+    ("/api/breed", b"{\"parents\": [{\"format\": \"x\"}]}", 400),
+    ("/api/breed", b"{\"parents\": \"x\"}", 400),
+])
+def test_malformed_requests_are_4xx_json(client, route, body, status):
+    before = library_snapshot(client)
+    error_of(client.post(route, content=body), status)
+    assert library_snapshot(client) == before
+
+
+def test_gallery_size_and_breed_seed_are_checked(client):
+    mesh_id, song_id = ids(client)
+    for size in (0, 17, "8"):
+        error_of(client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id,
+                                                   "size": size}), 400)
+    mapping = client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id,
+                                                "size": 2}).json()["mappings"][0]
+    for seed in (-1, 2**32, "7", True):
+        error_of(client.post("/api/breed", json={"parents": [mapping], "seed": seed}), 400)
+
+
+def test_serves_the_built_front_end(client):
+    response = client.get("/")
+    assert response.status_code == 200 and "eigendance" in response.text
+    assert "<canvas" in response.text
+
+
+def test_cli_binds_localhost_unless_told_otherwise():
+    from eigendance.cli import build_parser
+
+    for command in (["serve"], ["demo"]):
+        args = build_parser().parse_args(command)
+        assert args.host == "127.0.0.1" and args.port == 8765
+    assert build_parser().parse_args(["serve", "--host", "0.0.0.0"]).host == "0.0.0.0"
+
+
+def test_bad_library_file_on_the_command_line_is_a_one_line_error(tmp_path, capsys):
+    from eigendance.cli import main
+
+    bad = tmp_path / "x.exe"
+    bad.write_bytes(b"MZ")
+    assert main(["serve", str(bad), "--port", "1"]) == 1
+    error = capsys.readouterr().err
+    assert error.startswith("eigendance: error:") and error.count("\n") == 1

@@ -1,0 +1,63 @@
+"""Reference numbers for the browser's unit tests (web/test), written by the Python reference.
+
+`python tests/web/web_fixture_writer.py` rewrites web/test/fixtures/; test_web_fixtures.py checks
+that the committed files equal what the current Python code writes, so the Vitest tests always
+compare the TypeScript filter and bundle parser with today's reference implementation.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+import numpy as np
+
+FOLDER = os.path.join(os.path.dirname(__file__), "..", "..", "web", "test", "fixtures")
+TIMES = [0.0, 0.137, 0.5, 1.2345, 1.99]
+
+
+def build():
+    import trimesh
+
+    from eigendance.audio import Spectrogram
+    from eigendance.demo_music import demo_track
+    from eigendance.harmonics import HarmonicBasis
+    from eigendance.mapping import Mapping, initial_gallery
+    from eigendance.mesh import Mesh
+    from eigendance.server.binary import basis_bundle, spectrogram_bundle
+
+    sphere = trimesh.creation.icosphere(1)
+    vertices = sphere.vertices * [1.0, 0.8, 0.6]  # an ellipsoid: distinct eigenvalues
+    mesh = Mesh.from_arrays(vertices, sphere.faces, name="ellipsoid")
+    basis = HarmonicBasis.from_mesh(mesh, 14, cache=False)  # k = 14: a padded last texel
+    samples, rate = demo_track(2.0)
+    spectrogram = Spectrogram.from_samples(samples, rate, bands=16)
+    mappings = initial_gallery(basis, spectrogram, size=4)
+    odd = Mapping(mappings[1].transfer, np.linspace(-0.3, 0.5, 9), 5)  # K = 9 ≠ k: resampled
+    mappings.append(odd)
+    values = spectrogram.at(np.array(TIMES))
+    cases = []
+    for mapping in mappings:
+        phi = mapping.filter(values, basis.k)
+        cases.append({"mapping": mapping.to_json(), "phi": phi.tolist(),
+                      "positions": basis.filter_positions(phi).reshape(len(TIMES), -1).tolist()})
+    reference = {"times": TIMES, "values": values.tolist(), "n": basis.n, "k": basis.k,
+                 "bands": spectrogram.values.shape[1], "frames": len(spectrogram.times),
+                 "vertices": basis.vertices.ravel().tolist(),
+                 "eigenvectors": basis.eigenvectors.ravel().tolist(),
+                 "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
+    return {"reference.json": json.dumps(reference, indent=0).encode(),
+            "basis.bin": basis_bundle(basis, "ellipsoid"),
+            "spectrogram.bin": spectrogram_bundle(spectrogram, "demo-2s")}
+
+
+def write(folder=FOLDER):
+    os.makedirs(folder, exist_ok=True)
+    for name, data in build().items():
+        with open(os.path.join(folder, name), "wb") as file:
+            file.write(data)
+
+
+if __name__ == "__main__":
+    write(sys.argv[1] if len(sys.argv) > 1 else FOLDER)
