@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: setup system demo test lint bench
+.PHONY: setup system web demo test test-web lint bench
 
 system:
 	bash scripts/install-system.sh
@@ -14,7 +14,12 @@ $(VENV)/.installed: pyproject.toml
 	$(BIN)/pip install -q -e '.[dev]'
 	touch $@
 
-setup: system $(VENV)/.installed
+# The front end (web/, TypeScript + three.js + Vite) is built into src/eigendance/static/.
+web: system
+	bash scripts/web.sh install
+	bash scripts/web.sh build
+
+setup: system web $(VENV)/.installed
 
 demo: setup
 	$(BIN)/eigendance demo
@@ -23,7 +28,13 @@ lint: setup
 	$(BIN)/ruff check src tests benchmarks
 
 test: lint
+	bash scripts/web.sh test
 	$(BIN)/pytest -q
+
+# Only the web parts: Vitest, server tests and the browser end-to-end tests (pytest -m web).
+test-web: setup
+	bash scripts/web.sh test
+	$(BIN)/pytest -q tests/web
 
 bench: setup
 	$(BIN)/python benchmarks/run_all.py

@@ -48,7 +48,7 @@ export function resampleAmplification(amplification: number[], k: number): Float
   const out = new Float64Array(k);
   for (let v = 0; v < k; v++) {
     out[v] = K === k ? amplification[v]
-      : amplification[Math.min(K - 1, Math.floor(((v + 0.5) / k) * K))];
+      : amplification[Math.min(K - 1, Math.floor(((v + 0.5) * K) / k))];
   }
   return out;
 }
