@@ -141,3 +141,27 @@ def test_uploaded_mesh_gets_its_basis_and_appears(browser, live_server, web_file
         assert (np.abs(pixels - pixels[0]).sum(axis=1) > 30).mean() > 0.02
     assert not page.errors, page.errors
     page.close()
+
+
+def test_live_playback_follows_the_audio_clock_and_records_webm_with_audio(browser,
+                                                                           live_server):
+    page = browser.new_page(viewport={"width": 900, "height": 700}, accept_downloads=True)
+    page.goto(live_server["url"] + "?size=4")
+    page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
+    page.evaluate("window.eigendance.ready")
+    page.click("#tab-player")
+    page.click("#record")  # starts playback too
+    page.wait_for_function("document.getElementById('clock').textContent === '0:01'",
+                           timeout=20_000)
+    with page.expect_download() as download:
+        page.click("#record")
+    assert download.value.suggested_filename == "eigendance.webm"
+    with open(download.value.path(), "rb") as file:
+        video = file.read()
+    assert video[:4] == b"\x1a\x45\xdf\xa3"  # EBML: WebM
+    assert b"V_VP" in video and b"A_OPUS" in video  # a video and an audio track
+    page.click("#play")  # pause
+    paused = page.input_value("#seek")
+    page.wait_for_timeout(300)
+    assert page.input_value("#seek") == paused
+    page.close()

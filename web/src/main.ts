@@ -666,6 +666,22 @@ const hooks = {
     state.deformer!.useCPU = path === "cpu";
     state.path = path;
   },
+  /** Time the deformation alone of every tile (ms per frame), GPU or CPU path, for benchmarks. */
+  timeDeformation(count: number, t0 = 1): { frame: number } {
+    const run = (t: number) => {
+      const values = bandValuesAt(t);
+      for (const prepared of state.prepared) {
+        const weights = weightsFor(prepared, values);
+        if (state.deformer!.useCPU) deformCPU(state.basis!, weights, cpuBuffer());
+        else state.deformer!.computePositions(weights);
+      }
+      finish();
+    };
+    run(t0);
+    const start = performance.now();
+    for (let i = 0; i < count; i++) run(t0 + 0.1 * i);
+    return { frame: (performance.now() - start) / count };
+  },
   /** Time one frame's deformation + draw of every tile (ms), for benchmarks. */
   timeFrames(count: number, t0 = 1): { frame: number } {
     drawFrame(t0); finish();
