@@ -111,7 +111,7 @@ def run_demo(args) -> None:
 
     library = _library(args)
     terminal_progress(library)
-    for path in demo_paths(library.folder):
+    for path in demo_paths():
         library.add_path(path)
     run(create_app(library=library), args.host, args.port,
         announce=f"eigendance demo: open {_url(args.host, args.port)} in a browser")

@@ -46,7 +46,9 @@ def run(app, host: str, port: int, announce: str | None = None) -> None:
 
 
 def terminal_progress(library) -> None:
-    """Show basis jobs on stderr: a tqdm bar on a terminal, a line at the end otherwise."""
+    """Show basis jobs on stderr: a tqdm bar on a terminal, and one line when each finishes."""
+    import time
+
     from tqdm import tqdm
 
     bars = {}
@@ -54,26 +56,37 @@ def terminal_progress(library) -> None:
     def listener(job):
         bar = bars.get(job.id)
         if bar is None:
+            if job.state == "running":
+                print(f"eigendance: computing the basis of {job.name} (k = {job.total}; "
+                      "cached for the next run)…", file=sys.stderr)
             bar = bars[job.id] = tqdm(total=job.total, desc="basis eigenpairs", unit="pair",
                                       file=sys.stderr, disable=not sys.stderr.isatty(),
                                       leave=False)
         bar.update(max(0, job.done - bar.n))
-        if job.state in ("done", "error"):
+        if job.state in ("done", "error") and not getattr(bar, "reported", False):
+            bar.reported = True
             bar.close()
+            name = job.message if job.state == "error" else job.name
+            seconds = time.time() - job.started
             if job.state == "error":
-                print(f"eigendance: basis failed: {job.message}", file=sys.stderr)
+                print(f"eigendance: basis failed: {name}", file=sys.stderr)
+            else:
+                print(f"eigendance: basis of {name} ready (k = {job.total}, {seconds:.1f} s)",
+                      file=sys.stderr)
 
     library.progress_listeners.append(listener)
 
 
-def demo_paths(folder: str) -> list[str]:
-    """The built-in mesh and the procedural track (written once as WAV into `folder`)."""
+def demo_paths() -> list[str]:
+    """The built-in mesh and the procedural track (written once as WAV into the cache folder)."""
     from importlib import resources
 
+    from eigendance import cache
     from eigendance.demo_music import write_demo_wav
 
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
-    song = os.path.join(folder, "eigendance-demo-music.wav")
+    song = os.path.join(cache.folder(), "demo-music", "eigendance-demo-music.wav")
+    os.makedirs(os.path.dirname(song), exist_ok=True)
     if not os.path.exists(song):
         write_demo_wav(song)
     return [mesh, song]

@@ -31,6 +31,7 @@ class Job:
     id: str
     kind: str
     total: int
+    name: str = ""
     done: int = 0
     state: str = "queued"  # queued | running | done | error
     message: str = ""
@@ -140,7 +141,7 @@ class Library:
             laplacian = "cotan"
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
         item = MeshItem(new_id(), name, path, k, len(mesh.vertices))
-        job = Job(new_id(), "basis", k)
+        job = Job(new_id(), "basis", k, name)
         item.job = job
         with self.lock:
             self.meshes[item.id] = item
@@ -154,6 +155,8 @@ class Library:
 
         job = item.job
         job.update(state="running")
+        for listener in self.progress_listeners:
+            listener(job)
 
         def progress(done):
             job.update(done=int(min(done, job.total)))
