@@ -25,6 +25,23 @@ def pcm16(samples):
     return np.round(np.clip(samples, -1, 1) * 32767).astype(np.int16)
 
 
+def test_hann_is_scipy_periodic_hann():
+    from scipy.signal import get_window
+
+    np.testing.assert_allclose(audio.hann(2048), get_window("hann", 2048), atol=1e-15)
+
+
+def test_exponential_smoothing_matches_recursion_for_any_memory():
+    values = np.random.default_rng(2).uniform(0, 1, (3000, 2))
+    for memory in (0.0, 1e-40, 0.3, 0.88, 0.999):
+        expected, state = np.empty_like(values), np.array([0.5, 0.2])
+        for j, v in enumerate(values):
+            state = memory * state + (1 - memory) * v
+            expected[j] = state
+        np.testing.assert_allclose(audio.exponential_smoothing(values, memory, [0.5, 0.2]),
+                                   expected, rtol=1e-9, atol=1e-12)
+
+
 def test_window_length():
     assert window_length(44100) == 2048
     # 0.046·48000 = 2208 → 4096 (DESIGN §3 says "2048 at 44.1/48 kHz": the formula wins here).
