@@ -150,7 +150,7 @@ def _stitch(bands: list[Band], k: int):
     Returns (values, vectors, gap): gap = (a, b), an uncovered interval, or None.
     """
     values, vectors = [], []
-    cut = -np.inf
+    cut = -np.inf  # the first band's shift lies below λ_0 = 0: it holds the smallest eigenvalues
     total = 0
     for band, following in zip(bands, [*bands[1:], None], strict=True):
         upper = band.upper
@@ -208,7 +208,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 break
             last = bands[-1]
             found = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
-            density = max(found.sum(), 1) / (2 * last.radius if last.shift > 0 else last.upper)
+            density = max(found.sum(), 1) / (last.upper - max(last.lower, 0))
             half_width = per_band / (2 * density)
             if gap is not None:
                 shifts = [(gap[0] + gap[1]) / 2]
