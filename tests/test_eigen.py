@@ -88,3 +88,26 @@ def test_k_too_large():
     mesh = sphere(1)
     with pytest.raises(EigendanceError, match="more than"):
         solve_bands(*laplacian(mesh.vertices, mesh.faces), 42)
+
+
+def test_gaps_between_bands_are_filled(sphere_problem, monkeypatch):
+    """With bands placed apart (negative overlap) the solver must fill every gap it leaves."""
+    import eigendance.eigen as eigen
+
+    monkeypatch.setattr(eigen, "OVERLAP", -0.4)
+    stiffness, mass = sphere_problem
+    values, _ = solve_bands(stiffness, mass, 120, per_band=30, workers=1)
+    dense = scipy.linalg.eigh(stiffness.toarray(), np.diag(mass), eigvals_only=True,
+                              subset_by_index=[0, 119])
+    assert np.allclose(values, dense, rtol=1e-8, atol=1e-9)
+
+
+def test_inertia_mismatch_is_reported(sphere_problem):
+    """A band whose Sylvester count disagrees with the accepted eigenvalues fails loudly."""
+    import eigendance.eigen as eigen
+
+    stiffness, mass = sphere_problem
+    values, vectors = solve_bands(stiffness, mass, 20, per_band=30)
+    liar = eigen.Band(shift=7.0, radius=1.0, eigenvalues=values, eigenvectors=vectors, below=3)
+    with pytest.raises(EigendanceError, match="3 eigenvalues lie below 7"):
+        eigen._verify(stiffness, mass, values, vectors, [liar])

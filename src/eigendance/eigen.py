@@ -142,42 +142,31 @@ def _band_worker(arguments):
         return _solve_band(stiffness, mass, shift, count)
 
 
-def _stitch(bands: list[Band], k: int):
+def _stitch(bands: list[Band]):
     """Join bands sorted by shift into one spectrum without gaps or duplicates.
 
     Between neighbours the cut goes through the widest gap of the overlap of their trusted
     windows, so a cluster of (near-)equal eigenvalues always comes from a single band.
-    Returns (values, vectors, gap): gap = (a, b), an uncovered interval, or None.
+    Returns (pieces, gap): pieces = [(band, mask of its accepted pairs)] in ascending order,
+    gap = (a, b), the first interval no band covers, or None.
     """
-    values, vectors = [], []
-    cut = -np.inf
-    total = 0
+    pieces = []
+    cut = -np.inf  # the first band's shift lies below λ_0 = 0: it holds the smallest eigenvalues
     for band, following in zip(bands, [*bands[1:], None], strict=True):
-        upper = band.upper
-        if following is not None:
-            if following.lower >= band.upper:
-                gap = (band.upper, following.lower)
-                keep = (band.eigenvalues > cut) & (band.eigenvalues < band.upper)
-                values.append(band.eigenvalues[keep])
-                vectors.append(band.eigenvectors[:, keep])
-                return _joined(values, vectors, k), gap
-            inside = band.eigenvalues[(band.eigenvalues > max(following.lower, cut))
-                                      & (band.eigenvalues < band.upper)]
-            points = np.concatenate([[max(following.lower, cut)], inside, [band.upper]])
+        upper, gap = band.upper, None
+        if following is not None and following.lower >= band.upper:
+            gap = (band.upper, following.lower)
+        elif following is not None:
+            start = max(following.lower, cut)
+            inside = band.eigenvalues[(band.eigenvalues > start) & (band.eigenvalues < upper)]
+            points = np.concatenate([[start], inside, [upper]])
             widest = int(np.argmax(np.diff(points)))
             upper = (points[widest] + points[widest + 1]) / 2
-        keep = (band.eigenvalues > cut) & (band.eigenvalues < upper)
-        values.append(band.eigenvalues[keep])
-        vectors.append(band.eigenvectors[:, keep])
-        total += int(keep.sum())
+        pieces.append((band, (band.eigenvalues > cut) & (band.eigenvalues < upper)))
         cut = upper
-        if total >= k:
-            break
-    return _joined(values, vectors, k), None
-
-
-def _joined(values, vectors, k):
-    return np.concatenate(values)[:k], np.concatenate(vectors, axis=1)[:, :k]
+        if gap is not None:
+            return pieces, gap
+    return pieces, None
 
 
 def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
@@ -201,21 +190,22 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     pool = None
     try:
         while True:
-            (values, vectors), gap = _stitch(bands, k)
+            pieces, gap = _stitch(bands)
+            found = sum(int(keep.sum()) for _, keep in pieces)
             if progress is not None:
-                progress(min(len(values), k))
-            if gap is None and len(values) >= k:
+                progress(min(found, k))
+            if gap is None and found >= k:
                 break
             last = bands[-1]
-            found = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
-            density = max(found.sum(), 1) / (2 * last.radius if last.shift > 0 else last.upper)
+            inside = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
+            density = max(inside.sum(), 1) / (last.upper - max(last.lower, 0))
             half_width = per_band / (2 * density)
             if gap is not None:
                 shifts = [(gap[0] + gap[1]) / 2]
             else:
                 step = 2 * half_width * (1 - OVERLAP)
                 start = last.upper + half_width * (1 - 2 * OVERLAP)
-                missing = k - len(values)
+                missing = k - found
                 count = max(1, min(workers, int(np.ceil(missing / (per_band * (1 - OVERLAP))))))
                 shifts = [start + step * i for i in range(count)]
             arguments = [(stiffness, mass, shift, min(per_band, n - 2)) for shift in shifts]
@@ -235,15 +225,26 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     finally:
         if pool is not None:
             pool.shutdown()
+    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])[:k]
+    vectors = np.empty((n, k))
+    filled = 0
+    for band, keep in pieces:
+        taken = min(int(keep.sum()), k - filled)
+        vectors[:, filled:filled + taken] = band.eigenvectors[:, keep][:, :taken]
+        filled += taken
     _verify(stiffness, mass, values, vectors, bands)
     return values, vectors
 
 
 def _verify(stiffness, mass, values, vectors, bands):
     """Residual of every pair, and inertia counts against the accepted eigenvalues."""
-    residual = stiffness @ vectors - (mass[:, None] * vectors) * values
-    scale = np.maximum(np.abs(values), 1) * np.linalg.norm(mass[:, None] * vectors, axis=0)
-    worst = float(np.max(np.linalg.norm(residual, axis=0) / scale))
+    worst = 0.0
+    for start in range(0, len(values), 256):  # column blocks bound the temporary memory
+        block, value = vectors[:, start:start + 256], values[start:start + 256]
+        weighted = mass[:, None] * block
+        residual = np.linalg.norm(stiffness @ block - weighted * value, axis=0)
+        scale = np.maximum(np.abs(value), 1) * np.linalg.norm(weighted, axis=0)
+        worst = max(worst, float(np.max(residual / scale)))
     if not worst <= RESIDUAL_TOLERANCE:
         raise EigendanceError(f"eigen-solver: residual {worst:.1e} above tolerance; "
                               "try --solver eigsh")
