@@ -165,3 +165,31 @@ def test_live_playback_follows_the_audio_clock_and_records_webm_with_audio(brows
     page.wait_for_timeout(300)
     assert page.input_value("#seek") == paused
     page.close()
+
+
+def test_dropping_an_audio_file_makes_it_the_current_song(browser, live_server, web_files):
+    import base64
+
+    from web_helpers import write_song
+
+    path = write_song(web_files["folder"] / "dropped.wav", 3.0)
+    with open(path, "rb") as file:
+        data = base64.b64encode(file.read()).decode()
+    page = open_app(browser, live_server["url"], "?render&size=4")
+    before = page.evaluate("window.eigendance.info()")
+    page.evaluate("""(data) => {
+        const bytes = Uint8Array.from(atob(data), (c) => c.charCodeAt(0));
+        const transfer = new DataTransfer();
+        transfer.items.add(new File([bytes], "dropped.wav", { type: "audio/wav" }));
+        window.dispatchEvent(new DragEvent("dragover", { dataTransfer: transfer }));
+        window.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer }));
+    }""", data)
+    page.wait_for_function("document.getElementById('status').textContent"
+                           ".includes('dropped.wav ready')", timeout=30_000)
+    info = page.evaluate("window.eigendance.info()")
+    assert info["songId"] != before["songId"]
+    assert info["duration"] == pytest.approx(3.0, abs=0.01)
+    assert page.is_hidden("#drop")
+    assert "dropped.wav" in page.eval_on_selector_all("#song option",
+                                                      "o => o.map(x => x.textContent)")
+    page.close()

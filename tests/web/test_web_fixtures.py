@@ -12,10 +12,10 @@ def test_committed_fixtures_match_the_python_reference():
     with open(os.path.join(FOLDER, "reference.json")) as file:
         committed = json.load(file)
     assert committed["times"] == fresh["times"]
-    np.testing.assert_allclose(committed["values"], fresh["values"], atol=1e-9)
+    np.testing.assert_allclose(committed["values"], fresh["values"], atol=1e-6)  # float32 FFT
     assert len(committed["cases"]) == len(fresh["cases"])
     for old, new in zip(committed["cases"], fresh["cases"], strict=True):
         np.testing.assert_allclose(old["mapping"]["transfer"], new["mapping"]["transfer"])
-        np.testing.assert_allclose(old["phi"], new["phi"], rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(old["phi"], new["phi"], rtol=1e-5, atol=1e-6)
         # Positions do not depend on eigenvector signs; allow solver round-off.
-        np.testing.assert_allclose(old["positions"], new["positions"], atol=1e-7)
+        np.testing.assert_allclose(old["positions"], new["positions"], atol=1e-6)

@@ -693,6 +693,8 @@ const hooks = {
 (window as any).eigendance = hooks;
 
 async function start(): Promise<void> {
+  // ?bare: only the canvas (offline video frames); ?render: time set by renderAt(t).
+  document.body.classList.toggle("bare", params.has("bare"));
   wireControls();
   const library = await refreshLibrary();
   if (!library.meshes.length || !library.songs.length) {
@@ -705,6 +707,11 @@ async function start(): Promise<void> {
   await loadSong(songId);
   await loadMesh(meshId);
   await newGallery();
+  const mappingId = params.get("mapping");
+  if (mappingId) {
+    state.playerMapping = await api.getJSON<Mapping>(`api/mappings/${mappingId}`);
+    state.playerPrepared = prepare(state.playerMapping, state.basis!.k);
+  }
   setView(state.view);
   choosePath();
   drawFrame(now());
