@@ -67,6 +67,7 @@ def test_tiles_move_with_the_music(page):
 
 
 def test_gpu_positions_equal_the_python_reference(page, reference):
+    """Read back from the float render targets the tiles are drawn from (batched pass)."""
     from eigendance.animate import positions_at
     from eigendance.mapping import Mapping
 
@@ -81,6 +82,10 @@ def test_gpu_positions_equal_the_python_reference(page, reference):
             expected = positions_at(basis, spectrogram, mapping, t)
             error = np.abs(gpu - expected).max() / diagonal
             assert error < 1e-4, f"tile {tile} at t={t}: error {error:.2e} of the diagonal"
+            single = np.array(page.evaluate(
+                f"window.eigendance.readPositions({tile}, {t}, true)"))  # one-tile pass
+            assert np.abs(basis.to_original(single.reshape(-1, 3)) - expected).max() / diagonal \
+                < 1e-4
             cpu = np.array(page.evaluate(f"window.eigendance.cpuPositions({tile}, {t})"))
             assert np.abs(basis.to_original(cpu.reshape(-1, 3)) - expected).max() / diagonal \
                 < 1e-4

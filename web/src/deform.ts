@@ -93,25 +93,127 @@ void main() {
 }
 `;
 
-const POSITIONS_VERTEX = /* glsl */ `
+/** Positions pass for `tiles` gallery tiles at once: each harmonic texel is fetched once and
+ * used for every tile; tile t's positions go to colour attachment t of a float render target. */
+function positionsShaders(tiles: number): { vertex: string; fragment: string } {
+  const range = [...Array(tiles).keys()];
+  const vertex = /* glsl */ `
 uniform int targetWidth;
 uniform vec2 targetSize;
-out vec3 vPosition;
+${range.map((t) => `out vec3 vPosition${t};`).join("\n")}
 void main() {
   int v = int(vid + 0.5);
-  vPosition = position + displacement(v);
+${range.map((t) => `  vec3 d${t} = vec3(0.0);`).join("\n")}
+  for (int j = 0; j < K4; j++) {
+    vec4 u = harmonicTexel(v, j);
+    int b = 3 * j;
+${range.map((t) => `    d${t} += vec3(dot(u, weights[b + ${3 * t} * K4]), dot(u, weights[b + ${3 * t} * K4 + 1]), dot(u, weights[b + ${3 * t} * K4 + 2]));`).join("\n")}
+  }
+${range.map((t) => `  vPosition${t} = position + d${t};`).join("\n")}
   vec2 pixel = vec2(float(v % targetWidth), float(v / targetWidth)) + 0.5;
   gl_Position = vec4(pixel / targetSize * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;
 }
 `;
-
-const POSITIONS_FRAGMENT = /* glsl */ `
+  const fragment = /* glsl */ `
 precision highp float;
-in vec3 vPosition;
-layout(location = 0) out highp vec4 fragColor;
-void main() { fragColor = vec4(vPosition, 1.0); }
+${range.map((t) => `in vec3 vPosition${t};\nlayout(location = ${t}) out highp vec4 out${t};`).join("\n")}
+void main() {
+${range.map((t) => `  out${t} = vec4(vPosition${t}, 1.0);`).join("\n")}
+}
 `;
+  return { vertex, fragment };
+}
+
+class PositionsPass {
+  readonly material: THREE.ShaderMaterial;
+  readonly scene = new THREE.Scene();
+  readonly targets: THREE.WebGLRenderTarget[] = [];
+  readonly width: number;
+  readonly height: number;
+
+  constructor(readonly deformer: Deformer, readonly tiles: number) {
+    const { basis } = deformer;
+    this.width = Math.min(basis.n, 1024);
+    this.height = Math.ceil(basis.n / this.width);
+    const shaders = positionsShaders(tiles);
+    this.material = new THREE.ShaderMaterial({
+      glslVersion: THREE.GLSL3,
+      defines: { K4: basis.k4, WEIGHTS: 3 * basis.k4 * tiles, TILES: tiles },
+      uniforms: {
+        harmonics: { value: deformer.texture },
+        texWidth: { value: deformer.gpuMaterial.uniforms.texWidth.value },
+        weights: { value: new Float32Array(12 * basis.k4 * tiles) },
+        targetWidth: { value: this.width },
+        targetSize: { value: new THREE.Vector2(this.width, this.height) },
+      },
+      vertexShader: COMMON + shaders.vertex, fragmentShader: shaders.fragment,
+      depthTest: false, depthWrite: false,
+    });
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position", deformer.geometry.getAttribute("position"));
+    geometry.setAttribute("vid", deformer.geometry.getAttribute("vid"));
+    const points = new THREE.Points(geometry, this.material);
+    points.frustumCulled = false;
+    this.scene.add(points);
+  }
+
+  target(index: number): THREE.WebGLRenderTarget {
+    while (this.targets.length <= index) {
+      this.targets.push(new THREE.WebGLRenderTarget(this.width, this.height, {
+        type: THREE.FloatType, format: THREE.RGBAFormat, depthBuffer: false,
+        minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
+        count: this.tiles,
+      }));
+    }
+    return this.targets[index];
+  }
+
+  /** Positions of up to `tiles` tiles into target `index`; returns one texture per tile. */
+  run(weights: Float32Array[], index = 0): THREE.Texture[] {
+    const all = this.material.uniforms.weights.value as Float32Array;
+    all.fill(0);
+    weights.forEach((w, t) => all.set(w, t * w.length));
+    this.material.uniformsNeedUpdate = true;
+    const target = this.target(index);
+    const renderer = this.deformer.renderer;
+    const previous = renderer.getRenderTarget();
+    const scissor = renderer.getScissorTest();
+    renderer.setScissorTest(false);
+    renderer.setRenderTarget(target);
+    renderer.render(this.scene, this.deformer.ortho);
+    renderer.setRenderTarget(previous);
+    renderer.setScissorTest(scissor);
+    return target.textures.slice(0, weights.length);
+  }
+
+  /** Read tile `tile`'s positions (n*3) back from target `index`. */
+  read(tile: number, index = 0): Float32Array {
+    const renderer = this.deformer.renderer;
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    const target = this.target(index);
+    const pixels = new Float32Array(this.width * this.height * 4);
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(target);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + tile);
+    gl.readPixels(0, 0, this.width, this.height, gl.RGBA, gl.FLOAT, pixels);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0);
+    renderer.setRenderTarget(previous);
+    const n = this.deformer.basis.n;
+    const out = new Float32Array(n * 3);
+    for (let i = 0; i < n; i++) {
+      out[3 * i] = pixels[4 * i];
+      out[3 * i + 1] = pixels[4 * i + 1];
+      out[3 * i + 2] = pixels[4 * i + 2];
+    }
+    return out;
+  }
+
+  dispose(): void {
+    this.material.dispose();
+    this.targets.forEach((t) => t.dispose());
+  }
+}
 
 export const TILE_COLORS = [0xe8a87c, 0x85cdca, 0xd8c35b, 0xc38d9e, 0x8fb4e3, 0xa3d96b, 0xf2b5d4,
   0xb8a1e6, 0xe6c189, 0x7fd1b9, 0xf28f6b, 0x9cb4cc];
@@ -130,13 +232,14 @@ export class Deformer {
   readonly cpuMaterial: THREE.ShaderMaterial;
   readonly mesh: THREE.Mesh;
   readonly scene = new THREE.Scene();
-  private positionsTarget: THREE.WebGLRenderTarget | null = null;
-  private positionsScene: THREE.Scene | null = null;
-  private positionsMaterial: THREE.ShaderMaterial | null = null;
-  private readonly ortho = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  readonly ortho = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  /** tiles per positions pass (colour attachments, uniform space) */
+  readonly batch: number;
+  private single: PositionsPass | null = null;
+  private batched: PositionsPass | null = null;
   useCPU = false;
 
-  constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer) {
+  constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer, maxBatch = 8) {
     const gl = renderer.getContext();
     const maxSize = gl.getParameter(gl.MAX_TEXTURE_SIZE) as number;
     const texels = basis.n * basis.k4;
@@ -176,7 +279,11 @@ export class Deformer {
     });
     this.gpuMaterial = make({});
     this.cpuMaterial = make({ CPU_PATH: 1 });
-    this.ensurePositionsPass();
+    this.gpuMaterial.uniforms.deformed = { value: null };
+    this.gpuMaterial.uniforms.deformedWidth = { value: Math.min(basis.n, 1024) };
+    const vectors = gl.getParameter(gl.MAX_VERTEX_UNIFORM_VECTORS) as number;
+    const buffers = gl.getParameter((gl as WebGL2RenderingContext).MAX_DRAW_BUFFERS) as number;
+    this.batch = Math.max(1, Math.min(maxBatch, buffers, Math.floor((vectors - 32) / (3 * basis.k4))));
     this.mesh = new THREE.Mesh(this.geometry, this.gpuMaterial);
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
@@ -189,7 +296,7 @@ export class Deformer {
   /** Set one tile's look and deformation before `renderer.render(scene, camera)`. */
   setTile(weights: Float32Array, cpuPositions: Float32Array | null, options: {
     color: number; normalBlend: number; wireframe: boolean; harmonic: number; harmonicScale: number;
-  }): void {
+  }, positions: THREE.Texture | null = null): void {
     const material = this.material;
     this.mesh.material = material;
     const u = material.uniforms;
@@ -201,7 +308,7 @@ export class Deformer {
     u.wire.value = options.wireframe;
     material.wireframe = options.wireframe;
     material.uniformsNeedUpdate = true;
-    if (!this.useCPU) this.computePositions(weights);
+    if (!this.useCPU) u.deformed.value = positions ?? this.computePositions([weights])[0];
     if (this.useCPU && cpuPositions) {
       const attribute = this.geometry.getAttribute("displaced") as THREE.BufferAttribute;
       (attribute.array as Float32Array).set(cpuPositions);
@@ -209,67 +316,27 @@ export class Deformer {
     }
   }
 
-  private ensurePositionsPass(): void {
-    if (this.positionsTarget) return;
-    const n = this.basis.n;
-    const width = Math.min(n, 1024), height = Math.ceil(n / width);
-    this.positionsTarget = new THREE.WebGLRenderTarget(width, height, {
-      type: THREE.FloatType, format: THREE.RGBAFormat, depthBuffer: false,
-      minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
-    });
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute("position", this.geometry.getAttribute("position"));
-    geometry.setAttribute("vid", this.geometry.getAttribute("vid"));
-    this.positionsMaterial = new THREE.ShaderMaterial({
-      glslVersion: THREE.GLSL3, defines: { K4: this.basis.k4, WEIGHTS: 3 * this.basis.k4 },
-      uniforms: {
-        harmonics: { value: this.texture },
-        texWidth: { value: this.gpuMaterial.uniforms.texWidth.value },
-        weights: { value: new Float32Array(12 * this.basis.k4) },
-        targetWidth: { value: width }, targetSize: { value: new THREE.Vector2(width, height) },
-      },
-      vertexShader: COMMON + POSITIONS_VERTEX, fragmentShader: POSITIONS_FRAGMENT,
-      depthTest: false, depthWrite: false,
-    });
-    const points = new THREE.Points(geometry, this.positionsMaterial);
-    points.frustumCulled = false;
-    this.positionsScene = new THREE.Scene();
-    this.positionsScene.add(points);
-    this.gpuMaterial.uniforms.deformed = { value: this.positionsTarget.texture };
-    this.gpuMaterial.uniforms.deformedWidth = { value: width };
-  }
-
-  /** GPU pass 1: the deformed positions of every vertex into a float render target. */
-  computePositions(weights: Float32Array): THREE.WebGLRenderTarget {
-    this.ensurePositionsPass();
-    const material = this.positionsMaterial!;
-    (material.uniforms.weights.value as Float32Array).set(weights);
-    material.uniformsNeedUpdate = true;
-    const renderer = this.renderer;
-    const previous = renderer.getRenderTarget();
-    const scissor = renderer.getScissorTest();
-    renderer.setScissorTest(false);
-    renderer.setRenderTarget(this.positionsTarget);
-    renderer.render(this.positionsScene!, this.ortho);
-    renderer.setRenderTarget(previous);
-    renderer.setScissorTest(scissor);
-    return this.positionsTarget!;
-  }
-
-  /** Deformed positions computed by the GPU shader and read back (n*3, normalised). */
-  readPositions(weights: Float32Array): Float32Array {
-    const target = this.computePositions(weights);
-    const { width, height } = target;
-    const pixels = new Float32Array(width * height * 4);
-    this.renderer.readRenderTargetPixels(target, 0, 0, width, height, pixels);
-    const n = this.basis.n;
-    const out = new Float32Array(n * 3);
-    for (let i = 0; i < n; i++) {
-      out[3 * i] = pixels[4 * i];
-      out[3 * i + 1] = pixels[4 * i + 1];
-      out[3 * i + 2] = pixels[4 * i + 2];
+  /** GPU pass 1: deformed positions of every tile into float render targets, `batch` tiles per
+   * pass (one harmonic fetch serves them all); returns one positions texture per tile. */
+  computePositions(weights: Float32Array[]): THREE.Texture[] {
+    if (weights.length === 1) {
+      this.single ??= new PositionsPass(this, 1);
+      return this.single.run(weights);
     }
-    return out;
+    this.batched ??= new PositionsPass(this, this.batch);
+    const textures: THREE.Texture[] = [];
+    for (let start = 0, index = 0; start < weights.length; start += this.batch, index++) {
+      textures.push(...this.batched.run(weights.slice(start, start + this.batch), index));
+    }
+    return textures;
+  }
+
+  /** Positions (n*3, normalised) computed by the GPU shader and read back from the float target.
+   * With several weights, tile `tile` of a batched pass over all of them is read. */
+  readPositions(weights: Float32Array[], tile = 0): Float32Array {
+    this.computePositions(weights);
+    if (weights.length === 1) return this.single!.read(0);
+    return this.batched!.read(tile % this.batch, Math.floor(tile / this.batch));
   }
 
   /** Largest |U[:, ν]| for the harmonics explorer's colour scale. */
@@ -285,7 +352,7 @@ export class Deformer {
     this.texture.dispose();
     this.gpuMaterial.dispose();
     this.cpuMaterial.dispose();
-    this.positionsTarget?.dispose();
-    this.positionsMaterial?.dispose();
+    this.single?.dispose();
+    this.batched?.dispose();
   }
 }

@@ -326,8 +326,8 @@ function bandValuesAt(t: number): Float32Array {
   return spectrumAt(s, t, bandBuffer.subarray(0, s.bands), state.values ?? s.values);
 }
 
-function renderInto(element: HTMLElement, camera: THREE.PerspectiveCamera, prepared: Prepared,
-                    bandValues: Float32Array, index: number): void {
+function renderInto(element: HTMLElement, camera: THREE.PerspectiveCamera, weights: Float32Array,
+                    index: number, positions: THREE.Texture | null): void {
   const deformer = state.deformer!;
   const rect = element.getBoundingClientRect();
   const height = renderer.domElement.clientHeight;
@@ -337,9 +337,8 @@ function renderInto(element: HTMLElement, camera: THREE.PerspectiveCamera, prepa
   renderer.setScissor(x, y, rect.width, rect.height);
   camera.aspect = rect.width / rect.height;
   camera.updateProjectionMatrix();
-  const weights = weightsFor(prepared, bandValues);
   const cpu = deformer.useCPU ? deformCPU(state.basis!, weights, cpuBuffer()) : null;
-  deformer.setTile(weights, cpu, tileOptions(index));
+  deformer.setTile(weights, cpu, tileOptions(index), positions);
   renderer.render(deformer.scene, camera);
 }
 
@@ -375,12 +374,15 @@ function drawFrame(t: number): void {
   renderer.clear();
   renderer.setScissorTest(true);
   if (state.view === "gallery") {
+    const weights = state.prepared.map((prepared) => weightsFor(prepared, bandValues));
+    // GPU path: every tile's positions first (batched passes), then the surfaces.
+    const positions = state.deformer.useCPU ? null : state.deformer.computePositions(weights);
     state.tiles.forEach((tile, index) => {
-      renderInto(tile.view, tileCamera, state.prepared[index], bandValues, index);
+      renderInto(tile.view, tileCamera, weights[index], index, positions?.[index] ?? null);
     });
   } else if (state.playerPrepared) {
-    renderInto($("player-area"), playerCamera, state.playerPrepared, bandValues,
-      Math.max(0, currentMappings().indexOf(state.playerMapping!)));
+    renderInto($("player-area"), playerCamera, weightsFor(state.playerPrepared, bandValues),
+      Math.max(0, currentMappings().indexOf(state.playerMapping!)), null);
   }
   renderer.setScissorTest(false);
   const elapsed = performance.now() - start;
@@ -467,7 +469,7 @@ async function loadMesh(meshId: string): Promise<void> {
   const basis = await api.basis(meshId);
   state.deformer?.dispose();
   state.basis = basis;
-  state.deformer = new Deformer(basis, renderer);
+  state.deformer = new Deformer(basis, renderer, Number(params.get("batch") ?? 8));
   state.harmonic = -1;
   $<HTMLInputElement>("harmonic").value = "-1";
   $<HTMLInputElement>("harmonic").max = String(basis.k - 1);
@@ -618,10 +620,16 @@ const hooks = {
   },
   /** Back to the audio clock. */
   live(): void { state.explicitTime = null; requestDraw(); },
-  /** Deformed positions (normalised, n*3) of a tile at time t, computed by the GPU shader. */
-  readPositions(tile: number | "player", t: number): number[] {
-    const weights = weightsFor(mappingOf(tile), bandValuesAt(t));
-    return Array.from(state.deformer!.readPositions(weights));
+  /** Deformed positions (normalised, n*3) of a tile at time t, computed by the GPU shader and
+   * read back from its float render target: the batched pass over every gallery tile, as drawn,
+   * or with `single` the one-tile pass (the player's). */
+  readPositions(tile: number | "player", t: number, single = false): number[] {
+    const values = bandValuesAt(t);
+    if (tile === "player" || single) {
+      return Array.from(state.deformer!.readPositions([weightsFor(mappingOf(tile), values)]));
+    }
+    const weights = state.prepared.map((prepared) => weightsFor(prepared, values));
+    return Array.from(state.deformer!.readPositions(weights, tile));
   },
   /** The same positions from the CPU path. */
   cpuPositions(tile: number | "player", t: number): number[] {
@@ -658,7 +666,7 @@ const hooks = {
   upload: (file: File) => handleFiles([file]),
   info: () => ({
     meshId: state.meshId, songId: state.songId, n: state.basis?.n, k: state.basis?.k,
-    path: state.path, generation: state.generation, generations: state.generations.length,
+    path: state.path, batch: state.deformer?.batch, generation: state.generation, generations: state.generations.length,
     tiles: state.tiles.length, view: state.view, frameMs: state.frameMs,
     duration: duration(), selected: [...state.selected],
   }),
@@ -670,11 +678,9 @@ const hooks = {
   timeDeformation(count: number, t0 = 1): { frame: number } {
     const run = (t: number) => {
       const values = bandValuesAt(t);
-      for (const prepared of state.prepared) {
-        const weights = weightsFor(prepared, values);
-        if (state.deformer!.useCPU) deformCPU(state.basis!, weights, cpuBuffer());
-        else state.deformer!.computePositions(weights);
-      }
+      const weights = state.prepared.map((prepared) => weightsFor(prepared, values));
+      if (state.deformer!.useCPU) weights.forEach((w) => deformCPU(state.basis!, w, cpuBuffer()));
+      else state.deformer!.computePositions(weights);
       finish();
     };
     run(t0);
