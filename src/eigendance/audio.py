@@ -375,13 +375,16 @@ class Spectrogram:
     def at(self, times) -> np.ndarray:
         """Values at arbitrary times (…,) → (…, B) float64, linear between frames, clamped."""
         times = np.asarray(times, dtype=np.float64)
-        values = self.values.astype(np.float64)
+        values = self.values
         if len(values) == 1:
-            return np.broadcast_to(values[0], (*times.shape, self.bands)).copy()
+            return np.broadcast_to(values[0].astype(np.float64),
+                                   (*times.shape, self.bands)).copy()
         position = times * self.rate
         index = np.clip(np.floor(position), 0, len(values) - 2).astype(np.int64)
         weight = np.clip(position - index, 0.0, 1.0)[..., None]
-        return values[index] * (1 - weight) + values[index + 1] * weight
+        below = values[index].astype(np.float64)
+        above = values[index + 1].astype(np.float64)
+        return below * (1 - weight) + above * weight
 
     def save(self, path: str | os.PathLike) -> None:
         """Write the spectrogram file of DESIGN §8 atomically."""
