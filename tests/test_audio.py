@@ -118,6 +118,17 @@ def test_chunked_analysis_matches_one_chunk(monkeypatch):
     np.testing.assert_array_equal(whole.values, chunked.values)
 
 
+def test_streaming_buffer_stays_bounded():
+    analyser = audio._Analyser(SR, 100, 64, 20.0, 16000.0, -80.0, 0.08)
+    rng = np.random.default_rng(0)
+    largest = 0
+    for _ in range(40):  # 40 chunks of 0.25 s: the buffer holds one chunk and a window at most
+        analyser.feed(rng.uniform(-1, 1, SR // 4))
+        largest = max(largest, len(analyser.buffer))
+    assert largest <= SR // 4 + analyser.N
+    assert len(analyser.finish()) == 1001
+
+
 def test_frame_centres_round_half_up():
     # 22050/100 = 220.5 samples per frame: c_1 = 221, c_3 = 662 (not banker's rounding).
     np.testing.assert_array_equal(audio.frame_centres(0, 4, 22050, 100), [0, 221, 441, 662])
