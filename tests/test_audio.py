@@ -208,12 +208,38 @@ def test_pyav_stereo_is_averaged_not_summed(tmp_path):
     assert np.sqrt(np.mean(middle ** 2)) == pytest.approx(0.5 / np.sqrt(2), rel=0.1)
 
 
-def test_pyav_decodes_the_same_pcm_as_soundfile(tmp_path):
-    data = pcm16(np.random.default_rng(1).uniform(-0.9, 0.9, (5000, 2)))
-    soundfile.write(tmp_path / "a.wav", data, SR)
-    _, chunks = audio._open_pyav(str(tmp_path / "a.wav"))
-    np.testing.assert_allclose(np.concatenate(list(chunks)), data.mean(axis=1) / 32768,
-                               atol=1e-9)
+@pytest.mark.parametrize("channels, subtype", [(2, "PCM_16"), (8, "PCM_24"), (3, "FLOAT")])
+def test_pyav_decodes_the_same_pcm_as_soundfile(tmp_path, channels, subtype):
+    data = np.random.default_rng(1).uniform(-0.9, 0.9, (5000, channels))
+    path = tmp_path / "a.wav"
+    soundfile.write(path, data, SR, subtype=subtype)
+    _, chunks = audio._open_pyav(str(path))
+    via_pyav = np.concatenate(list(chunks))
+    via_soundfile, _ = read_audio(path)
+    np.testing.assert_allclose(via_pyav, via_soundfile, atol=1e-7)
+    np.testing.assert_allclose(via_pyav, data.mean(axis=1), atol=1e-4)
+
+
+def test_opus_through_pyav(tmp_path):
+    av = pytest.importorskip("av")
+    path = tmp_path / "tone.opus"
+    rate = 48000
+    t = np.arange(rate) / rate
+    wave = (0.5 * np.sin(2 * np.pi * 1000 * t)).astype(np.float32)
+    with av.open(str(path), "w", format="ogg") as container:
+        stream = container.add_stream("libopus", rate=rate, layout="mono")
+        for start in range(0, rate, 960):
+            frame = av.AudioFrame.from_ndarray(wave[None, start:start + 960], format="flt",
+                                               layout="mono")
+            frame.sample_rate = rate
+            frame.pts = start
+            for packet in stream.encode(frame):
+                container.mux(packet)
+        for packet in stream.encode(None):
+            container.mux(packet)
+    spectrogram = Spectrogram.from_file(path)
+    assert spectrogram.sample_rate == rate
+    assert spectrogram.values[50].argmax() == band_of(spectrogram, 1000)
 
 
 def test_one_sample_and_empty_audio(tmp_path):
