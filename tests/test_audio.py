@@ -242,6 +242,12 @@ def test_opus_through_pyav(tmp_path):
     assert spectrogram.values[50].argmax() == band_of(spectrogram, 1000)
 
 
+def test_integer_pcm_samples_are_scaled():
+    wave = tone(1000.0, 0.3)
+    as_int = Spectrogram.from_samples(pcm16(wave), SR).values
+    np.testing.assert_allclose(as_int, Spectrogram.from_samples(wave, SR).values, atol=1e-3)
+
+
 def test_one_sample_and_empty_audio(tmp_path):
     soundfile.write(tmp_path / "one.wav", np.array([0.5]), SR)
     spectrogram = Spectrogram.from_file(tmp_path / "one.wav")

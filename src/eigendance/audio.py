@@ -175,8 +175,13 @@ def read_audio(path: str | os.PathLike) -> tuple[np.ndarray, int]:
 
 
 def mono(samples) -> np.ndarray:
-    """(n,) or (n, channels) samples → mono float64 by the mean of the channels."""
+    """(n,) or (n, channels) samples → mono float64 by the mean of the channels.
+
+    Float samples are taken as they are (full scale ±1); integer PCM is scaled by 2^(bits−1).
+    """
     samples = np.asarray(samples)
+    if np.issubdtype(samples.dtype, np.integer):
+        samples = samples / float(2 ** (8 * samples.dtype.itemsize - 1))
     if samples.ndim == 1:
         return samples.astype(np.float64)
     if samples.ndim == 2 and samples.shape[1] >= 1:
