@@ -118,6 +118,17 @@ def test_chunked_analysis_matches_one_chunk(monkeypatch):
     np.testing.assert_array_equal(whole.values, chunked.values)
 
 
+def test_streaming_buffer_stays_bounded():
+    analyser = audio._Analyser(SR, 100, 64, 20.0, 16000.0, -80.0, 0.08)
+    rng = np.random.default_rng(0)
+    largest = 0
+    for _ in range(40):  # 40 chunks of 0.25 s: the buffer holds one chunk and a window at most
+        analyser.feed(rng.uniform(-1, 1, SR // 4))
+        largest = max(largest, len(analyser.buffer))
+    assert largest <= SR // 4 + analyser.N
+    assert len(analyser.finish()) == 1001
+
+
 def test_frame_centres_round_half_up():
     # 22050/100 = 220.5 samples per frame: c_1 = 221, c_3 = 662 (not banker's rounding).
     np.testing.assert_array_equal(audio.frame_centres(0, 4, 22050, 100), [0, 221, 441, 662])
@@ -197,12 +208,44 @@ def test_pyav_stereo_is_averaged_not_summed(tmp_path):
     assert np.sqrt(np.mean(middle ** 2)) == pytest.approx(0.5 / np.sqrt(2), rel=0.1)
 
 
-def test_pyav_decodes_the_same_pcm_as_soundfile(tmp_path):
-    data = pcm16(np.random.default_rng(1).uniform(-0.9, 0.9, (5000, 2)))
-    soundfile.write(tmp_path / "a.wav", data, SR)
-    _, chunks = audio._open_pyav(str(tmp_path / "a.wav"))
-    np.testing.assert_allclose(np.concatenate(list(chunks)), data.mean(axis=1) / 32768,
-                               atol=1e-9)
+@pytest.mark.parametrize("channels, subtype", [(2, "PCM_16"), (8, "PCM_24"), (3, "FLOAT")])
+def test_pyav_decodes_the_same_pcm_as_soundfile(tmp_path, channels, subtype):
+    data = np.random.default_rng(1).uniform(-0.9, 0.9, (5000, channels))
+    path = tmp_path / "a.wav"
+    soundfile.write(path, data, SR, subtype=subtype)
+    _, chunks = audio._open_pyav(str(path))
+    via_pyav = np.concatenate(list(chunks))
+    via_soundfile, _ = read_audio(path)
+    np.testing.assert_allclose(via_pyav, via_soundfile, atol=1e-7)
+    np.testing.assert_allclose(via_pyav, data.mean(axis=1), atol=1e-4)
+
+
+def test_opus_through_pyav(tmp_path):
+    av = pytest.importorskip("av")
+    path = tmp_path / "tone.opus"
+    rate = 48000
+    t = np.arange(rate) / rate
+    wave = (0.5 * np.sin(2 * np.pi * 1000 * t)).astype(np.float32)
+    with av.open(str(path), "w", format="ogg") as container:
+        stream = container.add_stream("libopus", rate=rate, layout="mono")
+        for start in range(0, rate, 960):
+            frame = av.AudioFrame.from_ndarray(wave[None, start:start + 960], format="flt",
+                                               layout="mono")
+            frame.sample_rate = rate
+            frame.pts = start
+            for packet in stream.encode(frame):
+                container.mux(packet)
+        for packet in stream.encode(None):
+            container.mux(packet)
+    spectrogram = Spectrogram.from_file(path)
+    assert spectrogram.sample_rate == rate
+    assert spectrogram.values[50].argmax() == band_of(spectrogram, 1000)
+
+
+def test_integer_pcm_samples_are_scaled():
+    wave = tone(1000.0, 0.3)
+    as_int = Spectrogram.from_samples(pcm16(wave), SR).values
+    np.testing.assert_allclose(as_int, Spectrogram.from_samples(wave, SR).values, atol=1e-3)
 
 
 def test_one_sample_and_empty_audio(tmp_path):

@@ -175,8 +175,13 @@ def read_audio(path: str | os.PathLike) -> tuple[np.ndarray, int]:
 
 
 def mono(samples) -> np.ndarray:
-    """(n,) or (n, channels) samples → mono float64 by the mean of the channels."""
+    """(n,) or (n, channels) samples → mono float64 by the mean of the channels.
+
+    Float samples are taken as they are (full scale ±1); integer PCM is scaled by 2^(bits−1).
+    """
     samples = np.asarray(samples)
+    if np.issubdtype(samples.dtype, np.integer):
+        samples = samples / float(2 ** (8 * samples.dtype.itemsize - 1))
     if samples.ndim == 1:
         return samples.astype(np.float64)
     if samples.ndim == 2 and samples.shape[1] >= 1:
@@ -375,13 +380,16 @@ class Spectrogram:
     def at(self, times) -> np.ndarray:
         """Values at arbitrary times (…,) → (…, B) float64, linear between frames, clamped."""
         times = np.asarray(times, dtype=np.float64)
-        values = self.values.astype(np.float64)
+        values = self.values
         if len(values) == 1:
-            return np.broadcast_to(values[0], (*times.shape, self.bands)).copy()
+            return np.broadcast_to(values[0].astype(np.float64),
+                                   (*times.shape, self.bands)).copy()
         position = times * self.rate
         index = np.clip(np.floor(position), 0, len(values) - 2).astype(np.int64)
         weight = np.clip(position - index, 0.0, 1.0)[..., None]
-        return values[index] * (1 - weight) + values[index + 1] * weight
+        below = values[index].astype(np.float64)
+        above = values[index + 1].astype(np.float64)
+        return below * (1 - weight) + above * weight
 
     def save(self, path: str | os.PathLike) -> None:
         """Write the spectrogram file of DESIGN §8 atomically."""
