@@ -157,7 +157,18 @@ class ModalModel:
     @classmethod
     def from_skeleton(cls, skeleton: Skeleton, stiffness: float = 1.0,
                       keep_matrices: bool = False) -> ModalModel:
-        """Modal analysis; `stiffness` multiplies every joint stiffness."""
+        """Modal analysis; `stiffness` multiplies every joint stiffness.
+
+        The dense factorisations (a few hundred rows) run on one BLAS thread: faster at this
+        size than several, and much faster on a busy machine.
+        """
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(1):
+            return cls._analyse(skeleton, stiffness, keep_matrices)
+
+    @classmethod
+    def _analyse(cls, skeleton: Skeleton, stiffness: float, keep_matrices: bool) -> ModalModel:
         n_columns = 6 * skeleton.n_bodies
         constraints, deflection, stiffnesses = joint_matrices(skeleton)
         basis, rank = nullspace(constraints, n_columns)

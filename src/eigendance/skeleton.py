@@ -232,9 +232,7 @@ class Skeleton:
         path = os.fspath(path)
         suffix = os.path.splitext(path)[1].lower()
         if suffix in (".glb", ".gltf"):
-            from eigendance.gltf_rig import skeleton_from_gltf
-
-            return skeleton_from_gltf(path)
+            return cls.from_gltf(path)
         if suffix == ".json":
             return cls.from_json(path)
         raise EigendanceError(f"{path}: unknown rig format {suffix!r} (use .json, .glb or .gltf)")
@@ -339,6 +337,34 @@ class Skeleton:
                 joints.append(joint)
         return cls(bodies, joints, name=name)
 
+    @classmethod
+    def from_gltf(cls, path: str | os.PathLike, stiffness_frequency: float =
+                  DEFAULT_JOINT_FREQUENCY) -> Skeleton:
+        """Read the skins of a glTF 2.0 file (.glb, .gltf) as a skeleton with a skinned mesh.
+
+        - Rest pose: the file's node pose. Joint j sits at the origin of its world matrix W_j;
+          skinned vertices are placed at Σ_j w_j W_j·IBM_j·x (the bind pose, x itself when the
+          inverse bind matrices match the nodes, as they do in exported rigs).
+        - Bodies: one per joint node, from the node to its child joint (the child with the most
+          descendant joints, then the farthest), or, for a leaf, along the node's own +y axis
+          (the bone axis of Blender and most exporters) as far as the vertices it weighs reach.
+          Radius: the median distance from the axis of the vertices the body dominates, clamped
+          to [0.02, 1]·length. Density DEFAULT_DENSITY (the size unit is taken to be metres;
+          frequencies do not depend on it with the default stiffness).
+        - Joints: one spherical joint (free ω, natural for characters) between each joint node
+          and its parent joint node, at the child's position; stiffness per rotation row from
+          `automatic_stiffness`, i.e. every joint alone would swing its lighter body at
+          `stiffness_frequency` Hz (1 Hz). Edit the rig as skeleton JSON for other choices.
+        - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
+          skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
+          (vertices with no weight go to the nearest body); seam vertices (same position)
+          welded.
+        """
+        from eigendance.gltf_skin import read_skins
+
+        rig = read_skins(path)
+        return _skeleton_from_rig(rig, os.path.basename(os.fspath(path)), stiffness_frequency)
+
     def to_dict(self) -> dict:
         """The skeleton JSON document (pairwise joints, explicit positions)."""
         return {
@@ -434,3 +460,144 @@ def _vector(value, label: str) -> np.ndarray:
     if not isinstance(value, list) or len(value) != 3:
         raise EigendanceError(f"{label} must be a list of 3 numbers, not {value!r}")
     return np.array([_number(v, label) for v in value])
+
+
+def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
+    """Bodies and spherical joints from a `gltf_skin.SkinnedRig` (see Skeleton.from_gltf)."""
+    positions = rig.joint_matrices[:, :3, 3]
+    n_joints = len(positions)
+    vertices, weights = rig.vertices, rig.weights
+    extent = np.concatenate([positions, vertices]) if len(vertices) else positions
+    size = float(np.linalg.norm(extent.max(axis=0) - extent.min(axis=0))) or 1.0
+    tiny = 1e-4 * size
+    children = [[] for _ in range(n_joints)]
+    for child, parent in enumerate(rig.parents):
+        if parent >= 0:
+            children[parent].append(child)
+    descendants = np.zeros(n_joints, dtype=int)
+    for joint in _postorder(children, rig.parents):
+        descendants[joint] = sum(1 + descendants[c] for c in children[joint])
+    dominant = weights.argmax(axis=1) if len(vertices) else np.zeros(0, dtype=int)
+    starts, ends = positions.copy(), np.zeros_like(positions)
+    lengths = np.zeros(n_joints)
+    order = _preorder(children, rig.parents)
+    for joint in order:  # parents before children, so a leaf can fall back on its parent
+        start = positions[joint]
+        candidates = [c for c in children[joint]
+                      if np.linalg.norm(positions[c] - start) > tiny]
+        if candidates:
+            child = max(candidates, key=lambda c: (descendants[c],
+                                                   np.linalg.norm(positions[c] - start)))
+            ends[joint] = positions[child]
+            lengths[joint] = np.linalg.norm(positions[child] - start)
+            continue
+        owned = vertices[dominant == joint] - start
+        centroid = owned.mean(axis=0) if len(owned) else np.zeros(3)
+        if np.linalg.norm(centroid) > tiny:  # toward the middle of what it carries
+            axis = centroid
+        else:  # the bone axis of Blender and most exporters
+            axis = rig.joint_matrices[joint, :3, 1]
+            if not np.linalg.norm(axis) > 0:
+                axis = np.array([0.0, 1.0, 0.0])
+        axis = axis / np.linalg.norm(axis)
+        reach = np.percentile(owned @ axis, 95) if len(owned) else 0.0
+        parent = rig.parents[joint]
+        fallback = 0.5 * lengths[parent] if parent >= 0 and lengths[parent] > 0 else 0.05 * size
+        length = reach if reach > tiny else fallback
+        ends[joint] = start + length * axis
+        lengths[joint] = length
+    bodies = []
+    for joint in range(n_joints):
+        axis = (ends[joint] - starts[joint]) / lengths[joint]
+        owned = vertices[dominant == joint] - starts[joint]
+        if len(owned):
+            along = np.clip(owned @ axis, 0, lengths[joint])
+            radial = np.linalg.norm(owned - along[:, None] * axis, axis=1)
+            radius = float(np.median(radial))
+        else:
+            radius = 0.15 * lengths[joint]
+        radius = float(np.clip(radius, 0.02 * lengths[joint], lengths[joint]))
+        bodies.append(Body(rig.names[joint], starts[joint], ends[joint], radius))
+    joints = []
+    for child, parent in enumerate(rig.parents):
+        if parent < 0:
+            continue
+        joint = Joint(f"{rig.names[parent]}-{rig.names[child]}", "spherical", (parent, child),
+                      positions[child].copy(), np.zeros(3))
+        joint.stiffness = automatic_stiffness(joint, bodies, stiffness_frequency)
+        joints.append(joint)
+    attached = _attach_separate_trees(bodies, joints, rig, descendants, weights,
+                                      stiffness_frequency)
+    notes = list(rig.notes)
+    if attached:
+        notes.append(f"attached {attached} separate joint trees to their nearest body")
+    if len(vertices):
+        empty = weights.sum(axis=1) <= 0
+        if np.any(empty):
+            centers = np.array([b.center for b in bodies])
+            nearest = np.linalg.norm(vertices[empty, None] - centers[None], axis=2).argmin(1)
+            weights[np.flatnonzero(empty), nearest] = 1.0
+        weights = weights / weights.sum(axis=1, keepdims=True)
+    skeleton = Skeleton(bodies, joints, name=name,
+                        vertices=vertices if len(vertices) else None,
+                        faces=rig.faces if len(vertices) else None,
+                        weights=weights if len(vertices) else None, notes=notes)
+    return skeleton
+
+
+def _attach_separate_trees(bodies, joints, rig, descendants, weights, frequency) -> int:
+    """Join the roots of separate joint trees (IK targets, flat hierarchies such as the WebXR
+    hand) into one tree, Prim-style: repeatedly attach the free root nearest to a body already
+    in the tree with a spherical joint at the root's position. Returns how many were attached."""
+    roots = [j for j, p in enumerate(rig.parents) if p < 0]
+    if len(roots) < 2:
+        return 0
+    load = weights.sum(axis=0) if len(weights) else np.zeros(len(bodies))
+    main = max(roots, key=lambda r: (descendants[r], load[r]))
+    children = [[] for _ in bodies]
+    for child, parent in enumerate(rig.parents):
+        if parent >= 0:
+            children[parent].append(child)
+    in_tree = set(_preorder(children, [0 if j != main else -1 for j in range(len(bodies))]))
+    waiting = [r for r in roots if r != main]
+    starts = np.array([b.start for b in bodies])
+    ends = np.array([b.end for b in bodies])
+    while waiting:
+        members = np.array(sorted(in_tree))
+        best = None
+        for root in waiting:
+            distance = _segment_distance(bodies[root].start, starts[members], ends[members])
+            nearest = int(np.argmin(distance))
+            if best is None or distance[nearest] < best[0]:
+                best = (distance[nearest], root, int(members[nearest]))
+        _, root, host = best
+        joint = Joint(f"{bodies[host].name}-{bodies[root].name}", "spherical", (host, root),
+                      bodies[root].start.copy(), np.zeros(3))
+        joint.stiffness = automatic_stiffness(joint, bodies, frequency)
+        joints.append(joint)
+        waiting.remove(root)
+        in_tree.update(_preorder(children, [0 if j != root else -1
+                                            for j in range(len(bodies))]))
+    return len(roots) - 1
+
+
+def _segment_distance(point, starts, ends) -> np.ndarray:
+    """Distance from a point to each segment start→end."""
+    direction = ends - starts
+    along = np.einsum("ij,ij->i", point - starts, direction) / \
+        np.maximum(np.einsum("ij,ij->i", direction, direction), 1e-300)
+    closest = starts + np.clip(along, 0, 1)[:, None] * direction
+    return np.linalg.norm(closest - point, axis=1)
+
+
+def _preorder(children, parents):
+    order, stack = [], [j for j, p in enumerate(parents) if p < 0][::-1]
+    while stack:
+        joint = stack.pop()
+        order.append(joint)
+        stack.extend(children[joint][::-1])
+    return order
+
+
+def _postorder(children, parents):
+    return _preorder(children, parents)[::-1]
