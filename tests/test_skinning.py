@@ -2,13 +2,13 @@
 
 import numpy as np
 import pytest
-from helpers import fixture_path
 
 from eigendance.errors import EigendanceError
 from eigendance.modal import ModalModel
 from eigendance.sample_rigs import sample_rig
 from eigendance.skeleton import Skeleton
 from eigendance.skinning import ModalSkin, linear_blend_skinning, vertex_normals
+from helpers import fixture_path
 
 
 def skinned_difference(skeleton, model, scale):
