@@ -154,10 +154,14 @@ def test_drive_and_coefficients():
     with pytest.raises(EigendanceError, match="out of range"):
         model.coefficients(times, modes=[99])
     values = np.linspace(0, 1, 11 * 8).reshape(11, 8)
-    phi = band_drive(values, model.n_modes, amplification=2.0)
+    phi = band_drive(values, model.n_modes, amplification=2.0)  # 8 bands over 5 modes
     assert phi.shape == (11, model.n_modes)
-    np.testing.assert_allclose(phi[:, 0], 2 * values[:, :2].mean(axis=1))
-    assert band_drive(values[:, :2], 5).shape == (11, 5)
+    np.testing.assert_allclose(phi[:, 0], 2 * values[:, :2].sum(axis=1))  # bands 0, 1
+    np.testing.assert_allclose(phi[:, 4], 2 * values[:, 7])  # the last band alone
+    np.testing.assert_allclose(band_drive(np.ones((3, 8)), 4), 1.0)  # full scale: φ = 1
+    np.testing.assert_allclose(band_drive(np.zeros((3, 8)), 4, offset=1.0), 1.0)  # (6-2)
+    few = band_drive(values[:, :2], 5)  # fewer bands than modes: every mode still driven
+    assert few.shape == (11, 5) and np.all(few[-1] > 0)
 
 
 def test_modal_file_round_trip(tmp_path):

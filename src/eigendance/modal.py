@@ -300,14 +300,17 @@ class ModalModel:
                    int(data["constraint_rank"]), names, centers, rotations, data.get("mass"))
 
 
-def band_drive(values, n_modes: int, amplification: float = 1.0) -> np.ndarray:
+def band_drive(values, n_modes: int, amplification: float | None = None,
+               offset: float = 0.0) -> np.ndarray:
     """A simple φ (T, n_modes) from a spectrogram-like (T, B) array in [0, 1].
 
-    Bands are cut into n_modes contiguous groups in order (band ξ drives mode ⌊ξ·n_modes/B⌋:
-    low sounds drive low modes) and φ_κ = amplification · mean of its group's values, so silence
-    stands still and a full-scale group moves its mode at amplitude μ·amplification. With fewer
-    bands than modes, band ξ drives modes ⌊ξ·nm/B⌋ … ⌊(ξ+1)·nm/B⌋ − 1. This stands in for the
-    mapping of DESIGN §4 (eigendance.mapping), whose Mapping.filter gives φ of the same shape.
+    Bands are assigned to modes in order, in contiguous groups (band ξ drives mode
+    ⌊ξ·n_modes/B⌋: low sounds drive low modes), and φ_κ = a · Σ_{ξ→κ} g̃(ξ) + offset, the
+    thesis's (6-2) with a constant amplification a. Default a = n_modes / B, so a full-scale
+    spectrum gives φ ≈ 1, and offset 0, so silence stands still (offset 1 is (6-2) exactly:
+    silence moves every mode at its base amplitude μ). With fewer bands than modes, a mode
+    that no band reaches takes the band ⌊κ·B/n_modes⌋. This stands in for the mapping of
+    DESIGN §4 (eigendance.mapping), whose Mapping.filter gives φ of the same shape.
     """
     values = np.asarray(values, dtype=float)
     if values.ndim != 2:
@@ -317,13 +320,13 @@ def band_drive(values, n_modes: int, amplification: float = 1.0) -> np.ndarray:
         return np.zeros((frames, 0))
     if bands == 0:
         raise EigendanceError("band values have no bands")
-    owner = np.minimum(np.arange(n_modes) * bands // n_modes, bands - 1)  # mode → first band
+    if amplification is None:
+        amplification = n_modes / bands
     group_of_band = np.minimum(np.arange(bands) * n_modes // bands, n_modes - 1)
-    sums = np.zeros((frames, n_modes))
-    counts = np.zeros(n_modes)
-    np.add.at(sums.T, group_of_band, values.T)
-    np.add.at(counts, group_of_band, 1)
-    empty = counts == 0
-    sums[:, empty] = values[:, owner[empty]]
-    counts[empty] = 1
-    return amplification * sums / counts
+    sums = np.zeros((n_modes, frames))
+    np.add.at(sums, group_of_band, values.T)
+    reached = np.zeros(n_modes, dtype=bool)
+    reached[group_of_band] = True
+    fallback = np.minimum(np.arange(n_modes) * bands // n_modes, bands - 1)
+    sums[~reached] = values.T[fallback[~reached]]
+    return amplification * sums.T + offset
