@@ -75,3 +75,15 @@ def test_malformed_json_and_missing_file(tmp_path):
         Skeleton.load(tmp_path / "nothing.json")
     with pytest.raises(EigendanceError, match="unknown rig format"):
         Skeleton.load(tmp_path / "rig.obj")
+
+
+def test_a_loop_written_as_json_keeps_the_thesis_dimensions(tmp_path):
+    from eigendance.modal import ModalModel
+    from eigendance.sample_rigs import planar_loop
+
+    document = planar_loop(4, skin=False).to_dict()
+    for joint in document["joints"]:
+        del joint["position"]  # found again where the bodies meet
+    skeleton = Skeleton.load(write(tmp_path, document))
+    model = ModalModel.from_skeleton(skeleton)
+    assert (model.constraint_rows, model.nullspace_dim, model.rigid_modes) == (20, 7, 6)

@@ -11,8 +11,9 @@ one vector of length 6·n_b. For a joint j between bodies i and l at P:
 - N: orthonormal basis of ker G from the SVD with a relative rank tolerance, so loops (dependent
   rows) give dim N = 6n_b − rank G.
 - M̃ = NᵀMN, K̃ = NᵀRᵀKRN, K̃u = λM̃u; modes η = Nu (ηᵀMη = I), frequencies ν = √λ/2π Hz.
-  The dim N − rank(RN) smallest eigenvalues are rigid motions of the whole (λ = 0): counted,
-  not kept as vibrations.
+  The dim N − rank(RN) smallest eigenvalues are rigid motions of the whole (λ = 0; also any
+  mechanism left free by a zero stiffness): counted, not kept as vibrations. Joint damping
+  is read with the skeleton but not used: the modes are those of the undamped system.
 
 Motion: c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ); body b's twist p̂_b = Σ_κ c_κ η_κ^b = [θ; x] in
 its body frame moves it exactly: rotation exp([θ]×) about its centre of mass, then translation x.
@@ -204,16 +205,15 @@ class ModalModel:
         return energy / np.where(total > 0, total, 1)
 
     def default_amplitudes(self, angle: float = 0.3, size: float | None = None) -> np.ndarray:
-        """μ per mode so that the mode's largest body rotation is `angle` radians (or, for a
-        mode without rotation, its largest translation is angle·size)."""
+        """μ per mode so that its largest body rotation is at most `angle` radians and its
+        largest body translation at most angle·size (size: the rest pose's extent)."""
         twists = self.modes.reshape(self.n_bodies, 6, -1)
         rotation = np.linalg.norm(twists[:, :3], axis=1).max(axis=0)
         translation = np.linalg.norm(twists[:, 3:], axis=1).max(axis=0)
         if size is None:
             extent = self.body_centers.max(axis=0) - self.body_centers.min(axis=0)
             size = float(np.linalg.norm(extent)) or 1.0
-        reference = np.where(rotation > 1e-12 * (translation / size + 1e-300), rotation,
-                             translation / size)
+        reference = np.maximum(rotation, translation / size)
         return angle / np.where(reference > 0, reference, 1)
 
     # ----------------------------------------------------------------- motion
@@ -228,7 +228,7 @@ class ModalModel:
         selected = np.arange(self.n_modes) if modes is None else np.asarray(modes, dtype=int)
         if selected.size and (selected.min() < 0 or selected.max() >= self.n_modes):
             raise EigendanceError(f"mode index out of range: the model has {self.n_modes} "
-                                  "vibration modes (0 … {})".format(self.n_modes - 1))
+                                  f"vibration modes (0 … {self.n_modes - 1})")
         amplitudes = self.default_amplitudes() if amplitudes is None else \
             np.broadcast_to(np.asarray(amplitudes, dtype=float), (self.n_modes,))
         phases = np.zeros(self.n_modes) if phases is None else \
