@@ -13,6 +13,10 @@ them (thesis §5.2). Every frame follows DESIGN §5:
 
 Sources: the skeleton JSON of DESIGN §8 (`Skeleton.from_json`) and glTF 2.0 skins
 (`Skeleton.from_gltf`, see that method for how bodies, joints and stiffnesses are derived).
+In the JSON, a joint's "stiffness" is a number (every free row), a list (one per free row of
+[ωx ωy ωz vx vy vz], in that order), or "auto" (see DEFAULT_JOINT_FREQUENCY); "position"
+defaults to where the two bodies meet (a shared end, else the closest points of their axes);
+"density" defaults to DEFAULT_DENSITY; "damping" is kept but the modes are undamped.
 """
 
 from __future__ import annotations
@@ -354,7 +358,8 @@ class Skeleton:
         - Joints: one spherical joint (free ω, natural for characters) between each joint node
           and its parent joint node, at the child's position; stiffness per rotation row from
           `automatic_stiffness`, i.e. every joint alone would swing its lighter body at
-          `stiffness_frequency` Hz (1 Hz). Edit the rig as skeleton JSON for other choices.
+          `stiffness_frequency` Hz (1 Hz). Other choices: change `joints` (type,
+          stiffness) of the returned skeleton in code; the skin stays valid.
         - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
           skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
           (vertices with no weight go to the nearest body); seam vertices (same position)
