@@ -227,3 +227,36 @@ def test_bad_library_file_on_the_command_line_is_a_one_line_error(tmp_path, caps
     assert main(["serve", str(bad), "--port", "1"]) == 1
     error = capsys.readouterr().err
     assert error.startswith("eigendance: error:") and error.count("\n") == 1
+
+
+def test_demo_prints_its_url_on_one_line_and_serves_the_cat_and_the_music(tmp_path):
+    import subprocess
+    import sys
+    import time
+    import urllib.request
+
+    from web_helpers import free_port
+
+    port = free_port()
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
+    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "demo", "-k", "16",
+                                "--port", str(port)], env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    try:
+        line = process.stdout.readline()
+        assert line == f"eigendance demo: open http://127.0.0.1:{port}/ in a browser\n"
+        url = f"http://127.0.0.1:{port}/api/library"
+        deadline = time.time() + 60
+        while True:
+            library = json.load(urllib.request.urlopen(url))
+            if library["meshes"][0]["ready"] or time.time() > deadline:
+                break
+            time.sleep(0.2)
+        assert [m["name"] for m in library["meshes"]] == ["cat_lowres.obj"]
+        assert library["meshes"][0]["ready"] and library["meshes"][0]["k"] == 16
+        assert library["songs"][0]["duration"] == pytest.approx(30, abs=0.1)
+        assert os.path.exists(tmp_path / "cache" / "demo-music" / "eigendance-demo-music.wav")
+    finally:
+        process.terminate()
+        _, errors = process.communicate(timeout=10)
+    assert "computing the basis of cat_lowres.obj" in errors
