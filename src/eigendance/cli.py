@@ -203,6 +203,10 @@ def add_animate(parser):
     parser.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
     parser.add_argument("-k", type=int, default=300,
                         help="harmonics when MESH is a mesh file (default 300)")
+    parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
+    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+
+
 def add_modes(parser):
     parser.add_argument("rig", help="skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in "
                                     "sample rig: loop4, loop8, loop16, chain")
