@@ -168,8 +168,9 @@ def resample_amplification(amplification, k: int) -> np.ndarray:
 def filters(mappings, values, k: int) -> np.ndarray:
     """φ for S mappings and band values (…, B) in one vectorised call → (S, …, k).
 
-    The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) is a matrix product with a one-hot (B, k) matrix per
-    mapping: φ = a_k ⊙ (g̃ @ P_s) + 1.
+    The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) (= g̃ @ P_s with the one-hot (B, k) matrix P_s of
+    mapping s) is one np.bincount over (mapping, frame, harmonic) for all mappings and frames:
+    no BLAS call (whose thread start-up dominated for small batches) and O(S·F·B) work.
     """
     values = np.asarray(values, dtype=np.float64)
     mappings = list(mappings)
@@ -180,12 +181,16 @@ def filters(mappings, values, k: int) -> np.ndarray:
                                   f"spectrogram has {bands}")
     if not mappings:
         return np.zeros((0, *values.shape[:-1], k))
+    count = len(mappings)
     indices = harmonic_indices(np.stack([m.transfer for m in mappings]), k)  # (S, B)
-    one_hot = np.zeros((len(mappings), bands, k))
-    np.put_along_axis(one_hot, indices[:, :, None], 1.0, axis=2)
     amplification = np.stack([m.amplification_for(k) for m in mappings])  # (S, k)
-    flat = values.reshape(-1, bands)
-    sums = np.matmul(flat[None], one_hot)  # (S, F, k)
+    flat = values.reshape(-1, bands)  # (F, B)
+    frames = len(flat)
+    # Flat target index of (s, f, ν(s, ξ)) in an (S, F, k) array, for every (s, f, ξ).
+    rows = (np.arange(count)[:, None] * frames + np.arange(frames)[None, :]) * k  # (S, F)
+    target = rows[:, :, None] + indices[:, None, :]  # (S, F, B)
+    sums = np.bincount(target.ravel(), weights=np.broadcast_to(flat, target.shape).ravel(),
+                       minlength=count * frames * k).reshape(count, frames, k)
     phi = amplification[:, None, :] * sums + 1.0
     return phi.reshape(len(mappings), *values.shape[:-1], k)
 
