@@ -79,6 +79,16 @@ def test_initial_gallery_structure_and_calibration(basis):
     np.testing.assert_allclose(scaled[0].amplification, 2 * gallery[0].amplification)
 
 
+def test_each_item_calibration_gives_every_moving_item_five_percent(basis):
+    gallery = initial_gallery(basis, EDGES, 8, calibration="each")
+    motion = full_scale_motion(basis, gallery) / bounding_box_diagonal(basis)
+    moving = motion > 0
+    assert moving.sum() >= 2
+    np.testing.assert_allclose(motion[moving], TARGET_MOTION, rtol=1e-6)
+    with pytest.raises(EigendanceError, match="unknown calibration"):
+        initial_gallery(basis, EDGES, 8, calibration="median")
+
+
 def test_initial_gallery_size_must_be_even(basis):
     with pytest.raises(EigendanceError, match="even number"):
         initial_gallery(basis, EDGES, 5)

@@ -41,7 +41,7 @@ class _Deformer:
 
     def __init__(self, basis):
         self.basis = basis
-        self.rest = basis.to_original(basis.vertices)  # (n, 3)
+        self.rest_rows = np.ascontiguousarray(basis.to_original(basis.vertices).T)  # (3, n)
         self.coefficients = basis.coefficients * basis.scale  # (k, 3), original units
 
     def __call__(self, phi: np.ndarray, out: np.ndarray) -> np.ndarray:
@@ -53,9 +53,10 @@ class _Deformer:
         """
         count, k = phi.shape
         weights = (phi - 1.0)[:, None, :] * self.coefficients.T[None]  # (C, 3, k)
-        moved = weights.reshape(3 * count, k) @ self.basis.eigenvectors.T  # (3C, n)
-        np.add(moved.reshape(count, 3, -1).transpose(0, 2, 1), self.rest[None], out=out,
-               casting="unsafe")
+        moved = (weights.reshape(3 * count, k) @ self.basis.eigenvectors.T).reshape(count, 3, -1)
+        for axis in range(3):  # contiguous reads, stride-3 writes: faster than one transpose
+            np.add(moved[:, axis, :], self.rest_rows[axis], out=out[:, :, axis],
+                   casting="unsafe")
         return out
 
 

@@ -131,15 +131,25 @@ def _open_pyav(path: str):
         container.close()
         raise EigendanceError(f"{name}: the file holds no audio stream")
     stream = streams[0]
-    sample_rate = int(stream.codec_context.sample_rate or 0)
+    frames = container.decode(stream)
+    try:  # the first frame's rate is the truth (HE-AAC streams may announce half of it)
+        first = next(frames, None)
+    except Exception as error:
+        container.close()
+        raise EigendanceError(f"{name}: corrupt audio data ({_one_line(error)})") from None
+    sample_rate = int(first.sample_rate if first is not None
+                      else stream.codec_context.sample_rate or 0)
     if sample_rate < 1:
         container.close()
         raise EigendanceError(f"{name}: the audio stream has no sample rate")
 
     def chunks():
         with container:
+            if first is None:
+                return
+            yield _mono(first)
             try:
-                for frame in container.decode(stream):
+                for frame in frames:
                     if frame.sample_rate != sample_rate:
                         raise EigendanceError(f"{name}: the sample rate changes inside the "
                                               f"stream ({sample_rate} → {frame.sample_rate} Hz)")

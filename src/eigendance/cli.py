@@ -166,6 +166,9 @@ def add_gallery(parser):
     parser.add_argument("--breed", nargs="+", metavar="MAPPING",
                         help="breed children of these mapping files instead of the initial "
                              "gallery")
+    parser.add_argument("--calibration", choices=("strongest", "each"), default="strongest",
+                        help="initial gallery: one M_a so the strongest item moves 5%% of the "
+                             "diagonal (default, DESIGN §4), or each item its own")
     parser.add_argument("-k", type=int, default=300,
                         help="harmonics when BASIS is a mesh file (default 300)")
     parser.add_argument("-o", "--output", required=True, help="folder for 0.json, 1.json, …")
@@ -188,7 +191,7 @@ def run_gallery(args) -> None:
     else:
         basis = basis_from_path(args.basis, args.k)
         spectrogram = spectrogram_from_path(args.spectrogram)
-        items = initial_gallery(basis, spectrogram, args.size)
+        items = initial_gallery(basis, spectrogram, args.size, calibration=args.calibration)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"

@@ -168,8 +168,9 @@ def resample_amplification(amplification, k: int) -> np.ndarray:
 def filters(mappings, values, k: int) -> np.ndarray:
     """φ for S mappings and band values (…, B) in one vectorised call → (S, …, k).
 
-    The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) is a matrix product with a one-hot (B, k) matrix per
-    mapping: φ = a_k ⊙ (g̃ @ P_s) + 1.
+    The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) (= g̃ @ P_s with the one-hot (B, k) matrix P_s of
+    mapping s) is one np.bincount over (mapping, frame, harmonic) for all mappings and frames:
+    no BLAS call (whose thread start-up dominated for small batches) and O(S·F·B) work.
     """
     values = np.asarray(values, dtype=np.float64)
     mappings = list(mappings)
@@ -180,12 +181,16 @@ def filters(mappings, values, k: int) -> np.ndarray:
                                   f"spectrogram has {bands}")
     if not mappings:
         return np.zeros((0, *values.shape[:-1], k))
+    count = len(mappings)
     indices = harmonic_indices(np.stack([m.transfer for m in mappings]), k)  # (S, B)
-    one_hot = np.zeros((len(mappings), bands, k))
-    np.put_along_axis(one_hot, indices[:, :, None], 1.0, axis=2)
     amplification = np.stack([m.amplification_for(k) for m in mappings])  # (S, k)
-    flat = values.reshape(-1, bands)
-    sums = np.matmul(flat[None], one_hot)  # (S, F, k)
+    flat = values.reshape(-1, bands)  # (F, B)
+    frames = len(flat)
+    # Flat target index of (s, f, ν(s, ξ)) in an (S, F, k) array, for every (s, f, ξ).
+    rows = (np.arange(count)[:, None] * frames + np.arange(frames)[None, :]) * k  # (S, F)
+    target = rows[:, :, None] + indices[:, None, :]  # (S, F, B)
+    sums = np.bincount(target.ravel(), weights=np.broadcast_to(flat, target.shape).ravel(),
+                       minlength=count * frames * k).reshape(count, frames, k)
     phi = amplification[:, None, :] * sums + 1.0
     return phi.reshape(len(mappings), *values.shape[:-1], k)
 
@@ -239,8 +244,12 @@ def gallery_intervals(size: int) -> np.ndarray:
     return np.stack([eps ** 2, (eps + 2 / size) ** 2], axis=1)
 
 
+CALIBRATIONS = ("strongest", "each")
+
+
 def initial_gallery(basis, spectrogram, size: int = DEFAULT_GALLERY_SIZE,
-                    amplitude: float | None = None) -> list[Mapping]:
+                    amplitude: float | None = None,
+                    calibration: str = "strongest") -> list[Mapping]:
     """The S items of the initial gallery (thesis 6.2.2, DESIGN §4), S even ≥ 2.
 
     Item i < S/2: transfer t_ini(ε_i·ξ), amplification +M_a on interval I_i, 0 elsewhere.
@@ -249,9 +258,15 @@ def initial_gallery(basis, spectrogram, size: int = DEFAULT_GALLERY_SIZE,
     harmonic ν is in I_i when its cell centre (ν + ½)/k lies in [lower, upper) (the last one
     closed).
     M_a (unless `amplitude` is given) is calibrated so that the strongest item at full-scale input
-    (g̃ ≡ 1) moves the vertices by TARGET_MOTION (5%) of the bounding-box diagonal, RMS.
+    (g̃ ≡ 1) moves the vertices by TARGET_MOTION (5%) of the bounding-box diagonal, RMS (DESIGN).
+    calibration="each" (not in DESIGN; an option) gives every item that moves at all its own M_a,
+    so that each moves by 5%: with one shared M_a the ε = 0 items, which send all B bands to one
+    harmonic, are tens to hundreds of times stronger than the others, which then hardly move.
     `spectrogram` may be a Spectrogram or its band edges (B+1,).
     """
+    if calibration not in CALIBRATIONS:
+        raise EigendanceError(f"unknown calibration '{calibration}' (expected one of "
+                              f"{', '.join(CALIBRATIONS)})")
     if not isinstance(size, int | np.integer) or size < 2 or size % 2:
         raise EigendanceError(f"the gallery size must be an even number ≥ 2, got {size}")
     edges = getattr(spectrogram, "band_edges", spectrogram)
@@ -269,10 +284,22 @@ def initial_gallery(basis, spectrogram, size: int = DEFAULT_GALLERY_SIZE,
             lower, upper = intervals[i]
             inside = (centres >= lower) & ((centres < upper) if i < half - 1 else centres <= upper)
             shapes.append(sign * inside.astype(np.float64))
-    if amplitude is None:
-        amplitude = calibrate_amplitude(basis, transfers, shapes)
-    return [Mapping(t, amplitude * a, None, f"gallery item {i}")
-            for i, (t, a) in enumerate(zip(transfers, shapes, strict=True))]
+    if amplitude is not None:
+        amplitudes = np.full(size, float(amplitude))
+    elif calibration == "strongest":
+        amplitudes = np.full(size, calibrate_amplitude(basis, transfers, shapes))
+    else:
+        motion = full_scale_motion(basis, [Mapping(t, a) for t, a in zip(transfers, shapes,
+                                                                          strict=True)])
+        if not motion.max() > 1e-12:
+            raise EigendanceError("no initial gallery item moves this mesh (too few "
+                                  "harmonics?); use a larger -k")
+        target = TARGET_MOTION * bounding_box_diagonal(basis)
+        # Items that cannot move (transfer and amplification never meet) keep M_a = 0 · shape.
+        amplitudes = np.where(motion > 1e-9 * motion.max(), target / np.maximum(motion, 1e-300),
+                              0.0)
+    return [Mapping(t, m * a, None, f"gallery item {i}")
+            for i, (t, a, m) in enumerate(zip(transfers, shapes, amplitudes, strict=True))]
 
 
 def full_scale_motion(basis, mappings) -> np.ndarray:
@@ -305,7 +332,7 @@ def calibrate_amplitude(basis, transfers, shapes) -> float:
 
 def strongest_item(basis, spectrogram, size: int = DEFAULT_GALLERY_SIZE) -> Mapping:
     """The initial-gallery item that moves the mesh most at full-scale input (the default)."""
-    gallery = initial_gallery(basis, spectrogram, size)
+    gallery = initial_gallery(basis, spectrogram, size, calibration="strongest")
     index = int(np.argmax(full_scale_motion(basis, gallery)))
     return gallery[index]
 
