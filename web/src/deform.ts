@@ -4,27 +4,17 @@
 import * as THREE from "three";
 import type { Basis } from "./bundle";
 
-const COMMON = /* glsl */ `
+const TEXELS = /* glsl */ `
 precision highp float;
 precision highp int;
 precision highp sampler2D;
 uniform sampler2D harmonics;
 uniform int texWidth;
-uniform vec4 weights[WEIGHTS];
 in float vid;
 
 vec4 harmonicTexel(int v, int j) {
   int index = v * K4 + j;
   return texelFetch(harmonics, ivec2(index % texWidth, index / texWidth), 0);
-}
-
-vec3 displacement(int v) {
-  vec3 d = vec3(0.0);
-  for (int j = 0; j < K4; j++) {
-    vec4 u = harmonicTexel(v, j);
-    d += vec3(dot(u, weights[3 * j]), dot(u, weights[3 * j + 1]), dot(u, weights[3 * j + 2]));
-  }
-  return d;
 }
 `;
 
@@ -98,6 +88,7 @@ void main() {
 function positionsShaders(tiles: number): { vertex: string; fragment: string } {
   const range = [...Array(tiles).keys()];
   const vertex = /* glsl */ `
+uniform vec4 weights[WEIGHTS];
 uniform int targetWidth;
 uniform vec2 targetSize;
 ${range.map((t) => `out vec3 vPosition${t};`).join("\n")}
@@ -147,7 +138,7 @@ class PositionsPass {
         targetWidth: { value: this.width },
         targetSize: { value: new THREE.Vector2(this.width, this.height) },
       },
-      vertexShader: COMMON + shaders.vertex, fragmentShader: shaders.fragment,
+      vertexShader: TEXELS + shaders.vertex, fragmentShader: shaders.fragment,
       depthTest: false, depthWrite: false,
     });
     const geometry = new THREE.BufferGeometry();
@@ -264,17 +255,16 @@ export class Deformer {
     displaced.setUsage(THREE.DynamicDrawUsage);
     this.geometry.setAttribute("displaced", displaced);
 
-    const defines = { K4: basis.k4, WEIGHTS: 3 * basis.k4 };
+    const defines = { K4: basis.k4 };
     const uniforms = () => ({
       harmonics: { value: this.texture }, texWidth: { value: width },
-      weights: { value: new Float32Array(12 * basis.k4) },
       colorHarmonic: { value: -1 }, colorScale: { value: 1 },
       baseColor: { value: new THREE.Color(TILE_COLORS[0]) }, normalBlend: { value: 0.4 },
       wire: { value: false },
     });
     const make = (extra: Record<string, any>) => new THREE.ShaderMaterial({
       glslVersion: THREE.GLSL3, defines: { ...defines, ...extra }, uniforms: uniforms(),
-      vertexShader: COMMON + SURFACE_VERTEX, fragmentShader: SURFACE_FRAGMENT,
+      vertexShader: TEXELS + SURFACE_VERTEX, fragmentShader: SURFACE_FRAGMENT,
       side: THREE.DoubleSide,
     });
     this.gpuMaterial = make({});
@@ -303,7 +293,6 @@ export class Deformer {
     const material = this.material;
     this.mesh.material = material;
     const u = material.uniforms;
-    (u.weights.value as Float32Array).set(weights);
     (u.baseColor.value as THREE.Color).setHex(options.color);
     u.normalBlend.value = options.normalBlend;
     u.colorHarmonic.value = options.harmonic;
