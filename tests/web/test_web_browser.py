@@ -198,3 +198,16 @@ def test_dropping_an_audio_file_makes_it_the_current_song(browser, live_server, 
     assert "dropped.wav" in page.eval_on_selector_all("#song option",
                                                       "o => o.map(x => x.textContent)")
     page.close()
+
+
+def test_playback_stops_at_the_end_of_the_song_and_rewinds(browser, live_server):
+    page = open_app(browser, live_server["url"], "?size=4")
+    duration = page.evaluate("window.eigendance.info().duration")
+    page.eval_on_selector("#seek", "(seek, t) => { seek.value = t; "
+                                   "seek.dispatchEvent(new Event('input')); }", duration - 0.6)
+    page.click("#play")
+    page.wait_for_function("document.getElementById('play').textContent === '▶'",
+                           timeout=20_000)
+    assert float(page.input_value("#seek")) == 0
+    assert not page.errors, page.errors
+    page.close()

@@ -60,15 +60,21 @@ function status(text: string): void { $("status").textContent = text; }
 // --- time ---------------------------------------------------------------------------------------
 function duration(): number { return state.spectrum?.duration ?? 0; }
 
+function clockTime(): number {
+  const audio = state.audio;
+  return audio.playing && audio.context ? audio.context.currentTime - audio.startedAt
+    : audio.offset;
+}
+
 function now(): number {
   if (state.explicitTime !== null) return state.explicitTime;
-  const audio = state.audio;
-  if (audio.playing && audio.context) {
-    const t = audio.context.currentTime - audio.startedAt;
-    if (t >= duration()) { stop(); audio.offset = 0; return 0; }
-    return t;
+  const t = clockTime();
+  if (state.audio.playing && t >= duration()) { // the end of the song: back to the start
+    stop();
+    state.audio.offset = 0;
+    return 0;
   }
-  return audio.offset;
+  return t;
 }
 
 function ensureAudio(): AudioContext {
@@ -110,7 +116,7 @@ function play(): void {
 function stop(): void {
   const audio = state.audio;
   if (!audio.playing) return;
-  audio.offset = now();
+  audio.offset = Math.min(clockTime(), duration());
   audio.playing = false;
   try { audio.source?.stop(); } catch { /* already stopped */ }
   audio.source = null;
