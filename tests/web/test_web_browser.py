@@ -211,3 +211,18 @@ def test_playback_stops_at_the_end_of_the_song_and_rewinds(browser, live_server)
     assert float(page.input_value("#seek")) == 0
     assert not page.errors, page.errors
     page.close()
+
+
+def test_float16_download_stays_close_to_the_reference(browser, live_server, reference):
+    from eigendance.animate import positions_at
+    from eigendance.mapping import Mapping
+
+    basis, spectrogram = reference
+    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
+    page = open_app(browser, live_server["url"], "?render&half&size=4")
+    mapping = Mapping.from_json(page.evaluate("window.eigendance.mappings()")[0])
+    gpu = np.array(page.evaluate("window.eigendance.readPositions(0, 1.7)"))
+    error = np.abs(basis.to_original(gpu.reshape(-1, 3))
+                   - positions_at(basis, spectrogram, mapping, 1.7)).max() / diagonal
+    assert error < 1e-3, error
+    page.close()

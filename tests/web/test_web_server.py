@@ -66,6 +66,17 @@ def test_basis_bundle_holds_the_packed_harmonics(client):
     assert arrays["faces"].dtype == np.uint32 and arrays["faces"].shape == basis.faces.shape
 
 
+def test_basis_bundle_in_float16_on_request(client):
+    mesh_id, _ = ids(client)
+    full = client.get(f"/api/meshes/{mesh_id}/basis.bin").content
+    half = client.get(f"/api/meshes/{mesh_id}/basis.bin?dtype=float16").content
+    _, arrays = unpack(half)
+    assert arrays["harmonics"].dtype == np.float16 and len(half) < 0.75 * len(full)
+    basis = client.library.meshes[mesh_id].basis
+    np.testing.assert_allclose(arrays["harmonics"], basis.eigenvectors, rtol=2**-11, atol=1e-7)
+    assert "dtype" in error_of(client.get(f"/api/meshes/{mesh_id}/basis.bin?dtype=int8"), 400)
+
+
 def test_spectrogram_bundle_and_audio_bytes(client, files):
     _, song_id = ids(client)
     meta, arrays = unpack(client.get(f"/api/songs/{song_id}/spectrogram.bin").content)

@@ -49,6 +49,7 @@ def build():
                  "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
     return {"reference.json": json.dumps(reference, indent=0).encode(),
             "basis.bin": basis_bundle(basis, "ellipsoid"),
+            "basis16.bin": basis_bundle(basis, "ellipsoid", half=True),
             "spectrogram.bin": spectrogram_bundle(spectrogram, "demo-2s")}
 
 

@@ -32,8 +32,10 @@ export async function postJSON<T>(url: string, body: unknown): Promise<T> {
 
 export const library = () => getJSON<Library>("api/library");
 
-export async function basis(meshId: string): Promise<Basis> {
-  const response = await checked(await fetch(`api/meshes/${meshId}/basis.bin`));
+/** The basis of a mesh; `half`: harmonics sent as float16 (half the download). */
+export async function basis(meshId: string, half = false): Promise<Basis> {
+  const query = half ? "?dtype=float16" : "";
+  const response = await checked(await fetch(`api/meshes/${meshId}/basis.bin${query}`));
   return basisFromBundle(parseBundle(await response.arrayBuffer()));
 }
 

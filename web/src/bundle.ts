@@ -6,6 +6,22 @@ export interface Bundle {
   arrays: Record<string, { data: Float32Array | Uint32Array; shape: number[] }>;
 }
 
+let halfTable: Float32Array | null = null;
+
+/** IEEE half-precision bits → float (all 65536 values tabulated once). */
+export function halfToFloat(bits: number): number {
+  if (!halfTable) {
+    halfTable = new Float32Array(65536);
+    for (let h = 0; h < 65536; h++) {
+      const sign = h & 0x8000 ? -1 : 1, exponent = (h >> 10) & 0x1f, fraction = h & 0x3ff;
+      halfTable[h] = exponent === 0 ? sign * fraction * 2 ** -24
+        : exponent === 31 ? (fraction ? NaN : sign * Infinity)
+          : sign * (1 + fraction / 1024) * 2 ** (exponent - 15);
+    }
+  }
+  return halfTable[bits];
+}
+
 export function parseBundle(buffer: ArrayBuffer): Bundle {
   const bytes = new Uint8Array(buffer);
   if (bytes.length < 8 || String.fromCharCode(...bytes.subarray(0, 4)) !== "EDB1") {
@@ -18,7 +34,18 @@ export function parseBundle(buffer: ArrayBuffer): Bundle {
   for (const [name, entry] of Object.entries<any>(header.arrays)) {
     const count = entry.shape.reduce((a: number, b: number) => a * b, 1);
     const offset = start + entry.offset;
-    if (offset + 4 * count > buffer.byteLength) throw new Error(`bundle array ${name} truncated`);
+    const size = entry.dtype === "float16" ? 2 : 4;
+    if (offset + size * count > buffer.byteLength) {
+      throw new Error(`bundle array ${name} truncated`);
+    }
+    if (entry.dtype === "float16") { // decoded to float32 (the textures are RGBA32F)
+      const bits = new Uint16Array(buffer, offset, count);
+      const data = new Float32Array(count);
+      halfToFloat(0);
+      for (let i = 0; i < count; i++) data[i] = halfTable![bits[i]];
+      arrays[name] = { data, shape: entry.shape };
+      continue;
+    }
     const Type = entry.dtype === "uint32" ? Uint32Array : Float32Array;
     arrays[name] = { data: new Type(buffer, offset, count), shape: entry.shape };
   }

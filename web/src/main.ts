@@ -472,7 +472,10 @@ async function loadMesh(meshId: string): Promise<void> {
   $<HTMLSelectElement>("mesh").value = meshId;
   await waitForBasis(mesh);
   status(`${mesh.name}: loading basis…`);
-  const basis = await api.basis(meshId);
+  // float16 harmonics on request (?half), or when float32 would exceed 128 MB (?half=0: never)
+  const bytes = 16 * Math.ceil(mesh.k / 4) * mesh.vertices;
+  const half = params.has("half") ? params.get("half") !== "0" : bytes > 128 * 2 ** 20;
+  const basis = await api.basis(meshId, half);
   state.deformer?.dispose();
   state.basis = basis;
   state.deformer = new Deformer(basis, renderer, Number(params.get("batch") ?? 8));

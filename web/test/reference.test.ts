@@ -3,7 +3,7 @@
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { describe, expect, it } from "vitest";
-import { basisFromBundle, parseBundle, spectrumFromBundle } from "../src/bundle";
+import { basisFromBundle, halfToFloat, parseBundle, spectrumFromBundle } from "../src/bundle";
 import {
   deformCPU, filterValues, prepare, resampleAmplification, shaderWeights, smoothed, spectrumAt,
 } from "../src/filter";
@@ -53,6 +53,19 @@ describe("binary bundles", () => {
     expect(spectrum.frames).toBe(reference.frames);
     expect(spectrum.rate).toBe(100);
     expect(spectrum.bandEdges.length).toBe(reference.bands + 1);
+  });
+
+  it("decodes float16 harmonics", () => {
+    expect([0x3c00, 0xc000, 0x7bff, 0x0001, 0x0000, 0x8000].map(halfToFloat))
+      .toEqual([1, -2, 65504, 2 ** -24, 0, -0]);
+    const half = basisFromBundle(parseBundle(bytes("basis16.bin")));
+    expect(half.n).toBe(basis.n);
+    let worst = 0;
+    basis.harmonics.forEach((x, i) => {
+      worst = Math.max(worst, Math.abs(half.harmonics[i] - x) / Math.max(Math.abs(x), 2 ** -14));
+    });
+    expect(worst).toBeLessThanOrEqual(2 ** -11);
+    expectClose(half.vertices, reference.vertices, 1e-6);
   });
 
   it("rejects what is not a bundle", () => {

@@ -109,8 +109,21 @@ def create_app(paths=(), library: Library | None = None, folder: str | None = No
         return JSONResponse(mesh_of(request.path_params["id"]).as_json())
 
     async def get_basis(request):
+        """?dtype=float16 sends the harmonics as float16 (half the bytes)."""
+        from eigendance.server.binary import basis_bundle
+
         item = ready_basis(request.path_params["id"])
-        return Response(item.bundle, media_type="application/octet-stream",
+        dtype = request.query_params.get("dtype", "float32")
+        if dtype not in ("float32", "float16"):
+            raise HTTPException(400, "dtype must be float32 or float16")
+        if dtype == "float16":
+            if item.half_bundle is None:
+                item.half_bundle = await asyncio.to_thread(basis_bundle, item.basis, item.name,
+                                                           True)
+            bundle = item.half_bundle
+        else:
+            bundle = item.bundle
+        return Response(bundle, media_type="application/octet-stream",
                         headers={"Cache-Control": "no-cache"})
 
     async def get_spectrogram(request):

@@ -59,6 +59,7 @@ class MeshItem:
     job: Job | None = None
     basis: object = None
     bundle: bytes | None = None
+    half_bundle: bytes | None = None
 
     def as_json(self) -> dict:
         return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
