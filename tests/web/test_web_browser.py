@@ -226,3 +226,33 @@ def test_float16_download_stays_close_to_the_reference(browser, live_server, ref
                    - positions_at(basis, spectrogram, mapping, 1.7)).max() / diagonal
     assert error < 1e-3, error
     page.close()
+
+
+def test_empty_library_fills_up_from_uploads(browser, web_files, tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    from web_helpers import free_port
+
+    port = free_port()
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
+    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", "-k", "12",
+                                "--port", str(port)], env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL, text=True)
+    try:
+        url = process.stdout.readline().split()[-1]
+        page = open_app(browser, url, "?render&size=4")
+        assert "needs a mesh" in page.inner_text("#status")
+        page.set_input_files("#upload", web_files["sphere"])
+        page.wait_for_function("document.getElementById('status').textContent"
+                               ".includes('needs a song')", timeout=30_000)
+        page.set_input_files("#upload", web_files["song"])
+        page.wait_for_function("window.eigendance.info().tiles === 4", timeout=60_000)
+        info = page.evaluate("window.eigendance.info()")
+        assert info["n"] == 162 and info["k"] == 12
+        assert not page.errors, page.errors
+        page.close()
+    finally:
+        process.terminate()
+        process.wait(10)

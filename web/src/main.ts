@@ -514,7 +514,11 @@ async function handleFiles(files: FileList | File[]): Promise<void> {
     try {
       status(`uploading ${file.name}…`);
       const result = await api.upload(file);
-      await refreshLibrary();
+      const library = await refreshLibrary();
+      if (!started) { // the library was incomplete: this file may complete it
+        if (await loadFirst(library)) status(`${file.name} ready`);
+        continue;
+      }
       if (result.kind === "mesh") {
         await loadMesh(result.item.id);
         await newGallery();
@@ -707,14 +711,14 @@ const hooks = {
 };
 (window as any).eigendance = hooks;
 
-async function start(): Promise<void> {
-  // ?bare: only the canvas (offline video frames); ?render: time set by renderAt(t).
-  document.body.classList.toggle("bare", params.has("bare"));
-  wireControls();
-  const library = await refreshLibrary();
+let started = false;
+
+/** Load the first mesh and song and show the gallery (at start, or once uploads complete the
+ * library). Returns false while the library lacks a mesh or a song. */
+async function loadFirst(library: api.Library): Promise<boolean> {
   if (!library.meshes.length || !library.songs.length) {
-    status("the library needs a mesh and a song: drop files here");
-    return;
+    status(`the library needs ${library.meshes.length ? "a song" : "a mesh"}: drop files here`);
+    return false;
   }
   const meshId = params.get("mesh") ?? library.meshes[0].id;
   const songId = params.get("song") ?? library.songs[0].id;
@@ -732,7 +736,16 @@ async function start(): Promise<void> {
   drawFrame(now());
   updatePlayerInfo();
   status(renderMode ? "render mode" : "ready: press ▶ or space");
+  started = true;
+  return true;
+}
+
+async function start(): Promise<void> {
+  // ?bare: only the canvas (offline video frames); ?render: time set by renderAt(t).
+  document.body.classList.toggle("bare", params.has("bare"));
+  wireControls();
   if (!renderMode) requestAnimationFrame(loop);
+  await loadFirst(await refreshLibrary());
 }
 
 hooks.ready = start().catch((error) => {
