@@ -56,7 +56,7 @@ def terminal_progress(library) -> None:
     def listener(job):
         bar = bars.get(job.id)
         if bar is None:
-            if job.state == "running":
+            if job.state == "running" and not job.cached:
                 print(f"eigendance: computing the basis of {job.name} (k = {job.total}; "
                       "cached for the next run)…", file=sys.stderr)
             bar = bars[job.id] = tqdm(total=job.total, desc="basis eigenpairs", unit="pair",
@@ -71,7 +71,8 @@ def terminal_progress(library) -> None:
             if job.state == "error":
                 print(f"eigendance: basis failed: {name}", file=sys.stderr)
             else:
-                print(f"eigendance: basis of {name} ready (k = {job.total}, {seconds:.1f} s)",
+                how = "from the cache" if job.cached else f"{seconds:.1f} s"
+                print(f"eigendance: basis of {name} ready (k = {job.total}, {how})",
                       file=sys.stderr)
 
     library.progress_listeners.append(listener)

@@ -35,6 +35,7 @@ class Job:
     done: int = 0
     state: str = "queued"  # queued | running | done | error
     message: str = ""
+    cached: bool = False  # the basis is in the on-disk cache (no solve)
     started: float = field(default_factory=time.time)
     changed: threading.Condition = field(default_factory=threading.Condition)
 
@@ -151,10 +152,12 @@ class Library:
         return item
 
     def _solve(self, item: MeshItem, mesh, laplacian: str) -> None:
+        from eigendance import cache
         from eigendance.harmonics import HarmonicBasis
         from eigendance.server.binary import basis_bundle
 
         job = item.job
+        job.cached = os.path.exists(cache.path_of(cache.key(mesh, item.k, laplacian)))
         job.update(state="running")
         for listener in self.progress_listeners:
             listener(job)
