@@ -37,4 +37,4 @@ test-web: setup
 	$(BIN)/pytest -q tests/web
 
 bench: setup
-	$(BIN)/python benchmarks/run_all.py
+	for bench in benchmarks/bench_*.py; do $(BIN)/python $$bench || exit 1; done
