@@ -93,3 +93,13 @@ def test_cache_hit_and_corrupt_entry_rebuilt(monkeypatch):
     rebuilt = HarmonicBasis.from_mesh(mesh, 12)
     assert calls == [1] and np.allclose(rebuilt.eigenvalues, first.eigenvalues)
     assert HarmonicBasis.from_mesh(mesh, 12, cache=False) is not None and calls == [1, 1]
+
+
+def test_saved_file_has_ordinary_permissions(tmp_path, knight):
+    import os
+
+    path = tmp_path / "knight.npz"
+    knight.save(path)
+    umask = os.umask(0)
+    os.umask(umask)
+    assert os.stat(path).st_mode & 0o777 == 0o666 & ~umask
