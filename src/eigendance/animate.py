@@ -115,33 +115,12 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
                 if job is not None:
                     job.result()
 
-    _replace_without_sync(path, write)
+    from eigendance.files import atomic_write
+
+    # Animation files are large, derived data: forcing hundreds of MB to disk would cost more
+    # than computing them, so no fsync; readers still never see a half-written file.
+    atomic_write(path, write, sync=False)
     return len(times)
-
-
-def _replace_without_sync(path, write) -> None:
-    """Like files.atomic_write (temporary file, then rename) but without fsync.
-
-    Animation files are large, derived data: forcing hundreds of MB to disk would cost more than
-    computing them. Readers still never see a half-written file.
-    """
-    import tempfile
-
-    path = os.fspath(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    os.makedirs(folder, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=".part")
-    try:
-        with os.fdopen(handle, "wb") as file:
-            write(file)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(temporary, 0o666 & ~umask)  # mkstemp makes 0600; outputs are ordinary files
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
 
 
 def load_animation(path: str | os.PathLike) -> dict:

@@ -11,10 +11,11 @@ import numpy as np
 from eigendance.errors import EigendanceError
 
 
-def atomic_write(path: str | os.PathLike, write) -> None:
+def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
     """Call write(file) on a temporary file beside `path`, then rename it over `path`.
 
-    Readers never see a half-written file, and a failed write leaves no debris.
+    Readers never see a half-written file, and a failed write leaves no debris. sync=False skips
+    the fsync (for large files that are cheap to recompute).
     """
     path = os.fspath(path)
     folder = os.path.dirname(os.path.abspath(path))
@@ -23,8 +24,9 @@ def atomic_write(path: str | os.PathLike, write) -> None:
     try:
         with os.fdopen(handle, "wb") as file:
             write(file)
-            file.flush()
-            os.fsync(file.fileno())
+            if sync:
+                file.flush()
+                os.fsync(file.fileno())
         # mkstemp creates 0600; give the file the permissions a plain open() would.
         umask = os.umask(0)
         os.umask(umask)
