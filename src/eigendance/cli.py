@@ -14,11 +14,14 @@ import time
 from eigendance.errors import EigendanceError
 
 
-def progress_bar(total: int, description: str):
-    """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done)."""
+def progress_bar(total: int | None, description: str, unit: str = "pair"):
+    """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
+
+    total None: the count is not known in advance (the bar shows a running count).
+    """
     from tqdm import tqdm
 
-    bar = tqdm(total=total, desc=description, unit="pair", file=sys.stderr,
+    bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
                disable=not sys.stderr.isatty(), leave=False)
 
     def update(done):
@@ -267,7 +270,6 @@ def add_animate_rig(parser):
 
 
 def run_animate(args) -> None:
-    from tqdm import tqdm
 
     from eigendance.animate import basis_from_path, spectrogram_from_path, write_animation
     from eigendance.files import refuse_overwrite
@@ -282,11 +284,10 @@ def run_animate(args) -> None:
     spectrogram = spectrogram_from_path(args.audio, bands=mapping.bands if mapping else 64)
     if mapping is None:
         mapping = strongest_item(basis, spectrogram)
-    frames = tqdm(desc="frames", unit="frame", file=sys.stderr, disable=not sys.stderr.isatty(),
-                  leave=False)
+    frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
-                                progress=lambda done: frames.update(done - frames.n))
+                                progress=update)
     print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
           f"{time.perf_counter() - start:.1f} s")
 
@@ -325,7 +326,7 @@ def run_animate_rig(args) -> None:
     times = np.arange(int(round(duration * args.fps)) + 1) / args.fps
     if args.audio:
         drive = band_drive(band_loudness(samples, rate, times, args.bands), len(modes))
-    bar, update = progress_bar(len(times), "frames")
+    bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
         arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
                              drive, args.skinning, progress=update)
