@@ -49,11 +49,34 @@ def test_residuals_and_m_orthonormality(sphere_problem, sphere_bands):
     assert np.abs(gram - np.eye(len(values))).max() <= 1e-8
 
 
-def test_bands_equal_dense_solve_nothing_missed_or_doubled(sphere_problem, sphere_bands):
+@pytest.fixture(scope="module")
+def sphere_dense(sphere_problem):
     stiffness, mass = sphere_problem
-    dense = scipy.linalg.eigh(stiffness.toarray(), np.diag(mass), eigvals_only=True,
-                              subset_by_index=[0, 299])
-    assert np.allclose(sphere_bands[0], dense, rtol=1e-8, atol=1e-9)
+    return scipy.linalg.eigh(stiffness.toarray(), np.diag(mass), subset_by_index=[0, 299])
+
+
+def test_bands_equal_dense_solve_nothing_missed_or_doubled(sphere_dense, sphere_bands):
+    assert np.allclose(sphere_bands[0], sphere_dense[0], rtol=1e-8, atol=1e-9)
+
+
+def test_missed_copies_of_a_multiple_eigenvalue_are_found_again(sphere_problem, sphere_dense):
+    """A band that lost pairs of multiplets (as one Krylov space does) gets them back."""
+    import eigendance.eigen as eigen
+
+    stiffness, mass = sphere_problem
+    values, vectors = sphere_dense
+    shift, radius = 20.0, 9.0  # around l = 4, down to l = 3: 16 pairs, in 4 exact multiplets
+    window = np.flatnonzero(np.abs(values - shift) < radius)
+    assert len(window) == 16
+    lost = window[[0, 10, 11]]  # one copy of λ ≈ 11.95, two of λ ≈ 19.87
+    kept = np.setdiff1d(window, lost)
+    damaged = eigen.Band(shift, radius, values[kept], vectors[:, kept], None,
+                         eigen.residuals(stiffness, mass, values[kept], vectors[:, kept]))
+    repaired = eigen._complete_band(stiffness, mass, damaged, 3)
+    assert np.allclose(repaired.eigenvalues, values[window], rtol=1e-10)
+    assert repaired.residuals.max() <= eigen.RESIDUAL_TOLERANCE
+    gram = repaired.eigenvectors.T @ (mass[:, None] * repaired.eigenvectors)
+    assert np.abs(gram - np.eye(16)).max() <= 1e-8
 
 
 def test_bands_agree_with_eigsh(sphere_problem, sphere_bands):
@@ -108,6 +131,7 @@ def test_inertia_mismatch_is_reported(sphere_problem):
 
     stiffness, mass = sphere_problem
     values, vectors = solve_bands(stiffness, mass, 20, per_band=30)
-    liar = eigen.Band(shift=7.0, radius=1.0, eigenvalues=values, eigenvectors=vectors, below=3)
+    liar = eigen.Band(shift=7.0, radius=1.0, eigenvalues=values, eigenvectors=vectors, below=3,
+                      residuals=eigen.residuals(stiffness, mass, values, vectors))
     with pytest.raises(EigendanceError, match="3 eigenvalues lie below 7"):
-        eigen._verify(stiffness, mass, values, vectors, [liar])
+        eigen._verify(values, [(liar, np.ones(len(values), bool))], [liar])

@@ -10,10 +10,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
 from eigendance.errors import EigendanceError
+from eigendance.lanczos import lanczos_extreme
 
 SOLVERS = ("bands", "eigsh")
 # Shift below the spectrum (λ_0 = 0) so that L - σM is non-singular. Units of λ: a normalised
@@ -59,9 +61,10 @@ def _sorted_m_normalised(values, vectors, mass):
 
 # --- Spectrum slicing -------------------------------------------------------------------------
 
-PER_BAND = 150          # eigenpairs per band: fastest per pair in measurements (notes)
-OVERLAP = 0.15          # fraction of a band's width shared with its neighbours
+PER_BAND = 60           # eigenpairs per band: fastest for bunny k = 1070 (benchmarks/)
+OVERLAP = 0.10          # fraction of a band's width shared with its neighbours
 RESIDUAL_TOLERANCE = 1e-7  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, checked for every accepted pair
+MAX_REPAIRS = 8         # searches for missed copies of multiple eigenvalues before giving up
 
 
 @dataclass
@@ -69,6 +72,7 @@ class Band:
     """One shift-invert solve: every eigenvalue with |λ − σ| < radius is in `eigenvalues`.
 
     below: Sylvester inertia of L − σM, the number of eigenvalues < σ (None if unknown).
+    residuals: ‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, computed where the band was solved.
     """
 
     shift: float
@@ -76,6 +80,7 @@ class Band:
     eigenvalues: np.ndarray
     eigenvectors: np.ndarray
     below: int | None
+    residuals: np.ndarray
 
     @property
     def lower(self) -> float:
@@ -87,16 +92,20 @@ class Band:
 
 
 class _ShiftInvert:
-    """(A − σI)^-1 for A = M^-½ L M^-½, via an LDLᵀ (qdldl) or LU (SuperLU) factorisation."""
+    """(A − σI)^-1 for A = M^-½ L M^-½, via an LDLᵀ (qdldl) or LU (SuperLU) factorisation.
+
+    L − σM has the same sparsity for every σ, so each process keeps its last LDLᵀ and only
+    redoes the numeric part (half the time); the operator it belonged to stops working.
+    """
+
+    _last = None  # per process: (pattern key, qdldl.Solver, the _ShiftInvert using it)
 
     def __init__(self, stiffness, mass, shift):
         self.root = np.sqrt(mass)
         shifted = (stiffness - shift * sp.diags(mass)).tocsc()
         self.below = None
         try:
-            import qdldl
-
-            self._factor = qdldl.Solver(shifted)
+            self._factor = self._factorise(shifted)
             diagonal = self._factor.factors()[1]
             if np.all(np.isfinite(diagonal)) and np.all(diagonal != 0):
                 # P(L − σM)Pᵀ = L D Lᵀ is a congruence: D's negatives count eigenvalues < σ.
@@ -106,40 +115,156 @@ class _ShiftInvert:
             self._factor = sla.splu(shifted, permc_spec="COLAMD")
             self._solve = self._factor.solve
 
+    def _factorise(self, shifted):
+        import qdldl
+
+        key = (shifted.shape, hash(shifted.indptr.tobytes()), hash(shifted.indices.tobytes()))
+        if _ShiftInvert._last is not None and _ShiftInvert._last[0] == key:
+            _, solver, previous = _ShiftInvert._last
+            previous._solve = previous._reused
+            solver.update(shifted)
+        else:
+            solver = qdldl.Solver(shifted)
+        _ShiftInvert._last = (key, solver, self)
+        return solver
+
+    def _reused(self, x):
+        raise RuntimeError("this shift's factorisation was reused for a later shift")
+
     def __call__(self, x):
         x = np.asarray(x).reshape(-1)
         return self.root * self._solve(self.root * x)
 
 
-def _solve_band(stiffness, mass, shift: float, count: int) -> Band:
-    """The `count` eigenpairs nearest `shift`, by ARPACK on the shift-inverted operator."""
+def _solve_band(stiffness, mass, shift: float, count: int, null: np.ndarray) -> Band:
+    """The `count` eigenpairs nearest `shift` besides the null space, from (A − σI)^-1.
+
+    Lanczos (or ARPACK's, if that has not converged in 3·count + 50 steps) runs orthogonal to
+    `null` (rows: L's kernel, see `null_space`), whose pairs (0, u) join the band when its
+    window reaches λ = 0: a Krylov space would find one of them only.
+    """
     n = stiffness.shape[0]
     operator = _ShiftInvert(stiffness, mass, shift)
-    linear = sla.LinearOperator((n, n), matvec=operator, dtype=np.float64)
-    theta, vectors = sla.eigsh(linear, k=count, ncv=min(n - 1, 2 * count + 1), which="LM",
-                               tol=1e-13)
+    known = null * operator.root  # y = M^½ u: orthonormal rows
+    found = lanczos_extreme(operator, n, count, deflate=known)
+    if found is None:
+        def deflated(x):
+            x = x - (known @ x) @ known
+            y = operator(x)
+            return y - (known @ y) @ known
+
+        linear = sla.LinearOperator((n, n), matvec=deflated, dtype=np.float64)
+        found = sla.eigsh(linear, k=count, ncv=min(n - 1, 2 * count + 1), which="LM", tol=1e-13)
+    theta, vectors = found
     eigenvalues = shift + 1 / theta
-    vectors = vectors / operator.root[:, None]  # u = M^-½ y, M-orthonormal
-    distance = np.sort(np.abs(eigenvalues - shift))
-    # Every eigenvalue nearer than the farthest one returned was found; stop inside the widest
-    # gap of the outer tenth so that a multiple eigenvalue on the edge is never half-trusted.
-    outer = distance[int(0.9 * count):]
-    if len(outer) >= 2:
-        gaps = np.diff(outer)
-        widest = int(np.argmax(gaps))
-        radius = (outer[widest] + outer[widest + 1]) / 2
-    else:
-        radius = distance[-1] * (1 - 1e-9)
-    order = np.argsort(eigenvalues)
-    return Band(shift, float(radius), eigenvalues[order], vectors[:, order], operator.below)
+    radius = _trusted_radius(np.abs(eigenvalues - shift))
+    rows = vectors.T / operator.root
+    if abs(shift) < radius:
+        eigenvalues = np.concatenate([np.zeros(len(null)), eigenvalues])
+        rows = np.concatenate([null, rows])
+    return _band(stiffness, mass, shift, radius, eigenvalues, rows, operator.below)
+
+
+def _trusted_radius(distance: np.ndarray) -> float:
+    """Radius within which every eigenvalue was found, from the returned distances |λ − σ|.
+
+    Lanczos finds the nearest ones first, so all up to the farthest returned, except copies of a
+    multiple eigenvalue that its Krylov space did not see. The inertia counts catch those
+    inside; an exact multiple right on the edge may be partly returned, so it is left out.
+    """
+    far = distance.max()
+    edge = np.isclose(distance, far, rtol=1e-8, atol=0)
+    if edge.all():
+        return float(far * (1 + 1e-9))
+    return float((distance[~edge].max() + far) / 2)
+
+
+def _band(stiffness, mass, shift, radius, eigenvalues, rows, below) -> Band:
+    """A Band from unsorted pairs (eigenvectors as rows), with pairs of poor residual refined."""
+    order = np.argsort(eigenvalues, kind="stable")
+    eigenvalues, vectors = eigenvalues[order], _columns(rows[order])
+    accuracy = residuals(stiffness, mass, eigenvalues, vectors)
+    poor = accuracy > RESIDUAL_TOLERANCE / 100
+    if poor.any():
+        eigenvalues[poor], vectors[:, poor] = _refine(stiffness, mass, vectors[:, poor])
+        accuracy[poor] = residuals(stiffness, mass, eigenvalues[poor], vectors[:, poor])
+    return Band(shift, radius, eigenvalues, vectors, below, accuracy)
+
+
+def _refine(stiffness, mass, vectors):
+    """Sharper eigenpairs from approximate low eigenvectors (those just above the null space).
+
+    A pair found from a far shift σ has ‖Lu − λMu‖ ≈ tol·λ_max/|θ|, relative to max(λ,1): up
+    to 1e-7 for λ ≈ 0. One inverse-iteration step at BASELINE_SHIFT (the error shrinks by
+    |λ − σ₀| / |λ_j − σ₀| along every other eigenvector j) and a Rayleigh–Ritz fix that.
+    """
+    operator = _ShiftInvert(stiffness, mass, BASELINE_SHIFT)
+    refined = np.column_stack([operator(column) for column in (vectors * operator.root[:, None]).T])
+    refined /= operator.root[:, None]
+    gram = refined.T @ (mass[:, None] * refined)
+    energy = refined.T @ (stiffness @ refined)
+    values, mixing = scipy.linalg.eigh((energy + energy.T) / 2, (gram + gram.T) / 2)
+    return values, refined @ mixing
+
+
+def _complete_band(stiffness, mass, band: Band, missing: int) -> Band:
+    """`band` plus the copies of multiple eigenvalues it missed inside its window.
+
+    Lanczos again, kept orthogonal to the band's eigenvectors: the deflated operator's largest
+    |θ| are then the missing copies (and, beyond the window, eigenvalues nobody asked for).
+    """
+    n = stiffness.shape[0]
+    operator = _ShiftInvert(stiffness, mass, band.shift)
+    known = band.eigenvectors.T * operator.root  # y = M^½ u: orthonormal rows
+    # The copies may sit next to eigenvalues just outside the window: allow a long run.
+    found = lanczos_extreme(operator, n, missing + 4, deflate=known, seed=len(known),
+                            max_steps=3 * missing + 300)
+    if found is None:
+        return band
+    theta, vectors = found
+    eigenvalues = band.shift + 1 / theta
+    inside = np.abs(eigenvalues - band.shift) < band.radius
+    return _band(stiffness, mass, band.shift, band.radius,
+                 np.concatenate([band.eigenvalues, eigenvalues[inside]]),
+                 np.concatenate([band.eigenvectors.T, vectors.T[inside] / operator.root]),
+                 band.below)
+
+
+def null_space(stiffness, mass, most: int) -> np.ndarray:
+    """L's kernel as M-orthonormal rows (p, n), at most `most` of them.
+
+    The constant on each connected component of the graph of L's non-zero weights:
+    u_c = 1_c / √area_c, and L u_c = 0 because every row of L sums to zero.
+    """
+    from scipy.sparse.csgraph import connected_components
+
+    graph = sp.csr_matrix(stiffness, copy=True)
+    graph.eliminate_zeros()
+    count, labels = connected_components(graph, directed=False)
+    count = min(count, most)
+    rows = np.zeros((count, len(mass)))
+    inside = labels < count
+    rows[labels[inside], np.flatnonzero(inside)] = 1
+    return rows / np.sqrt(rows @ mass)[:, None]
+
+
+def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
+    """‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, in column blocks to bound the memory."""
+    result = np.empty(len(eigenvalues))
+    for start in range(0, len(eigenvalues), 256):
+        block, value = eigenvectors[:, start:start + 256], eigenvalues[start:start + 256]
+        weighted = mass[:, None] * block
+        residual = np.linalg.norm(stiffness @ block - weighted * value, axis=0)
+        scale = np.maximum(np.abs(value), 1) * np.linalg.norm(weighted, axis=0)
+        result[start:start + 256] = residual / scale
+    return result
 
 
 def _band_worker(arguments):
     from threadpoolctl import threadpool_limits
 
-    stiffness, mass, shift, count = arguments
     with threadpool_limits(1):  # two band workers on two cores, one BLAS thread each
-        return _solve_band(stiffness, mass, shift, count)
+        return _solve_band(*arguments)
 
 
 def _stitch(bands: list[Band]):
@@ -150,8 +275,10 @@ def _stitch(bands: list[Band]):
     Returns (pieces, gap): pieces = [(band, mask of its accepted pairs)] in ascending order,
     gap = (a, b), the first interval no band covers, or None.
     """
+    if bands[0].lower >= BASELINE_SHIFT:  # the lowest window must reach below λ_0 = 0
+        return [], (BASELINE_SHIFT, bands[0].lower)
     pieces = []
-    cut = -np.inf  # the first band's shift lies below λ_0 = 0: it holds the smallest eigenvalues
+    cut = -np.inf
     for band, following in zip(bands, [*bands[1:], None], strict=True):
         upper, gap = band.upper, None
         if following is not None and following.lower >= band.upper:
@@ -169,82 +296,180 @@ def _stitch(bands: list[Band]):
     return pieces, None
 
 
+def _band_size(k: int, per_band: int, workers: int) -> int:
+    """Pairs per band near `per_band` such that the bands fill whole rounds of `workers`.
+
+    The first band holds ≈ count pairs, each next one (1 − OVERLAP)·count new ones; a round
+    with an idle worker costs as much as a full one, so the size grows until it saves a round.
+    """
+    def rounds(count):
+        bands = 1 + max(0, int(np.ceil((k - count) / ((1 - OVERLAP) * count))))
+        return int(np.ceil(bands / workers))
+
+    sizes = range(per_band, int(1.25 * per_band) + 1)
+    return min(sizes, key=lambda count: (rounds(count / 1.05), count))  # 5% margin
+
+
+def _next_shifts(bands: list[Band], gap, missing: int, count: int, workers: int,
+                 density: float) -> list[float]:
+    """Shifts of the next round: the gap's middle, or bands above the highest one so far.
+
+    `density` (pairs per unit of λ) is Weyl's law before any band is known, then the density
+    seen inside the highest band; windows of `count` pairs overlap by OVERLAP of their width.
+    """
+    if gap is not None:
+        return [(gap[0] + gap[1]) / 2]
+    half_width = count / (2 * density)
+    if bands:
+        last = bands[-1]
+        inside = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
+        half_width = count / (2 * max(inside.sum(), 1) / (last.upper - max(last.lower, 0)))
+        start = last.upper + half_width * (1 - 2 * OVERLAP)
+        shifts = []
+    else:
+        # First band at pair ≈ 0.4·count: its window reaches below λ_0 = 0 and up to pair
+        # ≈ count.
+        shifts = [0.8 * half_width]
+        start = 2 * half_width + half_width * (1 - 2 * OVERLAP)
+        missing -= count
+    step = 2 * half_width * (1 - OVERLAP)
+    more = int(np.ceil(max(missing, 0) / (count * (1 - OVERLAP))))
+    return shifts + [start + step * i for i in range(min(workers - len(shifts), more))]
+
+
 def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 per_band: int = PER_BAND, workers: int = 2) -> tuple[np.ndarray, np.ndarray]:
-    """Spectrum slicing (after Vallet & Lévy 2008): shift-invert bands of `per_band` pairs.
+    """Spectrum slicing (after Vallet & Lévy 2008): shift-invert bands of ≈`per_band` pairs.
 
-    The first band sits just below λ_0 = 0; each next shift is placed from the eigenvalue density
-    seen so far (nearly constant on a surface, by Weyl's law) so that neighbouring windows
-    overlap by OVERLAP of their width; uncovered gaps get an extra band. Bands after the first run
-    `workers` at a time in separate processes. Every accepted pair is checked by its residual,
-    and each band's Sylvester inertia must equal the number of accepted eigenvalues below its
-    shift, so no eigenpair is missed or doubled.
+    The first shifts come from Weyl's law (N(λ) ≈ area·λ/4π eigenvalues below λ), the later
+    ones from the eigenvalue density seen so far, so that neighbouring windows overlap by
+    OVERLAP of their width; uncovered gaps get an extra band. Bands run `workers` at a time in
+    separate processes. L's kernel (one constant per connected component) is known exactly and
+    kept out of every Krylov space. Each band's Sylvester inertia (and one more at the top)
+    must equal the number of accepted eigenvalues below its shift, else the bands around it
+    look again for the copies of multiple eigenvalues they missed; every accepted pair is
+    checked by its residual. Nothing is missed or doubled.
     """
     n = stiffness.shape[0]
     check_request(n, k)
     if n <= 600:
         return _dense(stiffness, mass, k)
+    null = null_space(stiffness, mass, k)
+    if len(null) >= k:  # k components or more: every wanted pair has λ = 0
+        return np.zeros(k), _columns(null)
     per_band = max(1, min(per_band, n // 3))
-    first_count = min(n - 2, per_band if k > per_band else k + max(4, k // 10))
-    bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, first_count)]
-    pool = None
-    try:
+    count = min(n - 2 - len(null), _band_size(k, per_band, workers))
+    density = mass.sum() / (4 * np.pi)  # Weyl: d N / d λ = area / 4π on a surface
+    if k <= 0.8 * count:  # one band from the bottom of the spectrum
+        count = min(n - 2 - len(null), k + max(4, k // 10))
+        bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, count, null)]
+    else:
+        bands = []
+    repairs = 0
+    with _Workers(workers) as run:
         while True:
-            pieces, gap = _stitch(bands)
+            pieces, gap = _stitch(bands) if bands else ([], None)
             found = sum(int(keep.sum()) for _, keep in pieces)
             if progress is not None:
                 progress(min(found, k))
-            if gap is None and found >= k:
-                break
-            last = bands[-1]
-            inside = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
-            density = max(inside.sum(), 1) / (last.upper - max(last.lower, 0))
-            half_width = per_band / (2 * density)
-            if gap is not None:
-                shifts = [(gap[0] + gap[1]) / 2]
+            if bands and gap is None and found >= k:
+                values, vectors = _assemble(pieces, k, n)
+                wrong, missing = _miscounted(stiffness, mass, bands, pieces, k)
+                if not wrong:
+                    break
+                if repairs == MAX_REPAIRS:
+                    raise EigendanceError(
+                        f"eigen-solver: {missing} eigenpair(s) still missing after {repairs} "
+                        "searches for multiple eigenvalues; try --solver eigsh")
+                repairs += 1
+                bands = [_complete_band(stiffness, mass, band, missing) if band in wrong
+                         else band for band in bands]
             else:
-                step = 2 * half_width * (1 - OVERLAP)
-                start = last.upper + half_width * (1 - 2 * OVERLAP)
-                missing = k - found
-                count = max(1, min(workers, int(np.ceil(missing / (per_band * (1 - OVERLAP))))))
-                shifts = [start + step * i for i in range(count)]
-            arguments = [(stiffness, mass, shift, min(per_band, n - 2)) for shift in shifts]
-            if len(arguments) > 1:
-                if pool is None:
-                    import multiprocessing
-                    from concurrent.futures import ProcessPoolExecutor
-
-                    # fork: no re-import of the caller's script (spawn would need a main guard)
-                    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else None
-                    pool = ProcessPoolExecutor(workers,
-                                               mp_context=multiprocessing.get_context(method))
-                new = list(pool.map(_band_worker, arguments))
-            else:
-                new = [_solve_band(*arguments[0])]
-            bands = sorted(bands + new, key=lambda band: band.shift)
-    finally:
-        if pool is not None:
-            pool.shutdown()
-    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])[:k]
-    vectors = np.empty((n, k))
-    filled = 0
-    for band, keep in pieces:
-        taken = min(int(keep.sum()), k - filled)
-        vectors[:, filled:filled + taken] = band.eigenvectors[:, keep][:, :taken]
-        filled += taken
-    _verify(stiffness, mass, values, vectors, bands)
+                shifts = _next_shifts(bands, gap, k - found, count, workers, density)
+                bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
+            bands.sort(key=lambda band: band.shift)
+    _verify(values, pieces, bands)
     return values, vectors
 
 
-def _verify(stiffness, mass, values, vectors, bands):
-    """Residual of every pair, and inertia counts against the accepted eigenvalues."""
-    worst = 0.0
-    for start in range(0, len(values), 256):  # column blocks bound the temporary memory
-        block, value = vectors[:, start:start + 256], values[start:start + 256]
-        weighted = mass[:, None] * block
-        residual = np.linalg.norm(stiffness @ block - weighted * value, axis=0)
-        scale = np.maximum(np.abs(value), 1) * np.linalg.norm(weighted, axis=0)
-        worst = max(worst, float(np.max(residual / scale)))
+class _Workers:
+    """Solves a list of bands, in `workers` forked processes when there are several."""
+
+    def __init__(self, workers: int):
+        self.workers, self.pool = workers, None
+
+    def __enter__(self):
+        return self
+
+    def __call__(self, arguments: list[tuple]) -> list[Band]:
+        if len(arguments) == 1 or self.workers == 1:
+            return [_solve_band(*each) for each in arguments]
+        if self.pool is None:
+            import multiprocessing
+            from concurrent.futures import ProcessPoolExecutor
+
+            # fork: no re-import of the caller's script (spawn would need a main guard)
+            method = "fork" if "fork" in multiprocessing.get_all_start_methods() else None
+            self.pool = ProcessPoolExecutor(self.workers,
+                                            mp_context=multiprocessing.get_context(method))
+        return list(self.pool.map(_band_worker, arguments))
+
+    def __exit__(self, *exception):
+        if self.pool is not None:
+            self.pool.shutdown()
+
+
+def _assemble(pieces, k: int, n: int):
+    """The first k accepted pairs of the stitched pieces, in ascending order."""
+    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])[:k]
+    rows = np.empty((k, n))
+    filled = 0
+    for band, keep in pieces:
+        taken = min(int(keep.sum()), k - filled)
+        np.take(band.eigenvectors.T, np.flatnonzero(keep)[:taken], axis=0,
+                out=rows[filled:filled + taken])
+        filled += taken
+    return values, rows.T
+
+
+def _columns(rows):
+    """(n, c) eigenvectors as the transpose of C-ordered rows: each vector is contiguous."""
+    return np.ascontiguousarray(rows).T
+
+
+def _miscounted(stiffness, mass, bands, pieces, k: int):
+    """(bands, missing): the bands around the first shift whose count disagrees, or ([], 0).
+
+    Sylvester's count at each shift and at a cut just above λ_(k−1) must equal the number of
+    accepted eigenvalues below it. Between two shifts with agreeing counts nothing is missing;
+    a copy of a multiple eigenvalue that a Krylov space did not see shows up as a shortfall.
+    """
+    accepted = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])
+    counted = [(band.shift, band.below) for band in bands]
+    if max(band.shift for band in bands) <= accepted[k - 1]:
+        # One more count above λ_(k−1), in the widest gap there, where it is unambiguous.
+        points = np.append(accepted[k - 1:], pieces[-1][0].upper)
+        widest = int(np.argmax(np.diff(points)))
+        top = (points[widest] + points[widest + 1]) / 2
+        counted.append((top, _ShiftInvert(stiffness, mass, top).below))
+    low = -np.inf
+    for shift, below in counted:
+        if below is None:
+            continue
+        found = int((accepted < shift).sum())
+        if found > below:
+            raise EigendanceError(f"eigen-solver: {below} eigenvalues lie below {shift:.4g} but "
+                                  f"{found} were found; try --solver eigsh")
+        if found < below:
+            wrong = [band for band in bands if band.lower < shift and band.upper > low]
+            return wrong, (below - found)
+        low = shift
+    return [], 0
+
+
+def _verify(values, pieces, bands):
+    """Residual of every accepted pair, and inertia counts against the accepted eigenvalues."""
+    worst = max(float(band.residuals[keep].max(initial=0)) for band, keep in pieces)
     if not worst <= RESIDUAL_TOLERANCE:
         raise EigendanceError(f"eigen-solver: residual {worst:.1e} above tolerance; "
                               "try --solver eigsh")
