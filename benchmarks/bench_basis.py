@@ -2,7 +2,7 @@
 
 Cases of issue 2: Stanford bunny (34,834 vertices) k = 1070 and armadillo (43,243) k = 2376,
 the thesis's Table 7.1 cases. Prints time and peak memory of each solver and the ratio.
-Run: .venv/bin/python benchmarks/bench_basis.py [--quick] [--skip-eigsh]
+Run: .venv/bin/python benchmarks/bench_basis.py [--quick] [--skip-eigsh] [--only bunny]
 (the naive eigsh at k = 2376 takes tens of minutes and several GB).
 """
 
@@ -50,9 +50,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="bunny k=300 only")
     parser.add_argument("--skip-eigsh", action="store_true", help="bands only (no ratio)")
+    parser.add_argument("--only", metavar="NAME", help="one case: bunny or armadillo")
     args = parser.parse_args()
+    cases = QUICK if args.quick else CASES
+    if args.only:
+        cases = [case for case in cases if case[0].startswith(args.only)]
     print(f"{'mesh':<20}{'n':>7}{'k':>6}{'solver':>8}{'time s':>9}{'peak GB':>9}{'λ_k-1':>10}")
-    for name, k in QUICK if args.quick else CASES:
+    for name, k in cases:
         path = os.path.join(SHARED, name)
         times = {}
         for solver in ("bands",) if args.skip_eigsh else ("bands", "eigsh"):

@@ -310,31 +310,54 @@ def _band_size(k: int, per_band: int, workers: int) -> int:
     return min(sizes, key=lambda count: (rounds(count / 1.05), count))  # 5% margin
 
 
-def _next_shifts(bands: list[Band], gap, missing: int, count: int, workers: int,
-                 density: float) -> list[float]:
-    """Shifts of the next round: the gap's middle, or bands above the highest one so far.
+def _next_shifts(pieces, gap, k: int, count: int, workers: int, area: float) -> list[float]:
+    """Shifts of the next round: the gap's middle, or bands above the pairs found so far.
 
-    `density` (pairs per unit of λ) is Weyl's law before any band is known, then the density
-    seen inside the highest band; windows of `count` pairs overlap by OVERLAP of their width.
+    Planned in index space: N(λ), the number of eigenvalues below λ (`_counting`), places each
+    window of `count` pairs so that it shares OVERLAP·count pairs with its lower neighbour; the
+    last one reaches pair k with a small margin.
     """
     if gap is not None:
         return [(gap[0] + gap[1]) / 2]
-    half_width = count / (2 * density)
-    if bands:
-        last = bands[-1]
-        inside = (last.eigenvalues > last.lower) & (last.eigenvalues < last.upper)
-        half_width = count / (2 * max(inside.sum(), 1) / (last.upper - max(last.lower, 0)))
-        start = last.upper + half_width * (1 - 2 * OVERLAP)
-        shifts = []
+    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces]) if pieces else []
+    counting = _counting(np.asarray(values), area)
+    centres = []
+    overlap = OVERLAP * count
+    if not pieces:
+        # First band at pair ≈ 0.4·count: its window reaches below λ_0 = 0 and up to pair count.
+        # Weyl's law alone is rougher than a fit: the next window overlaps it twice as much.
+        centres, top, overlap = [0.4 * count], count, 2 * overlap
     else:
-        # First band at pair ≈ 0.4·count: its window reaches below λ_0 = 0 and up to pair
-        # ≈ count.
-        shifts = [0.8 * half_width]
-        start = 2 * half_width + half_width * (1 - 2 * OVERLAP)
-        missing -= count
-    step = 2 * half_width * (1 - OVERLAP)
-    more = int(np.ceil(max(missing, 0) / (count * (1 - OVERLAP))))
-    return shifts + [start + step * i for i in range(min(workers - len(shifts), more))]
+        top = len(values)
+    while len(centres) < workers and top < k + 0.05 * count:
+        centres.append(top - overlap + count / 2)
+        top += count - overlap
+        overlap = OVERLAP * count
+    return [counting(centre) for centre in centres]
+
+
+def _counting(values: np.ndarray, area: float):
+    """λ(i): the inverse of a smooth counting function N(λ) = aλ + b√λ + c.
+
+    Weyl's law for a surface gives a = area/4π (and a boundary term in √λ); before any pair is
+    known that is all, after it the three terms are fitted to the last pairs found (N(λ_j) ≈
+    j + ½), which follows the local density better than Weyl's constant.
+    """
+    a, b, c = area / (4 * np.pi), 0.0, 0.0
+    index = np.arange(len(values)) + 0.5
+    fitted = values > 0
+    if fitted.sum() >= 20:
+        recent = values[fitted][-400:]
+        design = np.column_stack([recent, np.sqrt(recent), np.ones_like(recent)])
+        solution = np.linalg.lstsq(design, index[fitted][-400:], rcond=None)[0]
+        if solution[0] > 0:
+            a, b, c = solution
+
+    def inverse(i):
+        root = (-b + np.sqrt(max(b * b - 4 * a * (c - i), 0))) / (2 * a)  # √λ
+        return max(root, 0.0) ** 2
+
+    return inverse
 
 
 def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
@@ -342,13 +365,13 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     """Spectrum slicing (after Vallet & Lévy 2008): shift-invert bands of ≈`per_band` pairs.
 
     The first shifts come from Weyl's law (N(λ) ≈ area·λ/4π eigenvalues below λ), the later
-    ones from the eigenvalue density seen so far, so that neighbouring windows overlap by
-    OVERLAP of their width; uncovered gaps get an extra band. Bands run `workers` at a time in
-    separate processes. L's kernel (one constant per connected component) is known exactly and
-    kept out of every Krylov space. Each band's Sylvester inertia (and one more at the top)
-    must equal the number of accepted eigenvalues below its shift, else the bands around it
-    look again for the copies of multiple eigenvalues they missed; every accepted pair is
-    checked by its residual. Nothing is missed or doubled.
+    ones from a counting function fitted to the eigenvalues found so far, so that neighbouring
+    windows share OVERLAP of their pairs; uncovered gaps get an extra band. Bands run
+    `workers` at a time in separate processes. L's kernel (one constant per connected
+    component) is known exactly and kept out of every Krylov space. Each band's Sylvester
+    inertia (and one more at the top) must equal the number of accepted eigenvalues below its
+    shift, else the bands around it look again for the copies of multiple eigenvalues they
+    missed; every accepted pair is checked by its residual. Nothing is missed or doubled.
     """
     n = stiffness.shape[0]
     check_request(n, k)
@@ -359,7 +382,6 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         return np.zeros(k), _columns(null)
     per_band = max(1, min(per_band, n // 3))
     count = min(n - 2 - len(null), _band_size(k, per_band, workers))
-    density = mass.sum() / (4 * np.pi)  # Weyl: d N / d λ = area / 4π on a surface
     if k <= 0.8 * count:  # one band from the bottom of the spectrum
         count = min(n - 2 - len(null), k + max(4, k // 10))
         bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, count, null)]
@@ -385,7 +407,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 bands = [_complete_band(stiffness, mass, band, missing) if band in wrong
                          else band for band in bands]
             else:
-                shifts = _next_shifts(bands, gap, k - found, count, workers, density)
+                shifts = _next_shifts(pieces, gap, k, count, workers, mass.sum())
                 bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
             bands.sort(key=lambda band: band.shift)
     _verify(values, pieces, bands)
