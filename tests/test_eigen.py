@@ -135,3 +135,56 @@ def test_inertia_mismatch_is_reported(sphere_problem):
                       residuals=eigen.residuals(stiffness, mass, values, vectors))
     with pytest.raises(EigendanceError, match="3 eigenvalues lie below 7"):
         eigen._verify(values, [(liar, np.ones(len(values), bool))], [liar])
+
+
+def test_null_space_is_one_constant_per_component():
+    from scipy.sparse.csgraph import connected_components
+
+    from eigendance.eigen import null_space
+    from eigendance.mesh import Mesh
+
+    mesh = load_mesh(fixture_path("meshes", "teapot.obj"))
+    stiffness, mass = laplacian(mesh.vertices, mesh.faces, "robust")
+    null = null_space(stiffness, mass, 1000)
+    assert len(null) == connected_components(Mesh.adjacency(mesh))[0] >= 2
+    assert np.abs(null @ (mass[:, None] * null.T) - np.eye(len(null))).max() < 1e-12
+    assert np.abs(stiffness @ null.T).max() < 1e-10 * abs(stiffness).max()
+    assert len(null_space(stiffness, mass, 1)) == 1  # at most as many as asked for
+
+
+def test_counting_function_inverts_weyl_law():
+    from eigendance.eigen import _counting
+
+    area = 4 * np.pi  # N(λ) = λ
+    assert np.isclose(_counting(np.array([]), area)(250), 250)
+    # Fitted from pairs that follow N(λ) = 2λ + 3√λ: the inverse is found beyond them.
+    index = np.arange(300) + 0.5
+    values = ((-3 + np.sqrt(9 + 8 * index)) / 4) ** 2  # N(λ_j) = j + ½
+    assert np.isclose(_counting(values, area)(2 * 30**2 + 3 * 30), 30**2, rtol=1e-9)
+
+
+def test_trusted_radius_leaves_out_a_multiple_eigenvalue_on_the_edge():
+    from eigendance.eigen import _trusted_radius
+
+    # The farthest pair may be one of several copies, the others unseen at the same distance:
+    # the window stops before it, and before all returned copies of it.
+    assert 0.5 < _trusted_radius(np.array([0.1, 0.5, 1.0])) < 1.0
+    assert 0.5 < _trusted_radius(np.array([0.1, 0.5, 1.0, 1.0 + 1e-12, 1.0])) < 1.0
+    assert _trusted_radius(np.array([2.0])) > 2.0  # a single pair is its own window
+
+
+def test_refine_sharpens_low_eigenpairs(sphere_problem, sphere_dense):
+    from eigendance.eigen import _refine, residuals
+
+    stiffness, mass = sphere_problem
+    values, vectors = sphere_dense
+    # A pair found from a far shift errs along high frequencies: its residual scales with
+    # λ_max. One inverse-iteration step brings that scale down to its own λ.
+    noise = stiffness @ np.random.default_rng(0).standard_normal((len(mass), 3)) / mass[:, None]
+    noise /= np.sqrt(np.einsum("ij,i,ij->j", noise, mass, noise))
+    rough = vectors[:, 1:4] + 1e-8 * noise
+    before = residuals(stiffness, mass, values[1:4], rough).min()
+    sharp_values, sharp = _refine(stiffness, mass, rough)
+    assert np.allclose(sharp_values, 2, rtol=0.01)  # l = 1: λ = l(l+1)
+    assert np.allclose(sharp_values, values[1:4], rtol=1e-12)
+    assert residuals(stiffness, mass, sharp_values, sharp).max() < before / 100

@@ -170,7 +170,8 @@ def _trusted_radius(distance: np.ndarray) -> float:
 
     Lanczos finds the nearest ones first, so all up to the farthest returned, except copies of a
     multiple eigenvalue that its Krylov space did not see. The inertia counts catch those
-    inside; an exact multiple right on the edge may be partly returned, so it is left out.
+    inside; the farthest pair may be one copy of a multiple eigenvalue whose other copies lie
+    unseen at the same distance, so it is left out (with any returned copies of it).
     """
     far = distance.max()
     edge = np.isclose(distance, far, rtol=1e-8, atol=0)
