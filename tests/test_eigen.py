@@ -188,3 +188,17 @@ def test_refine_sharpens_low_eigenpairs(sphere_problem, sphere_dense):
     assert np.allclose(sharp_values, 2, rtol=0.01)  # l = 1: λ = l(l+1)
     assert np.allclose(sharp_values, values[1:4], rtol=1e-12)
     assert residuals(stiffness, mass, sharp_values, sharp).max() < before / 100
+
+
+def test_identical_components_many_exact_multiplicities():
+    """Three copies of an icosphere: every eigenvalue 3-fold, up to 15-fold with the symmetry."""
+    import trimesh
+
+    copies = [trimesh.creation.icosphere(3).apply_translation([3 * i, 0, 0]) for i in range(3)]
+    mesh = trimesh.util.concatenate(copies)
+    stiffness, mass = laplacian(mesh.vertices, mesh.faces)
+    values, vectors = solve_bands(stiffness, mass, 200, per_band=40)
+    dense = scipy.linalg.eigh(stiffness.toarray(), np.diag(mass), eigvals_only=True,
+                              subset_by_index=[0, 199])
+    assert np.allclose(values, dense, rtol=1e-8, atol=1e-9)
+    assert np.abs(vectors.T @ (mass[:, None] * vectors) - np.eye(200)).max() <= 1e-8
