@@ -67,7 +67,7 @@ RESIDUAL_TOLERANCE = 1e-7  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, che
 MAX_REPAIRS = 8         # searches for missed copies of multiple eigenvalues before giving up
 
 
-@dataclass
+@dataclass(eq=False)  # bands are told apart by identity
 class Band:
     """One shift-invert solve: every eigenvalue with |λ − σ| < radius is in `eigenvalues`.
 
@@ -105,15 +105,16 @@ class _ShiftInvert:
         shifted = (stiffness - shift * sp.diags(mass)).tocsc()
         self.below = None
         try:
-            self._factor = self._factorise(shifted)
-            diagonal = self._factor.factors()[1]
-            if np.all(np.isfinite(diagonal)) and np.all(diagonal != 0):
-                # P(L − σM)Pᵀ = L D Lᵀ is a congruence: D's negatives count eigenvalues < σ.
-                self.below = int((diagonal < 0).sum())
-            self._solve = self._factor.solve
-        except Exception:  # zero pivot or missing wheel: pivoting LU is slower but safe
-            self._factor = sla.splu(shifted, permc_spec="COLAMD")
-            self._solve = self._factor.solve
+            factor = self._factorise(shifted)
+            diagonal = factor.factors()[1]
+        except Exception:  # zero pivot or missing wheel
+            diagonal = np.zeros(1)
+        if np.all(np.isfinite(diagonal)) and np.all(diagonal != 0):
+            # P(L − σM)Pᵀ = L D Lᵀ is a congruence: D's negatives count eigenvalues < σ.
+            self.below = int((diagonal < 0).sum())
+            self._solve = factor.solve
+        else:  # σ (nearly) on an eigenvalue: pivoting LU is slower but safe
+            self._solve = sla.splu(shifted, permc_spec="COLAMD").solve
 
     def _factorise(self, shifted):
         import qdldl

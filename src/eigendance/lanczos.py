@@ -25,9 +25,9 @@ def lanczos_extreme(apply, n: int, count: int, *, tol: float = 1e-13,
 
     Runs until every wanted Ritz pair satisfies |β_m s_m| ≤ tol·|θ|, checking T_m every few
     steps. Returns (theta (count,), vectors (n, count) orthonormal), or None when `max_steps`
-    (default 3·count + 50) were not enough. A Krylov space from one start vector holds one direction
-    per eigenspace, so copies of a multiple eigenvalue can be missed; callers check the count
-    and find the missing copies again with `deflate` = the known eigenvectors (rows,
+    (default 3·count + 50) were not enough. A Krylov space from one start vector holds one
+    direction per eigenspace, so copies of a multiple eigenvalue can be missed; callers check
+    the count and find the missing copies again with `deflate` = the known eigenvectors (rows,
     orthonormal), which the iteration then stays orthogonal to.
     """
     max_steps = min(n - (0 if deflate is None else len(deflate)), max_steps or 3 * count + 50)
@@ -65,7 +65,7 @@ def lanczos_extreme(apply, n: int, count: int, *, tol: float = 1e-13,
         if converged == count:
             vectors = (ritz[:, wanted].T @ basis[:steps]).T  # Ritz vectors: one GEMM
             return theta[wanted], vectors
-        # About one more pair converges every two steps: look again when half could have.
+        # Pairs converge at about one every two steps: look again after an eighth of the rest.
         next_check = steps + max(2, (count - converged) // 4)
     return None
 
