@@ -2,6 +2,7 @@ import numpy as np
 import pytest
 import scipy.linalg
 
+import eigendance.eigen as eigen
 from eigendance.eigen import solve_bands, solve_eigsh
 from eigendance.errors import EigendanceError
 from eigendance.laplacian import laplacian
@@ -61,8 +62,6 @@ def test_bands_equal_dense_solve_nothing_missed_or_doubled(sphere_dense, sphere_
 
 def test_missed_copies_of_a_multiple_eigenvalue_are_found_again(sphere_problem, sphere_dense):
     """A band that lost pairs of multiplets (as one Krylov space does) gets them back."""
-    import eigendance.eigen as eigen
-
     stiffness, mass = sphere_problem
     values, vectors = sphere_dense
     shift, radius = 20.0, 9.0  # around l = 4, down to l = 3: 16 pairs, in 4 exact multiplets
@@ -120,8 +119,6 @@ def test_k_too_large():
 
 def test_gaps_between_bands_are_filled(sphere_problem, monkeypatch):
     """With bands placed apart (negative overlap) the solver must fill every gap it leaves."""
-    import eigendance.eigen as eigen
-
     monkeypatch.setattr(eigen, "OVERLAP", -0.4)
     stiffness, mass = sphere_problem
     values, _ = solve_bands(stiffness, mass, 120, per_band=30, workers=1)
@@ -132,8 +129,6 @@ def test_gaps_between_bands_are_filled(sphere_problem, monkeypatch):
 
 def test_inertia_mismatch_is_reported(sphere_problem):
     """A band whose Sylvester count disagrees with the accepted eigenvalues fails loudly."""
-    import eigendance.eigen as eigen
-
     stiffness, mass = sphere_problem
     values, vectors = solve_bands(stiffness, mass, 20, per_band=30)
     liar = eigen.Band(shift=7.0, radius=1.0, eigenvalues=values, eigenvectors=vectors, below=3,
@@ -211,8 +206,6 @@ def test_identical_components_many_exact_multiplicities():
 
 def test_lu_fallback_when_ldlt_fails(sphere_problem, monkeypatch):
     """A zero pivot in LDLᵀ (σ on an eigenvalue) falls back to SuperLU, without counts."""
-    import eigendance.eigen as eigen
-
     def zero_pivot(self, shifted):
         raise ValueError("zero pivot")
 

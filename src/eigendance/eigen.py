@@ -107,9 +107,10 @@ class _ShiftInvert:
         try:
             factor = self._factorise(shifted)
             diagonal = factor.factors()[1]
+            pivots_usable = np.all(np.isfinite(diagonal)) and np.all(diagonal != 0)
         except Exception:  # zero pivot or missing wheel
-            diagonal = np.zeros(1)
-        if np.all(np.isfinite(diagonal)) and np.all(diagonal != 0):
+            pivots_usable = False
+        if pivots_usable:
             # P(L − σM)Pᵀ = L D Lᵀ is a congruence: D's negatives count eigenvalues < σ.
             self.below = int((diagonal < 0).sum())
             self._solve = factor.solve
