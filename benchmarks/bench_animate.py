@@ -19,11 +19,11 @@ import time
 
 import numpy as np
 
-from eigendance.animate import chunk_frames, frame_times, iter_positions, write_animation
-from eigendance.audio import Spectrogram
-from eigendance.demo_music import demo_track
-from eigendance.harmonics import HarmonicBasis
-from eigendance.mapping import strongest_item
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.motion import chunk_frames, iter_positions, write_animation
+from eigendance.music.demo_music import demo_track
+from eigendance.music.gallery import strongest_item
+from eigendance.music.spectrogram import Spectrogram, frame_times
 
 BUNNY = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data", "meshes",
                      "bunny_stanford.obj")

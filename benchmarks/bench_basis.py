@@ -21,9 +21,9 @@ QUICK = [("bunny_stanford.obj", 300)]
 
 def measure(path, k, solver, queue):
     """Run in a fresh process so peak memory (ru_maxrss) belongs to this solve alone."""
-    from eigendance.eigen import solve
-    from eigendance.laplacian import laplacian
-    from eigendance.mesh import load_mesh
+    from eigendance.harmonic.eigensolver import solve
+    from eigendance.harmonic.laplacian import laplacian
+    from eigendance.harmonic.mesh import load_mesh
 
     mesh = load_mesh(path)
     stiffness, mass = laplacian(mesh.vertices, mesh.faces)

@@ -19,9 +19,11 @@ import numpy as np
 import scipy.linalg
 from threadpoolctl import threadpool_limits
 
-from eigendance.modal import ModalModel, skew
-from eigendance.sample_rigs import add_tube_skin, open_chain, planar_loop
-from eigendance.skinning import ModalSkin, linear_blend_skinning
+from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import body_transforms, mode_coefficients
+from eigendance.modal.rotations import skew
+from eigendance.modal.sample_rigs import add_tube_skin, open_chain, planar_loop
+from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
 
 
 def best_of(function, repeats=3):
@@ -85,7 +87,7 @@ def bench_skinning(frames=60):
     add_tube_skin(skeleton, rings=142, around=32)
     model = ModalModel.from_skeleton(skeleton)
     n, nm = len(skeleton.vertices), model.n_modes
-    coefficients = model.coefficients(np.arange(frames) / 30.0)
+    coefficients = mode_coefficients(model, np.arange(frames) / 30.0)
     skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype=np.float32)
     c32 = coefficients.astype(np.float32)
     matrix = np.random.default_rng(0).normal(size=(nm, 3 * n)).astype(np.float32)
@@ -97,7 +99,7 @@ def bench_skinning(frames=60):
 
     ours = best_of(lambda: skin.positions(c32), repeats=5)
     bare = best_of(bare_product, repeats=5)
-    transforms = model.body_transforms(coefficients)
+    transforms = body_transforms(model, coefficients)
     blend = best_of(lambda: linear_blend_skinning(skeleton.vertices, skeleton.weights,
                                                   transforms), repeats=1)
     print(f"   {n} vertices, {nm} modes, {frames} frames per call")

@@ -18,8 +18,9 @@ import time
 import numpy as np
 import soundfile
 
-from eigendance.audio import Spectrogram, band_edges, frame_centres, hann, read_audio
-from eigendance.demo_music import demo_track
+from eigendance.music.decode import read_audio
+from eigendance.music.demo_music import demo_track
+from eigendance.music.spectrogram import Spectrogram, band_edges, frame_centres, hann
 
 
 def stereo_track(seconds: float) -> tuple[np.ndarray, int]:

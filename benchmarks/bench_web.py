@@ -40,10 +40,10 @@ def main() -> None:
     parser.add_argument("--port", type=int, default=8791)
     args = parser.parse_args()
 
-    from eigendance.audio import Spectrogram
-    from eigendance.demo_music import write_demo_wav
-    from eigendance.harmonics import HarmonicBasis
-    from eigendance.mapping import Mapping
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.music.demo_music import write_demo_wav
+    from eigendance.music.mapping import Mapping
+    from eigendance.music.spectrogram import Spectrogram
 
     folder = tempfile.mkdtemp(prefix="bench-web-")
     song = os.path.join(folder, "demo.wav")
@@ -72,7 +72,7 @@ def main() -> None:
     mappings = [Mapping.from_json(m) for m in results.pop("mappings")]
     times = 1.0 + 0.1 * np.arange(args.frames)
     values = spectrogram.at(times)
-    from eigendance.mapping import filters
+    from eigendance.music.mapping import filters
 
     phi = filters(mappings, values[:1], basis.k)  # warm-up
     basis.filter_positions(phi[:, 0])

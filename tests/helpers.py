@@ -4,10 +4,9 @@ import os
 
 import trimesh
 
-from eigendance.mesh import Mesh
+from eigendance.harmonic.mesh import Mesh
 
 FIXTURES = os.path.join(os.path.dirname(__file__), "fixtures")
-SHARED = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data"))
 
 
 def sphere(subdivisions=3) -> Mesh:

@@ -1,4 +1,3 @@
-import os
 import subprocess
 import sys
 
@@ -7,8 +6,8 @@ import pytest
 import trimesh
 
 from eigendance.cli import main
-from eigendance.harmonics import HarmonicBasis
-from helpers import SHARED, fixture_path
+from eigendance.harmonic.basis import HarmonicBasis
+from helpers import fixture_path
 
 
 def test_basis_command_writes_the_basis_file(tmp_path, capsys):
@@ -53,8 +52,7 @@ def test_bad_input_exits_1_with_one_line_and_no_traceback(tmp_path):
     assert not (tmp_path / "o.npz").exists()
 
 
-REAL_MESHES = ["decimated-knight.off", "beetle.obj", "teapot.obj"]
-SHARED_MESHES = ["ogre.obj", "camelhead.off", "fertility.off"]  # used when ../shared is present
+REAL_MESHES = ["decimated-knight.off", "beetle.obj", "teapot.obj", "fertility.off"]
 BROKEN = {
     "empty.obj": "",
     "points.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\n",
@@ -73,8 +71,6 @@ def run_basis(path, out, *options):
 def test_real_meshes_give_a_basis_messy_ones_after_a_hint(tmp_path, capsys):
     """Messy real meshes (holes, components, non-manifold edges) all end with a finite basis."""
     paths = [fixture_path("meshes", name) for name in REAL_MESHES]
-    paths += [p for name in SHARED_MESHES if os.path.exists(p := os.path.join(SHARED, "meshes",
-                                                                               name))]
     trimesh.creation.annulus(0.5, 1.0, 0.2).export(tmp_path / "annulus.ply")
     paths.append(tmp_path / "annulus.ply")
     out = tmp_path / "out.npz"

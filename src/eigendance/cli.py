@@ -1,17 +1,87 @@
-"""The `eigendance` command line (DESIGN §8).
+"""The `eigendance` command line (docs/design.md#cli).
 
-Each sub-command is a function `run_<name>(args)` registered in `COMMANDS` with a function that
-adds its arguments. Errors in the input print one line `eigendance: error: …` and exit 1.
+Each sub-command is a pair of functions, `add_<name>(parser)` and `run_<name>(args)`, listed in
+`COMMANDS`. Errors print one line `eigendance: error: …`: exit status 1 for bad input (with a
+hint naming the flag that may help), 2 for a failure of eigendance itself (a bug to report).
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
+import tempfile
 import time
 
-from eigendance.errors import EigendanceError
+import numpy as np
+from tqdm import tqdm
+
+from eigendance import __version__
+from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.files import refuse_overwrite
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.eigensolver import SOLVERS
+from eigendance.harmonic.laplacian import LAPLACIANS
+from eigendance.harmonic.mesh import load_mesh
+from eigendance.harmonic.motion import write_animation
+from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import (
+    animate_rig,
+    band_mapping,
+    mode_drive,
+    parse_modes,
+    save_animation,
+)
+from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
+from eigendance.music.breeding import breed
+from eigendance.music.gallery import (
+    CALIBRATIONS,
+    DEFAULT_GALLERY,
+    check_gallery_size,
+    initial_gallery,
+    strongest_item,
+)
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram, check_picture_path, frame_times, save_picture
+from eigendance.server import (
+    DEFAULT_HOST,
+    DEFAULT_PORT,
+    DEMO_K,
+    demo_paths,
+    run,
+    terminal_progress,
+)
+from eigendance.server.app import create_app
+from eigendance.server.library import Library
+
+RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
+            + ", ".join(SAMPLE_RIGS))
+
+
+# --- argument types: a bad value is an argparse error naming the flag ------------------------
+
+def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
+           above: bool = False):
+    """An argparse type for finite numbers in [low, high] (or (low, high] with `above`)."""
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected {'an integer' if integer else 'a number'}, got {text!r}") from None
+        if not math.isfinite(value) or value > high or value < low or (above and value <= low):
+            bound = f"> {low:g}" if above else f"≥ {low:g}"
+            limit = "" if math.isinf(high) else f" and ≤ {high:g}"
+            raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
+                                             f"{text!r}")
+        return value
+    return parse
+
+
+HARMONICS = number(1, 20000, integer=True)
+FPS = number(0, 1000, above=True)
+PORT = number(0, 65535, integer=True)
 
 
 def progress_bar(total: int | None, description: str, unit: str = "pair"):
@@ -19,8 +89,6 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
 
     total None: the count is not known in advance (the bar shows a running count).
     """
-    from tqdm import tqdm
-
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
                disable=not sys.stderr.isatty(), leave=False)
 
@@ -30,12 +98,25 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
     return bar, update
 
 
-def add_basis(parser):
-    from eigendance.eigen import SOLVERS
-    from eigendance.laplacian import LAPLACIANS
+def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
+    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache)."""
+    if path.lower().endswith(".npz"):
+        return HarmonicBasis.load(path)
+    return HarmonicBasis.from_mesh(path, k, progress=progress)
 
+
+def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:
+    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands."""
+    if path.lower().endswith(".npz"):
+        return Spectrogram.load(path)
+    return Spectrogram.from_file(path, bands=bands)
+
+
+# --- commands -------------------------------------------------------------------------------
+
+def add_basis(parser):
     parser.add_argument("mesh", help="mesh file: OBJ, PLY, OFF, STL, glTF or GLB")
-    parser.add_argument("-k", type=int, default=300, help="number of harmonics (default 300)")
+    parser.add_argument("-k", type=HARMONICS, default=300, help="number of harmonics (default 300)")
     parser.add_argument("--laplacian", choices=LAPLACIANS, default="cotan",
                         help="cotan (default, thesis) or robust (intrinsic Delaunay; "
                              "for non-manifold meshes)")
@@ -47,10 +128,6 @@ def add_basis(parser):
 
 
 def run_basis(args) -> None:
-    from eigendance.files import refuse_overwrite
-    from eigendance.harmonics import HarmonicBasis
-    from eigendance.mesh import load_mesh
-
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     mesh = load_mesh(args.mesh)
@@ -67,94 +144,78 @@ def run_basis(args) -> None:
           f"{time.perf_counter() - start:.1f} s")
 
 
-def add_serve(parser):
-    from eigendance.server import DEFAULT_HOST, DEFAULT_PORT
+def add_server_options(parser, k: int, k_help: str) -> None:
+    parser.add_argument("--host", default=DEFAULT_HOST,
+                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
+    parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
+                        help=f"port (default {DEFAULT_PORT})")
+    parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
+    parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
+                        help="largest file a page may upload, MiB (default 64)")
 
+
+def add_serve(parser):
     parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING",
                         help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC) "
                              "and mapping JSON files to put in the library")
-    parser.add_argument("--host", default=DEFAULT_HOST,
-                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
-    parser.add_argument("--port", type=int, default=DEFAULT_PORT,
-                        help=f"port (default {DEFAULT_PORT})")
-    parser.add_argument("-k", type=int, default=150,
-                        help="harmonics per mesh basis (default 150)")
-    parser.add_argument("--max-upload-mb", type=int, default=64,
-                        help="largest file a page may upload, MiB (default 64)")
+    add_server_options(parser, 150, "harmonics per mesh basis")
 
 
 def run_serve(args) -> None:
-    from eigendance.server import run, terminal_progress
-    from eigendance.server.app import create_app
-
-    library = _library(args)
+    library = new_library(args)
     for path in args.files:
         library.add_path(path)
     terminal_progress(library)
-    run(create_app(library=library), args.host, args.port,
-        announce=f"eigendance: serving on {_url(args.host, args.port)}")
+    run(create_app(library), args.host, args.port,
+        announce=f"eigendance: serving on {url(args.host, args.port)}")
 
 
 def add_demo(parser):
-    from eigendance.server import DEFAULT_HOST, DEFAULT_PORT, DEMO_K
-
-    parser.add_argument("--host", default=DEFAULT_HOST,
-                        help=f"address to listen on (default {DEFAULT_HOST})")
-    parser.add_argument("--port", type=int, default=DEFAULT_PORT,
-                        help=f"port (default {DEFAULT_PORT})")
-    parser.add_argument("-k", type=int, default=DEMO_K,
-                        help=f"harmonics of the demo mesh (default {DEMO_K})")
-    parser.add_argument("--max-upload-mb", type=int, default=64,
-                        help="largest file a page may upload, MiB (default 64)")
+    add_server_options(parser, DEMO_K, "harmonics of the demo mesh")
 
 
 def run_demo(args) -> None:
-    from eigendance.server import demo_paths, run, terminal_progress
-    from eigendance.server.app import create_app
-
-    library = _library(args)
+    library = new_library(args)
     terminal_progress(library)
     for path in demo_paths():
         library.add_path(path)
-    run(create_app(library=library), args.host, args.port,
-        announce=f"eigendance demo: open {_url(args.host, args.port)} in a browser")
+    run(create_app(library), args.host, args.port,
+        announce=f"eigendance demo: open {url(args.host, args.port)} in a browser")
 
 
-def _library(args):
-    import tempfile
-
-    from eigendance.server.library import Library
-
+def new_library(args) -> Library:
     return Library(tempfile.mkdtemp(prefix="eigendance-library-"), k=args.k,
                    max_upload_bytes=args.max_upload_mb << 20)
 
 
-def _url(host: str, port: int) -> str:
+def url(host: str, port: int) -> str:
     shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
     shown = f"[{shown}]" if ":" in shown else shown
     return f"http://{shown}:{port}/"
+
+
 def add_spectrum(parser):
     parser.add_argument("audio", help="audio file: WAV, FLAC, OGG, MP3, M4A/AAC, Opus, …")
-    parser.add_argument("--rate", type=float, default=100.0,
-                        help="analysis frames per second (default 100)")
-    parser.add_argument("--bands", type=int, default=64, help="number of bands (default 64)")
+    parser.add_argument("--rate", type=number(0, 1000, above=True), default=100.0,
+                        help="analysis frames per second (default 100, at most 1000)")
+    parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
+                        help="number of bands (default 64)")
     parser.add_argument("-o", "--output", required=True, help="spectrogram file to write (.npz)")
-    parser.add_argument("--png", help="also draw the spectrogram into this picture (.png)")
+    parser.add_argument("--png", help="also draw the spectrogram into this picture "
+                                      "(.png, .svg, .pdf or .jpg)")
     parser.add_argument("--force", action="store_true", help="overwrite existing outputs")
 
 
 def run_spectrum(args) -> None:
-    from eigendance.audio import Spectrogram
-    from eigendance.files import refuse_overwrite
-
     refuse_overwrite(args.output, args.force)
     if args.png:
+        check_picture_path(args.png)
         refuse_overwrite(args.png, args.force)
     start = time.perf_counter()
     spectrogram = Spectrogram.from_file(args.audio, rate=args.rate, bands=args.bands)
     spectrogram.save(args.output)
     if args.png:
-        spectrogram.save_png(args.png, title=os.path.basename(args.audio))
+        save_picture(spectrogram, args.png, title=os.path.basename(args.audio))
     print(f"{args.output}: {len(spectrogram.times)} frames × {spectrogram.bands} bands, "
           f"{spectrogram.duration:.2f} s at {spectrogram.sample_rate} Hz, "
           f"{time.perf_counter() - start:.1f} s")
@@ -163,38 +224,34 @@ def run_spectrum(args) -> None:
 def add_gallery(parser):
     parser.add_argument("basis", help="basis file (.npz) or mesh file (solved with -k)")
     parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file")
-    parser.add_argument("-n", "--size", type=int, default=8,
-                        help="number of gallery items (default 8; even for an initial gallery)")
-    parser.add_argument("--seed", type=int, default=0, help="breeding seed (default 0)")
+    parser.add_argument("-n", "--size", type=int, default=DEFAULT_GALLERY,
+                        help=f"number of gallery items (default {DEFAULT_GALLERY})")
+    parser.add_argument("--seed", type=number(0, 2**32 - 1, integer=True), default=0,
+                        help="breeding seed (default 0)")
     parser.add_argument("--breed", nargs="+", metavar="MAPPING",
                         help="breed children of these mapping files instead of the initial "
                              "gallery")
-    parser.add_argument("--calibration", choices=("strongest", "each"), default="strongest",
-                        help="initial gallery: one M_a so the strongest item moves 5%% of the "
-                             "diagonal (default, DESIGN §4), or each item its own")
-    parser.add_argument("-k", type=int, default=300,
+    parser.add_argument("--calibration", choices=CALIBRATIONS, default="strongest",
+                        help="initial gallery: one amplification so the strongest item moves "
+                             "5%% of the diagonal (default), or each item its own")
+    parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when BASIS is a mesh file (default 300)")
     parser.add_argument("-o", "--output", required=True, help="folder for 0.json, 1.json, …")
     parser.add_argument("--force", action="store_true", help="overwrite existing mappings")
 
 
 def run_gallery(args) -> None:
-    from eigendance.animate import basis_from_path, spectrogram_from_path
-    from eigendance.files import refuse_overwrite
-    from eigendance.mapping import Mapping, breed, initial_gallery
-
-    if args.size < 1:
-        raise EigendanceError(f"-n must be a positive integer, got {args.size}")
-    paths = [os.path.join(args.output, f"{i}.json") for i in range(args.size)]
+    size = check_gallery_size(args.size)
+    paths = [os.path.join(args.output, f"{i}.json") for i in range(size)]
     for path in paths:
         refuse_overwrite(path, args.force)
     if args.breed:
         parents = [Mapping.load(path) for path in args.breed]
-        items = breed(parents, args.size, args.seed)
+        items = breed(parents, size, args.seed)
     else:
-        basis = basis_from_path(args.basis, args.k)
-        spectrogram = spectrogram_from_path(args.spectrogram)
-        items = initial_gallery(basis, spectrogram, args.size, calibration=args.calibration)
+        basis = basis_from(args.basis, args.k)
+        spectrogram = spectrogram_from(args.spectrogram)
+        items = initial_gallery(basis, spectrogram, size, calibration=args.calibration)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"
@@ -206,29 +263,61 @@ def add_animate(parser):
     parser.add_argument("audio", help="audio file, or spectrogram file (.npz)")
     parser.add_argument("--mapping", help="mapping JSON (default: the initial-gallery item of "
                                           "8 that moves the mesh most)")
-    parser.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
-    parser.add_argument("-k", type=int, default=300,
+    parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
+    parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when MESH is a mesh file (default 300)")
     parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
 
+def run_animate(args) -> None:
+    refuse_overwrite(args.output, args.force)
+    start = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    bar, update = progress_bar(args.k, "eigenpairs")
+    with bar:
+        basis = basis_from(args.mesh, args.k, progress=update)
+    spectrogram = spectrogram_from(args.audio, bands=mapping.bands if mapping else 64)
+    if mapping is None:
+        mapping = strongest_item(basis, spectrogram)
+    frames, update = progress_bar(None, "frames", unit="frame")
+    with frames:
+        count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
+                                progress=update)
+    print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
+          f"{time.perf_counter() - start:.1f} s")
+
+
+STIFFNESS = number(0, 1e12, above=True)
+
+
 def add_modes(parser):
-    parser.add_argument("rig", help="skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in "
-                                    "sample rig: loop4, loop8, loop16, chain")
+    parser.add_argument("rig", help=RIG_HELP)
     parser.add_argument("-o", "--output", required=True, help="modal file to write (.npz)")
-    parser.add_argument("--stiffness", type=float, default=1.0,
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1; frequencies scale "
                              "with its square root)")
-    parser.add_argument("--show", type=int, default=30, help="modes listed (default 30)")
+    parser.add_argument("--show", type=number(0, integer=True), default=30,
+                        help="modes listed (default 30)")
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
 
-def run_modes(args) -> None:
-    from eigendance.modal import ModalModel
-    from eigendance.rig_animation import load_rig, mode_table
+def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> list[str]:
+    """Lines: index, frequency (Hz) and the bodies carrying most of each mode's energy."""
+    energy = model.body_energy()
+    lines = [f"{'mode':>5} {'frequency Hz':>13}  bodies that move most (share of energy)"]
+    count = model.n_modes if limit is None else min(limit, model.n_modes)
+    for index in range(count):
+        order = np.argsort(energy[:, index])[::-1][:top]
+        movers = ", ".join(f"{model.body_names[b]} {energy[b, index]:.0%}" for b in order)
+        lines.append(f"{index:>5} {model.frequencies[index]:>13.4f}  {movers}")
+    if count < model.n_modes:
+        lines.append(f"  … {model.n_modes - count} more (all are in the file)")
+    return lines
 
-    refuse_overwrite_rig(args)
+
+def run_modes(args) -> None:
+    refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     skeleton = load_rig(args.rig)
     for note in skeleton.notes:
@@ -243,89 +332,50 @@ def run_modes(args) -> None:
 
 
 def add_animate_rig(parser):
-    parser.add_argument("rig", help="skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in "
-                                    "sample rig: loop4, loop8, loop16, chain")
-    parser.add_argument("audio", nargs="?", help="sound file (WAV, FLAC, OGG; read with "
-                        "soundfile) whose band loudness drives the modes; without it every "
+    parser.add_argument("rig", help=RIG_HELP)
+    parser.add_argument("audio", nargs="?", help="audio file (any format `spectrum` reads) or "
+                        "spectrogram file (.npz) whose bands drive the modes; without it every "
                         "chosen mode moves steadily")
+    parser.add_argument("--mapping", help="mapping JSON from bands to the chosen modes "
+                                          "(default: bands in order, low sounds to low modes)")
     parser.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the 8 lowest)")
-    parser.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
-    parser.add_argument("--duration", type=float, default=None,
+    parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
+    parser.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
                         help="seconds (default: the audio's length, or 4 s without audio)")
-    parser.add_argument("--amplitude", type=float, default=0.3,
+    parser.add_argument("--amplitude", type=number(0, math.pi), default=0.3,
                         help="largest body rotation of each mode at full drive, radians "
                              "(default 0.3)")
-    parser.add_argument("--time-scale", type=float, default=1.0,
+    parser.add_argument("--time-scale", type=number(0, 1000, above=True), default=1.0,
                         help="multiply the natural frequencies (default 1)")
-    parser.add_argument("--bands", type=int, default=16,
-                        help="loudness bands of the audio, shared out over the modes in "
-                             "order (default 16)")
+    parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
+                        help="bands of the audio's spectrogram (default 64)")
     parser.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
                         help="modal (default, first-order, as live) or lbs (exact body "
                              "transforms, linear blend)")
-    parser.add_argument("--stiffness", type=float, default=1.0,
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1)")
     parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
 
-def run_animate(args) -> None:
-
-    from eigendance.animate import basis_from_path, spectrogram_from_path, write_animation
-    from eigendance.files import refuse_overwrite
-    from eigendance.mapping import Mapping, strongest_item
-
+def run_animate_rig(args) -> None:
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    bar, update = progress_bar(args.k, "eigenpairs")
-    with bar:
-        basis = basis_from_path(args.mesh, args.k, progress=update)
-    spectrogram = spectrogram_from_path(args.audio, bands=mapping.bands if mapping else 64)
-    if mapping is None:
-        mapping = strongest_item(basis, spectrogram)
-    frames, update = progress_bar(None, "frames", unit="frame")
-    with frames:
-        count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
-                                progress=update)
-    print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
-          f"{time.perf_counter() - start:.1f} s")
-
-
-def run_animate_rig(args) -> None:
-    import numpy as np
-
-    from eigendance.modal import ModalModel, band_drive
-    from eigendance.rig_animation import (
-        animate_rig,
-        band_loudness,
-        load_rig,
-        parse_modes,
-        read_audio,
-        save_animation,
-    )
-
-    refuse_overwrite_rig(args)
-    if not args.fps > 0 or (args.duration is not None and not args.duration > 0):
-        raise EigendanceError("--fps and --duration must be positive")
-    if args.bands < 1:
-        raise EigendanceError("--bands must be at least 1")
-    start = time.perf_counter()
     skeleton = load_rig(args.rig)
     model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
     if model.n_modes == 0:
-        raise EigendanceError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
-                              "joint); nothing to animate")
+        raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
+                         "nothing to animate")
     modes = parse_modes(args.modes, model.n_modes)
     drive = None
     if args.audio:
-        samples, rate = read_audio(args.audio)
-        duration = args.duration or len(samples) / rate
+        spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands)
+        times = frame_times(args.duration or spectrogram.duration, args.fps)
+        mapping = mapping or band_mapping(spectrogram.bands, len(modes))
+        drive = mode_drive(mapping, spectrogram, times, len(modes))
     else:
-        duration = args.duration or 4.0
-    times = np.arange(int(round(duration * args.fps)) + 1) / args.fps
-    if args.audio:
-        drive = band_drive(band_loudness(samples, rate, times, args.bands), len(modes))
+        times = frame_times(args.duration or 4.0, args.fps)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
         arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
@@ -337,12 +387,6 @@ def run_animate_rig(args) -> None:
           f"({', '.join(f'{model.frequencies[m]:.3g}' for m in modes)} Hz), "
           f"{'audio drive' if drive is not None else 'steady drive'}, "
           f"{time.perf_counter() - start:.1f} s")
-
-
-def refuse_overwrite_rig(args) -> None:
-    from eigendance.files import refuse_overwrite
-
-    refuse_overwrite(args.output, args.force)
 
 
 COMMANDS = {
@@ -361,23 +405,35 @@ COMMANDS = {
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="eigendance", description="Make 3D models dance to music.")
-    from eigendance import __version__
-
     parser.add_argument("--version", action="version", version=f"eigendance {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for name, (add, run, summary) in COMMANDS.items():
+    for name, (add, run_command, summary) in COMMANDS.items():
         command = commands.add_parser(name, help=summary, description=summary)
         add(command)
-        command.set_defaults(run=run)
+        command.set_defaults(run=run_command)
     return parser
 
 
+# How a remedy ({parameter: value}) reads on the command line.
+FLAGS = {"k": "-k"}
+
+
+def hint(remedy: dict) -> str:
+    """'; try --solver eigsh' for {"solver": "eigsh"} ('' for no remedy)."""
+    if remedy.get("force"):
+        return "; pass --force to overwrite it"
+    flags = [f"{FLAGS.get(name, '--' + name.replace('_', '-'))} {value}"
+             for name, value in remedy.items()]
+    return f"; try {' '.join(flags)}" if flags else ""
+
+
 def main(argv=None) -> int:
+    """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
     try:
         args.run(args)
-    except EigendanceError as error:
-        print(f"eigendance: error: {error}", file=sys.stderr)
+    except InputError as error:
+        print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("eigendance: interrupted", file=sys.stderr)
@@ -385,6 +441,15 @@ def main(argv=None) -> int:
     except MemoryError:
         print("eigendance: error: out of memory; try a smaller -k or mesh", file=sys.stderr)
         return 1
+    except Exception as error:  # noqa: BLE001 - every failure of ours ends in one line
+        if os.environ.get("EIGENDANCE_DEBUG"):
+            raise
+        what = str(error) if isinstance(error, EigendanceError) else \
+            f"{type(error).__name__}: {one_line(error)}"
+        remedy = hint(getattr(error, "remedy", {}))
+        print(f"eigendance: internal error, a bug to report: {what}{remedy} "
+              "(EIGENDANCE_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 2
     return 0
 
 

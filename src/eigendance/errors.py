@@ -1,5 +1,49 @@
-"""The one exception type users see: its message is a complete one-line explanation."""
+"""Errors by kind (docs/design.md#errors).
+
+Every message is one complete line that names the input and what is wrong with it, in words a
+user of the library, the command line or the web page understands: no command-line flags. The
+front ends add their own hints from `remedy` (the CLI turns {"solver": "eigsh"} into
+"try --solver eigsh").
+
+- `InputError`: the input is wrong or the request impossible (a malformed file, a bad value, an
+  output that cannot be written). The user can fix it: CLI exit status 1, HTTP 4xx.
+- `InternalError`: a failure of ours (a solver that did not converge, a check of our own results
+  that failed). It is a bug to report: CLI exit status 2, HTTP 500.
+"""
+
+from __future__ import annotations
 
 
-class EigendanceError(ValueError):
-    """Bad input or an impossible request. The CLI prints ``str(error)`` on one line, exit 1."""
+class EigendanceError(Exception):
+    """Base of the errors eigendance raises on purpose; ``str(error)`` is one line.
+
+    remedy: settings that may avoid the error, {parameter: value}, e.g. {"laplacian": "robust"}.
+    """
+
+    def __init__(self, message: str, remedy: dict | None = None):
+        super().__init__(one_line(message))
+        self.remedy = dict(remedy or {})
+
+
+class InputError(EigendanceError, ValueError):
+    """Bad input or an impossible request; `status` is the HTTP status the server answers."""
+
+    def __init__(self, message: str, remedy: dict | None = None, status: int = 400):
+        super().__init__(message, remedy)
+        self.status = status
+
+
+class InternalError(EigendanceError, RuntimeError):
+    """A failure of eigendance itself (a bug to report), not of its input."""
+
+
+def one_line(error: BaseException | str, limit: int = 300) -> str:
+    """The text of an error (or a string) on one line, at most `limit` characters.
+
+    Control characters (terminal escapes included) are dropped, so a message built from a file
+    name or a file's content cannot rewrite the user's terminal.
+    """
+    text = error if isinstance(error, str) else (str(error) or type(error).__name__)
+    text = "".join(character if character.isprintable() else " " for character in text)
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[:limit - 1] + "…"

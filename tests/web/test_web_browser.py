@@ -26,8 +26,8 @@ def reference(web_files):
     """The Python side: the same basis (from the shared cache) and spectrogram."""
     import os
 
-    from eigendance.audio import Spectrogram
-    from eigendance.harmonics import HarmonicBasis
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.music.spectrogram import Spectrogram
 
     os.environ["EIGENDANCE_CACHE_DIR"] = web_files["cache"]
     basis = HarmonicBasis.from_mesh(CAT, E2E_K)
@@ -68,8 +68,8 @@ def test_tiles_move_with_the_music(page):
 
 def test_gpu_positions_equal_the_python_reference(page, reference):
     """Read back from the float render targets the tiles are drawn from (batched pass)."""
-    from eigendance.animate import positions_at
-    from eigendance.mapping import Mapping
+    from eigendance.harmonic.motion import positions_at
+    from eigendance.music.mapping import Mapping
 
     basis, spectrogram = reference
     diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
@@ -92,7 +92,8 @@ def test_gpu_positions_equal_the_python_reference(page, reference):
 
 
 def test_select_and_breed_make_a_new_generation(page):
-    from eigendance.mapping import Mapping, breed
+    from eigendance.music.breeding import breed
+    from eigendance.music.mapping import Mapping
 
     before = page.evaluate("window.eigendance.mappings()")
     page.click(".tile[data-index='1'] .view")
@@ -214,8 +215,8 @@ def test_playback_stops_at_the_end_of_the_song_and_rewinds(browser, live_server)
 
 
 def test_float16_download_stays_close_to_the_reference(browser, live_server, reference):
-    from eigendance.animate import positions_at
-    from eigendance.mapping import Mapping
+    from eigendance.harmonic.motion import positions_at
+    from eigendance.music.mapping import Mapping
 
     basis, spectrogram = reference
     diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))

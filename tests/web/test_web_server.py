@@ -4,14 +4,23 @@ from __future__ import annotations
 
 import json
 import os
+import subprocess
+import sys
+import time
+import urllib.request
 
 import numpy as np
 import pytest
 from starlette.testclient import TestClient
-from web_helpers import write_icosphere, write_song
+from web_helpers import free_port, write_icosphere, write_song
 
+from eigendance.cli import build_parser, main
+from eigendance.music.breeding import breed
+from eigendance.music.gallery import initial_gallery
+from eigendance.music.mapping import Mapping
 from eigendance.server.app import create_app
 from eigendance.server.binary import unpack
+from eigendance.server.library import Library
 
 
 @pytest.fixture(scope="module")
@@ -23,9 +32,10 @@ def files(tmp_path_factory):
 
 @pytest.fixture
 def client(files, tmp_path):
-    app = create_app([files["mesh"], files["song"]], folder=str(tmp_path / "library"), k=12,
-                     max_upload_bytes=200_000)
-    library = app.state.library
+    library = Library(str(tmp_path / "library"), k=12, max_upload_bytes=200_000)
+    for path in (files["mesh"], files["song"]):
+        library.add_path(path)
+    app = create_app(library)
     assert library.wait(60)
     with TestClient(app) as test_client:
         test_client.library = library
@@ -91,8 +101,6 @@ def test_spectrogram_bundle_and_audio_bytes(client, files):
 
 
 def test_gallery_and_breeding_use_the_python_mapping_module(client):
-    from eigendance.mapping import Mapping, breed, initial_gallery
-
     mesh_id, song_id = ids(client)
     response = client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id, "size": 6})
     mappings = response.json()["mappings"]
@@ -222,8 +230,6 @@ def test_serves_the_built_front_end(client):
 
 
 def test_cli_binds_localhost_unless_told_otherwise():
-    from eigendance.cli import build_parser
-
     for command in (["serve"], ["demo"]):
         args = build_parser().parse_args(command)
         assert args.host == "127.0.0.1" and args.port == 8765
@@ -231,8 +237,6 @@ def test_cli_binds_localhost_unless_told_otherwise():
 
 
 def test_bad_library_file_on_the_command_line_is_a_one_line_error(tmp_path, capsys):
-    from eigendance.cli import main
-
     bad = tmp_path / "x.exe"
     bad.write_bytes(b"MZ")
     assert main(["serve", str(bad), "--port", "1"]) == 1
@@ -241,13 +245,6 @@ def test_bad_library_file_on_the_command_line_is_a_one_line_error(tmp_path, caps
 
 
 def test_demo_prints_its_url_on_one_line_and_serves_the_cat_and_the_music(tmp_path):
-    import subprocess
-    import sys
-    import time
-    import urllib.request
-
-    from web_helpers import free_port
-
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
     process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "demo", "-k", "16",

@@ -12,21 +12,21 @@ import os
 import sys
 
 import numpy as np
+import trimesh
+
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.mesh import Mesh
+from eigendance.music.demo_music import demo_track
+from eigendance.music.gallery import initial_gallery
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.server.binary import basis_bundle, spectrogram_bundle
 
 FOLDER = os.path.join(os.path.dirname(__file__), "..", "..", "web", "test", "fixtures")
 TIMES = [0.0, 0.137, 0.5, 1.2345, 1.99]
 
 
 def build():
-    import trimesh
-
-    from eigendance.audio import Spectrogram
-    from eigendance.demo_music import demo_track
-    from eigendance.harmonics import HarmonicBasis
-    from eigendance.mapping import Mapping, initial_gallery
-    from eigendance.mesh import Mesh
-    from eigendance.server.binary import basis_bundle, spectrogram_bundle
-
     sphere = trimesh.creation.icosphere(1)
     vertices = sphere.vertices * [1.0, 0.8, 0.6]  # an ellipsoid: distinct eigenvalues
     mesh = Mesh.from_arrays(vertices, sphere.faces, name="ellipsoid")

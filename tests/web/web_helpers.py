@@ -30,7 +30,7 @@ def write_icosphere(path, subdivisions=2) -> str:
 def write_song(path, seconds=6.0) -> str:
     import soundfile
 
-    from eigendance.demo_music import demo_track
+    from eigendance.music.demo_music import demo_track
 
     samples, rate = demo_track(seconds)
     soundfile.write(str(path), samples, rate, subtype="PCM_16")

@@ -1,14 +1,16 @@
-"""`eigendance serve` / `eigendance demo`: the web app's HTTP server (DESIGN §1, §6, §8).
+"""`eigendance serve` / `eigendance demo`: the web app's HTTP server (docs/design.md#server).
 
-Routes (every error is a one-line JSON object ``{"error": "…"}`` with a 4xx status):
+Routes (every error is a one-line JSON object ``{"error": "…"}``, 4xx for bad input, 500 for a
+failure of ours):
 
+- ``GET /api/config`` — rules shared with the page (gallery sizes).
 - ``GET /api/library`` — meshes (with basis state), songs and mappings.
 - ``GET /api/meshes/{id}/basis.bin`` — the basis as a binary bundle (`binary.basis_bundle`).
 - ``GET /api/songs/{id}/spectrogram.bin``, ``GET /api/songs/{id}/audio``.
 - ``GET /api/jobs/{id}`` and ``/api/jobs/{id}/events`` (server-sent events) — basis progress.
 - ``POST /api/upload?name=FILE`` — raw body; mesh, audio or mapping JSON by suffix and content.
 - ``POST /api/gallery`` ``{mesh, song, size}`` and ``POST /api/breed`` ``{parents, size, seed}``
-  — mappings from `eigendance.mapping` (the one implementation).
+  — mappings from `eigendance.music` (the one implementation).
 - ``GET /api/mappings/{id}``, ``POST /api/mappings?name=`` — saved mappings.
 - ``/`` — the built front end (package folder ``static/``, built from ``web/`` by ``make``).
 """
@@ -17,6 +19,15 @@ from __future__ import annotations
 
 import os
 import sys
+import time
+from importlib import resources
+
+import uvicorn
+from tqdm import tqdm
+
+from eigendance.errors import InputError
+from eigendance.harmonic.cache import cache_folder
+from eigendance.music.demo_music import write_demo_wav
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8765
@@ -25,8 +36,6 @@ DEMO_K = 150
 
 def run(app, host: str, port: int, announce: str | None = None) -> None:
     """Serve `app` until interrupted; print `announce` (one line) once the socket listens."""
-    import uvicorn
-
     config = uvicorn.Config(app, host=host, port=port, log_level="warning", access_log=False)
     server = uvicorn.Server(config)
     if announce:
@@ -40,17 +49,11 @@ def run(app, host: str, port: int, announce: str | None = None) -> None:
         server.startup = startup
     server.run()
     if not server.started:
-        from eigendance.errors import EigendanceError
-
-        raise EigendanceError(f"cannot listen on {host}:{port} (in use, or not allowed)")
+        raise InputError(f"cannot listen on {host}:{port} (in use, or not allowed)")
 
 
 def terminal_progress(library) -> None:
     """Show basis jobs on stderr: a tqdm bar on a terminal, and one line when each finishes."""
-    import time
-
-    from tqdm import tqdm
-
     bars = {}
 
     def listener(job):
@@ -80,13 +83,8 @@ def terminal_progress(library) -> None:
 
 def demo_paths() -> list[str]:
     """The built-in mesh and the procedural track (written once as WAV into the cache folder)."""
-    from importlib import resources
-
-    from eigendance import cache
-    from eigendance.demo_music import write_demo_wav
-
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
-    song = os.path.join(cache.folder(), "demo-music", "eigendance-demo-music.wav")
+    song = os.path.join(cache_folder(), "demo-music", "eigendance-demo-music.wav")
     os.makedirs(os.path.dirname(song), exist_ok=True)
     if not os.path.exists(song):
         write_demo_wav(song)

@@ -1,11 +1,16 @@
-"""The HTTP API and static web app (Starlette). See `eigendance.server` for the route list."""
+"""The HTTP API and the static web app (Starlette); routes are listed in `eigendance.server`.
+
+Every route is a module-level function; the state it serves is the `Library` on
+``request.app.state.library``. Work heavier than a lookup (decoding, galleries, breeding) runs in
+a worker thread, never on the event loop. Every error is one line of JSON, ``{"error": "…"}``:
+4xx for bad input, 500 for a failure of ours.
+"""
 
 from __future__ import annotations
 
 import asyncio
 import json
 import os
-import tempfile
 from importlib import resources
 
 from starlette.applications import Starlette
@@ -21,28 +26,35 @@ from starlette.responses import (
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
-from eigendance.errors import EigendanceError
-from eigendance.server.library import Library, kind_of
+from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.files import kind_of, suffix_of
+from eigendance.music.breeding import breed
+from eigendance.music.gallery import (
+    DEFAULT_GALLERY,
+    MAX_GALLERY,
+    MIN_GALLERY,
+    check_gallery_size,
+    initial_gallery,
+)
+from eigendance.music.mapping import Mapping
+from eigendance.server.binary import basis_bundle
+from eigendance.server.library import Library
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
                ".oga": "audio/ogg", ".opus": "audio/ogg", ".flac": "audio/flac",
                ".m4a": "audio/mp4"}
-MAX_GALLERY = 16
+JSON_LIMIT = 4 << 20  # bytes of a JSON request body
 
 
 def static_folder() -> str | None:
-    folder = resources.files("eigendance") / "static"
-    path = os.fspath(folder)
+    """The built front end inside the package, or None when it was never built."""
+    path = os.fspath(resources.files("eigendance") / "static")
     return path if os.path.isfile(os.path.join(path, "index.html")) else None
-
-
-def error(status: int, message: str) -> JSONResponse:
-    return JSONResponse({"error": message}, status_code=status)
 
 
 def sniff(name: str, head: bytes) -> str | None:
     """Why the first bytes of an upload do not match its suffix, or None if they do."""
-    suffix = os.path.splitext(name)[1].lower()
+    suffix = suffix_of(name)
     text_like = b"\0" not in head[:4096]
     checks = {
         ".obj": text_like, ".off": text_like and head.lstrip()[:4].upper().endswith(b"OFF")
@@ -63,224 +75,254 @@ def sniff(name: str, head: bytes) -> str | None:
     return None if checks[suffix] else f"the content is not a {suffix[1:].upper()} file"
 
 
-def create_app(paths=(), library: Library | None = None, folder: str | None = None,
-               k: int = 150, max_upload_bytes: int = 64 << 20) -> Starlette:
-    """The web app serving `library` (made from `paths` when not given)."""
-    if library is None:
-        library = Library(folder or tempfile.mkdtemp(prefix="eigendance-library-"), k=k,
-                          max_upload_bytes=max_upload_bytes)
-        for path in paths:
-            library.add_path(os.fspath(path))
+# --- helpers ----------------------------------------------------------------------------------
 
-    def mesh_of(mesh_id: str):
-        item = library.meshes.get(mesh_id)
-        if item is None:
-            raise HTTPException(404, f"no mesh with id '{mesh_id}'")
-        return item
+def library_of(request: Request) -> Library:
+    return request.app.state.library
 
-    def song_of(song_id: str):
-        item = library.songs.get(song_id)
-        if item is None:
-            raise HTTPException(404, f"no song with id '{song_id}'")
-        return item
 
-    def ready_basis(mesh_id: str):
-        item = mesh_of(mesh_id)
-        if item.basis is None:
-            state = item.job.state if item.job else "missing"
-            message = item.job.message if item.job and item.job.message else \
-                f"the basis of '{item.name}' is not ready ({state})"
-            raise HTTPException(409, message)
-        return item
+def mesh_of(request: Request, mesh_id: str):
+    item = library_of(request).meshes.get(mesh_id)
+    if item is None:
+        raise HTTPException(404, f"no mesh with id '{mesh_id}'")
+    return item
 
-    async def json_body(request: Request, limit: int = 4 << 20):
-        body = await request.body()
-        if len(body) > limit:
-            raise HTTPException(413, "request body too large")
-        try:
-            return json.loads(body)
-        except ValueError:
-            raise HTTPException(400, "the request body is not valid JSON") from None
 
-    async def get_library(request):
-        return JSONResponse(library.as_json())
+def song_of(request: Request, song_id: str):
+    item = library_of(request).songs.get(song_id)
+    if item is None:
+        raise HTTPException(404, f"no song with id '{song_id}'")
+    return item
 
-    async def get_mesh(request):
-        return JSONResponse(mesh_of(request.path_params["id"]).as_json())
 
-    async def get_basis(request):
-        """?dtype=float16 sends the harmonics as float16 (half the bytes)."""
-        from eigendance.server.binary import basis_bundle
+def ready_basis(request: Request, mesh_id: str):
+    """The mesh item of `mesh_id` once its basis is ready; 409 while it is being computed."""
+    item = mesh_of(request, mesh_id)
+    if item.basis is None:
+        state = item.job.state if item.job else "missing"
+        message = item.job.message if item.job and item.job.message else \
+            f"the basis of '{item.name}' is not ready ({state})"
+        raise HTTPException(409, message)
+    return item
 
-        item = ready_basis(request.path_params["id"])
-        dtype = request.query_params.get("dtype", "float32")
-        if dtype not in ("float32", "float16"):
-            raise HTTPException(400, "dtype must be float32 or float16")
-        if dtype == "float16":
-            if item.half_bundle is None:
-                item.half_bundle = await asyncio.to_thread(basis_bundle, item.basis, item.name,
-                                                           True)
-            bundle = item.half_bundle
-        else:
-            bundle = item.bundle
-        return Response(bundle, media_type="application/octet-stream",
-                        headers={"Cache-Control": "no-cache"})
 
-    async def get_spectrogram(request):
-        item = song_of(request.path_params["id"])
-        return Response(item.bundle, media_type="application/octet-stream")
+async def json_body(request: Request):
+    body = await request.body()
+    if len(body) > JSON_LIMIT:
+        raise HTTPException(413, f"the request body is larger than {JSON_LIMIT >> 20} MiB")
+    try:
+        return json.loads(body)
+    except ValueError:
+        raise HTTPException(400, "the request body is not valid JSON") from None
 
-    async def get_audio(request):
-        item = song_of(request.path_params["id"])
-        suffix = os.path.splitext(item.name)[1].lower()
-        media_type = AUDIO_TYPES.get(suffix, "application/octet-stream")
-        return FileResponse(item.path, media_type=media_type)
 
-    async def get_job(request):
-        job = library.jobs.get(request.path_params["id"])
-        if job is None:
-            raise HTTPException(404, f"no job with id '{request.path_params['id']}'")
-        return JSONResponse(job.as_json())
+def gallery_size(value) -> int:
+    try:
+        return check_gallery_size(value)
+    except InputError as problem:
+        raise HTTPException(400, str(problem)) from None
 
-    async def job_events(request):
-        job = library.jobs.get(request.path_params["id"])
-        if job is None:
-            raise HTTPException(404, f"no job with id '{request.path_params['id']}'")
 
-        async def stream():
-            last = None
-            while True:
-                state = job.as_json()
-                if state != last:
-                    yield f"data: {json.dumps(state)}\n\n"
-                    last = state
-                if state["state"] in ("done", "error"):
-                    return
-                if await request.is_disconnected():
-                    return
-                await asyncio.sleep(0.1)
+# --- routes -------------------------------------------------------------------------------------
 
-        return StreamingResponse(stream(), media_type="text/event-stream",
-                                 headers={"Cache-Control": "no-cache"})
+async def get_config(request: Request):
+    """Rules the page shares with the library: gallery sizes."""
+    return JSONResponse({"gallery": {"min": MIN_GALLERY, "max": MAX_GALLERY,
+                                     "default": DEFAULT_GALLERY}})
 
-    async def upload(request):
-        name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
-        if not name or name.startswith("."):
-            raise HTTPException(400, "upload needs ?name=FILE with a file name and suffix")
-        try:
-            kind = kind_of(name)
-        except EigendanceError as problem:
-            raise HTTPException(415, str(problem)) from None
-        declared = request.headers.get("content-length")
-        if declared and declared.isdigit() and int(declared) > library.max_upload_bytes:
-            raise HTTPException(413, f"{name}: larger than the "
-                                     f"{library.max_upload_bytes >> 20} MiB upload limit")
-        chunks, size = [], 0
-        async for chunk in request.stream():
-            size += len(chunk)
-            if size > library.max_upload_bytes:
-                raise HTTPException(413, f"{name}: larger than the "
-                                         f"{library.max_upload_bytes >> 20} MiB upload limit")
-            chunks.append(chunk)
-        data = b"".join(chunks)
-        if (why := sniff(name, data[:4096])) is not None:
-            raise HTTPException(415, f"{name}: {why}")
-        suffix = os.path.splitext(name)[1].lower()
-        stored = os.path.join(library.folder, f"upload-{os.urandom(6).hex()}{suffix}")
-        with open(stored, "wb") as file:
-            file.write(data)
-        try:
-            if kind == "mesh":
-                item = await asyncio.to_thread(library.add_mesh, stored, name, None)
-                return JSONResponse({"kind": "mesh", "item": item.as_json(),
-                                     "job": item.job.as_json()}, status_code=201)
-            if kind == "song":
-                item = await asyncio.to_thread(library.add_song, stored, name)
-            else:
-                item = library.add_mapping_file(stored, name)
-        except EigendanceError:
-            os.unlink(stored)
-            raise
-        return JSONResponse({"kind": kind, "item": item.as_json()}, status_code=201)
 
-    async def gallery(request):
-        from eigendance.mapping import initial_gallery
+async def get_library(request: Request):
+    return JSONResponse(library_of(request).as_json())
 
-        body = await json_body(request)
-        if not isinstance(body, dict):
-            raise HTTPException(400, "expected a JSON object {mesh, song, size}")
-        item = ready_basis(str(body.get("mesh")))
-        song = song_of(str(body.get("song")))
-        size = body.get("size", 8)
-        if not isinstance(size, int) or not 1 <= size <= MAX_GALLERY:
-            raise HTTPException(400, f"size must be an integer from 1 to {MAX_GALLERY}")
-        items = await asyncio.to_thread(initial_gallery, item.basis, song.spectrogram, size=size)
-        return JSONResponse({"mappings": [m.to_json() for m in items]})
 
-    async def breed_route(request):
-        from eigendance.mapping import Mapping, breed
+async def get_mesh(request: Request):
+    return JSONResponse(mesh_of(request, request.path_params["id"]).as_json())
 
-        body = await json_body(request)
-        if not isinstance(body, dict) or not isinstance(body.get("parents"), list):
-            raise HTTPException(400, "expected a JSON object {parents: [mappings], size, seed}")
-        size, seed = body.get("size", 8), body.get("seed", 0)
-        if not isinstance(size, int) or not 1 <= size <= MAX_GALLERY:
-            raise HTTPException(400, f"size must be an integer from 1 to {MAX_GALLERY}")
-        if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**32:
-            raise HTTPException(400, "seed must be an integer from 0 to 2³² − 1")
-        if not body["parents"]:
-            raise HTTPException(400, "select at least one parent to breed")
-        parents = [Mapping.from_json(data, f"parent {index + 1}")
-                   for index, data in enumerate(body["parents"])]
-        children = breed(parents, size=size, seed=seed)
-        return JSONResponse({"mappings": [m.to_json() for m in children]})
 
-    async def get_mapping(request):
-        item = library.mappings.get(request.path_params["id"])
-        if item is None:
-            raise HTTPException(404, f"no mapping with id '{request.path_params['id']}'")
-        return JSONResponse(item.data)
-
-    async def save_mapping(request):
-        body = await json_body(request)
-        name = os.path.basename(str(request.query_params.get("name", "mapping.json")))
-        item = library.add_mapping(body, name)
-        return JSONResponse(item.as_json(), status_code=201)
-
-    async def api_missing(request):
-        raise HTTPException(404, f"no API route {request.url.path}")
-
-    async def no_front_end(request):
-        return HTMLResponse("<!doctype html><title>eigendance</title><p>The web app is not built:"
-                            " run <code>make setup</code> (npm ci + vite build).", status_code=503)
-
-    async def on_http_error(request, problem: HTTPException):
-        return error(problem.status_code, str(problem.detail))
-
-    async def on_user_error(request, problem: EigendanceError):
-        return error(400, str(problem))
-
-    routes = [
-        Route("/api/library", get_library),
-        Route("/api/meshes/{id}", get_mesh),
-        Route("/api/meshes/{id}/basis.bin", get_basis),
-        Route("/api/songs/{id}/spectrogram.bin", get_spectrogram),
-        Route("/api/songs/{id}/audio", get_audio),
-        Route("/api/jobs/{id}", get_job),
-        Route("/api/jobs/{id}/events", job_events),
-        Route("/api/upload", upload, methods=["POST"]),
-        Route("/api/gallery", gallery, methods=["POST"]),
-        Route("/api/breed", breed_route, methods=["POST"]),
-        Route("/api/mappings", save_mapping, methods=["POST"]),
-        Route("/api/mappings/{id}", get_mapping),
-        Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
-    ]
-    static = static_folder()
-    if static:
-        routes.append(Mount("/", StaticFiles(directory=static, html=True)))
+async def get_basis(request: Request):
+    """The basis bundle; ?dtype=float16 sends the harmonics as float16 (half the bytes)."""
+    item = ready_basis(request, request.path_params["id"])
+    dtype = request.query_params.get("dtype", "float32")
+    if dtype not in ("float32", "float16"):
+        raise HTTPException(400, "dtype must be float32 or float16")
+    if dtype == "float16":
+        if item.half_bundle is None:
+            item.half_bundle = await asyncio.to_thread(basis_bundle, item.basis, item.name, True)
+        bundle = item.half_bundle
     else:
-        routes.append(Route("/", no_front_end))
-    app = Starlette(routes=routes, exception_handlers={HTTPException: on_http_error,
-                                                       EigendanceError: on_user_error})
+        bundle = item.bundle
+    return Response(bundle, media_type="application/octet-stream",
+                    headers={"Cache-Control": "no-cache"})
+
+
+async def get_spectrogram(request: Request):
+    item = song_of(request, request.path_params["id"])
+    return Response(item.bundle, media_type="application/octet-stream")
+
+
+async def get_audio(request: Request):
+    item = song_of(request, request.path_params["id"])
+    media_type = AUDIO_TYPES.get(suffix_of(item.name), "application/octet-stream")
+    return FileResponse(item.path, media_type=media_type)
+
+
+def job_of(request: Request):
+    job = library_of(request).jobs.get(request.path_params["id"])
+    if job is None:
+        raise HTTPException(404, f"no job with id '{request.path_params['id']}'")
+    return job
+
+
+async def get_job(request: Request):
+    return JSONResponse(job_of(request).as_json())
+
+
+async def job_events(request: Request):
+    """Server-sent events with the job's state until it is done or failed."""
+    job = job_of(request)
+
+    async def stream():
+        last = None
+        while True:
+            state = job.as_json()
+            if state != last:
+                yield f"data: {json.dumps(state)}\n\n"
+                last = state
+            if state["state"] in ("done", "error"):
+                return
+            if await request.is_disconnected():
+                return
+            await asyncio.sleep(0.1)
+
+    return StreamingResponse(stream(), media_type="text/event-stream",
+                             headers={"Cache-Control": "no-cache"})
+
+
+async def upload(request: Request):
+    """A raw file body named by ?name=FILE: a mesh, an audio file or a mapping JSON."""
+    library = library_of(request)
+    name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
+    if not name or name.startswith("."):
+        raise HTTPException(400, "upload needs ?name=FILE with a file name and suffix")
+    kind = kind_of(name)
+    limit = library.max_upload_bytes
+    declared = request.headers.get("content-length")
+    if declared and declared.isdigit() and int(declared) > limit:
+        raise HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
+    chunks, size = [], 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > limit:
+            raise HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
+        chunks.append(chunk)
+    data = b"".join(chunks)
+    if (why := sniff(name, data[:4096])) is not None:
+        raise HTTPException(415, f"{name}: {why}")
+    item = await asyncio.to_thread(library.add_upload, data, name, kind)
+    answer = {"kind": "song" if kind == "audio" else kind, "item": item.as_json()}
+    if kind == "mesh":
+        answer["job"] = item.job.as_json()
+    return JSONResponse(answer, status_code=201)
+
+
+async def gallery(request: Request):
+    """The initial gallery of a mesh for a song: {mesh, song, size} → {mappings}."""
+    body = await json_body(request)
+    if not isinstance(body, dict):
+        raise HTTPException(400, "expected a JSON object {mesh, song, size}")
+    item = ready_basis(request, str(body.get("mesh")))
+    song = song_of(request, str(body.get("song")))
+    size = gallery_size(body.get("size", DEFAULT_GALLERY))
+    items = await asyncio.to_thread(initial_gallery, item.basis, song.spectrogram, size)
+    return JSONResponse({"mappings": [m.to_json() for m in items]})
+
+
+async def breed_route(request: Request):
+    """Children of the selected mappings: {parents, size, seed} → {mappings}."""
+    body = await json_body(request)
+    if not isinstance(body, dict) or not isinstance(body.get("parents"), list):
+        raise HTTPException(400, "expected a JSON object {parents: [mappings], size, seed}")
+    size = gallery_size(body.get("size", DEFAULT_GALLERY))
+    seed = body.get("seed", 0)
+    if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**32:
+        raise HTTPException(400, "seed must be an integer from 0 to 2³² − 1")
+    if not body["parents"]:
+        raise HTTPException(400, "select at least one parent to breed")
+    parents = [Mapping.from_json(data, f"parent {index + 1}")
+               for index, data in enumerate(body["parents"])]
+    children = await asyncio.to_thread(breed, parents, size, seed)
+    return JSONResponse({"mappings": [m.to_json() for m in children]})
+
+
+async def get_mapping(request: Request):
+    item = library_of(request).mappings.get(request.path_params["id"])
+    if item is None:
+        raise HTTPException(404, f"no mapping with id '{request.path_params['id']}'")
+    return JSONResponse(item.data)
+
+
+async def save_mapping(request: Request):
+    body = await json_body(request)
+    name = os.path.basename(str(request.query_params.get("name", "mapping.json")))
+    item = library_of(request).add_mapping(body, name)
+    return JSONResponse(item.as_json(), status_code=201)
+
+
+async def api_missing(request: Request):
+    raise HTTPException(404, f"no API route {request.url.path}")
+
+
+async def no_front_end(request: Request):
+    return HTMLResponse("<!doctype html><title>eigendance</title><p>The web app is not built: "
+                        "run <code>make web</code> (npm ci + vite build).", status_code=503)
+
+
+# --- errors ---------------------------------------------------------------------------------------
+
+def error_response(status: int, message: str) -> JSONResponse:
+    return JSONResponse({"error": one_line(message)}, status_code=status)
+
+
+async def on_http_error(request: Request, problem: HTTPException):
+    return error_response(problem.status_code, str(problem.detail))
+
+
+async def on_input_error(request: Request, problem: InputError):
+    return error_response(problem.status, str(problem))
+
+
+async def on_failure(request: Request, problem: Exception):
+    """A failure of ours (an InternalError or a bug): 500 with one line of JSON."""
+    what = str(problem) if isinstance(problem, EigendanceError) else \
+        f"internal error ({type(problem).__name__}: {one_line(problem, 200)})"
+    return error_response(500, what)
+
+
+API_ROUTES = [
+    Route("/api/config", get_config),
+    Route("/api/library", get_library),
+    Route("/api/meshes/{id}", get_mesh),
+    Route("/api/meshes/{id}/basis.bin", get_basis),
+    Route("/api/songs/{id}/spectrogram.bin", get_spectrogram),
+    Route("/api/songs/{id}/audio", get_audio),
+    Route("/api/jobs/{id}", get_job),
+    Route("/api/jobs/{id}/events", job_events),
+    Route("/api/upload", upload, methods=["POST"]),
+    Route("/api/gallery", gallery, methods=["POST"]),
+    Route("/api/breed", breed_route, methods=["POST"]),
+    Route("/api/mappings", save_mapping, methods=["POST"]),
+    Route("/api/mappings/{id}", get_mapping),
+    Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
+]
+
+
+def create_app(library: Library) -> Starlette:
+    """The web app serving `library` (see `eigendance.server` for the routes)."""
+    static = static_folder()
+    front_end = Mount("/", StaticFiles(directory=static, html=True)) if static else \
+        Route("/", no_front_end)
+    app = Starlette(routes=[*API_ROUTES, front_end],
+                    exception_handlers={HTTPException: on_http_error, InputError: on_input_error,
+                                        Exception: on_failure})
     app.state.library = library
     return app

@@ -1,13 +1,14 @@
 """The server's library: meshes (with their basis jobs), songs (with spectrograms), mappings.
 
-Items get short random ids; files a person uploads are stored as ``<id><suffix>`` inside the
-library folder, so names from the network never become paths. Bases are computed by one worker
-thread through `HarmonicBasis.from_mesh` (and its on-disk cache); each job records its progress
-for the page (server-sent events).
+Items get short random ids; files a person uploads are stored as ``upload-<random><suffix>``
+inside the library folder, so names from the network never become paths. Bases are computed by
+one worker thread through `HarmonicBasis.from_mesh` (and its disk cache); each job records its
+progress for the page (server-sent events).
 """
 
 from __future__ import annotations
 
+import json
 import os
 import secrets
 import threading
@@ -15,11 +16,13 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
-from eigendance.errors import EigendanceError
-from eigendance.mesh import MESH_SUFFIXES
-
-AUDIO_SUFFIXES = (".wav", ".mp3", ".ogg", ".oga", ".opus", ".flac", ".m4a")
-MAPPING_SUFFIXES = (".json",)
+from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.files import check_readable, kind_of, suffix_of
+from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
+from eigendance.harmonic.mesh import load_mesh
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.server.binary import basis_bundle, spectrogram_bundle
 
 
 def new_id() -> str:
@@ -91,19 +94,6 @@ class MappingItem:
         return {"id": self.id, "name": self.name}
 
 
-def kind_of(name: str) -> str:
-    suffix = os.path.splitext(name)[1].lower()
-    if suffix in MESH_SUFFIXES:
-        return "mesh"
-    if suffix in AUDIO_SUFFIXES:
-        return "song"
-    if suffix in MAPPING_SUFFIXES:
-        return "mapping"
-    raise EigendanceError(f"{os.path.basename(name)}: unknown file type '{suffix}' (meshes: "
-                          f"{' '.join(MESH_SUFFIXES)}; audio: {' '.join(AUDIO_SUFFIXES)}; "
-                          "mappings: .json)")
-
-
 class Library:
     def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
                  spectrogram_options: dict | None = None):
@@ -125,17 +115,29 @@ class Library:
         """Register a file by its kind (suffix). Meshes start a basis job; songs are decoded."""
         name = name or os.path.basename(path)
         kind = kind_of(name)
-        if not os.path.isfile(path):
-            raise EigendanceError(f"{path}: no such file")
+        check_readable(path)
         if kind == "mesh":
             return self.add_mesh(path, name, k)
-        if kind == "song":
+        if kind == "audio":
             return self.add_song(path, name)
         return self.add_mapping_file(path, name)
 
-    def add_mesh(self, path: str, name: str, k: int | None = None) -> MeshItem:
-        from eigendance.mesh import load_mesh
+    def add_upload(self, data: bytes, name: str, kind: str):
+        """Store an uploaded file under a name of our own and register it as `kind`."""
+        stored = os.path.join(self.folder, f"upload-{secrets.token_hex(6)}{suffix_of(name)}")
+        with open(stored, "wb") as file:
+            file.write(data)
+        try:
+            if kind == "mesh":
+                return self.add_mesh(stored, name)
+            if kind == "audio":
+                return self.add_song(stored, name)
+            return self.add_mapping_file(stored, name)
+        except BaseException:
+            os.unlink(stored)
+            raise
 
+    def add_mesh(self, path: str, name: str, k: int | None = None) -> MeshItem:
         mesh = load_mesh(path)  # raises EigendanceError on anything unreadable
         if mesh.non_manifold_edge_count():
             laplacian = "robust"
@@ -152,12 +154,8 @@ class Library:
         return item
 
     def _solve(self, item: MeshItem, mesh, laplacian: str) -> None:
-        from eigendance import cache
-        from eigendance.harmonics import HarmonicBasis
-        from eigendance.server.binary import basis_bundle
-
         job = item.job
-        job.cached = os.path.exists(cache.path_of(cache.key(mesh, item.k, laplacian)))
+        job.cached = os.path.isfile(basis_cache().path(basis_key(mesh, item.k, laplacian)))
         job.update(state="running")
         for listener in self.progress_listeners:
             listener(job)
@@ -175,20 +173,18 @@ class Library:
         except EigendanceError as error:
             job.update(state="error", message=str(error))
         except Exception as error:  # noqa: BLE001 - reported to the page, never crashes the server
-            job.update(state="error", message=f"{item.name}: basis failed ({error})")
+            job.update(state="error", message=f"{item.name}: the basis failed (internal error: "
+                                              f"{type(error).__name__}: {one_line(error, 200)})")
         for listener in self.progress_listeners:
             listener(job)
 
     def add_song(self, path: str, name: str) -> SongItem:
-        from eigendance.audio import Spectrogram
-        from eigendance.server.binary import spectrogram_bundle
-
         try:
             spectrogram = Spectrogram.from_file(path, **self.spectrogram_options)
         except EigendanceError:
             raise
         except Exception as error:  # noqa: BLE001 - decoders raise many types
-            raise EigendanceError(f"{name}: cannot decode the audio ({error})") from None
+            raise InputError(f"{name}: cannot decode the audio ({one_line(error)})") from None
         item = SongItem(new_id(), name, path, spectrogram)
         item.bundle = spectrogram_bundle(spectrogram, name)
         with self.lock:
@@ -196,18 +192,14 @@ class Library:
         return item
 
     def add_mapping_file(self, path: str, name: str) -> MappingItem:
-        import json
-
         try:
             with open(path, encoding="utf-8") as file:
                 data = json.load(file)
         except (OSError, ValueError) as error:
-            raise EigendanceError(f"{name}: not a JSON mapping ({error})") from None
+            raise InputError(f"{name}: not a JSON mapping ({one_line(error)})") from None
         return self.add_mapping(data, name)
 
     def add_mapping(self, data, name: str) -> MappingItem:
-        from eigendance.mapping import Mapping
-
         mapping = Mapping.from_json(data, name)  # EigendanceError naming the bad field
         item = MappingItem(new_id(), name, mapping.to_json())
         with self.lock:

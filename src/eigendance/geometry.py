@@ -1,0 +1,60 @@
+"""Geometry shared by both pipelines: vertex welding, vertex normals, bounding-box diagonal."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Merge coincident vertices, keeping the order of their first occurrence.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float array.
+    tolerance : 0 merges exactly equal vertices; t > 0 merges vertices whose coordinates
+        round to the same multiple of t·(bounding-box diagonal) (seams split by exporters).
+
+    Returns
+    -------
+    first : (u,) int64, the input index of each kept vertex, ascending: kept = vertices[first].
+    inverse : (n,) int64, the kept index of each input vertex: vertices ≈ kept[inverse].
+
+    Example
+    -------
+    >>> first, inverse = weld(np.array([[0., 0, 0], [1, 0, 0], [0, 0, 0]]))
+    >>> first.tolist(), inverse.tolist()
+    ([0, 1], [0, 1, 0])
+    """
+    vertices = np.asarray(vertices, dtype=np.float64)
+    keys = vertices
+    if tolerance > 0:
+        step = tolerance * (bounding_box_diagonal(vertices) or 1.0)
+        keys = np.round(vertices / step).astype(np.int64)
+    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    order = np.argsort(first)  # unique rows come sorted by value: put them in input order
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    return first[order].astype(np.int64), rank[inverse.reshape(-1)].astype(np.int64)
+
+
+def bounding_box_diagonal(vertices: np.ndarray) -> float:
+    """Length of the diagonal of the axis-aligned bounding box of (n, 3) points."""
+    vertices = np.asarray(vertices, dtype=np.float64)
+    return float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
+
+
+def face_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """(m, 3) normals of the triangles, of length twice their area (not unit)."""
+    corners = np.asarray(vertices, dtype=np.float64)[np.asarray(faces, dtype=np.int64)]
+    return np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+
+
+def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """Area-weighted unit vertex normals (n, 3); zero for unreferenced vertices."""
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64)
+    weighted = face_normals(vertices, faces)
+    normals = np.stack([np.bincount(faces.ravel(), np.repeat(weighted[:, axis], 3),
+                                    minlength=len(vertices)) for axis in range(3)], axis=1)
+    length = np.linalg.norm(normals, axis=1, keepdims=True)
+    return normals / np.where(length > 0, length, 1)

@@ -1,0 +1,195 @@
+"""HarmonicBasis: the manifold harmonics of a mesh (docs/design.md#basis).
+
+U = [u_0 … u_{k-1}] solves L u = λ M u with Uᵀ M U = I. The coefficients X̃ = Uᵀ M X (k×3) and
+the remainder D = X − U X̃ give filtered positions X_φ = X + U((φ − 1) ⊙ X̃); φ ≡ 1 returns X.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from eigendance.errors import InputError
+from eigendance.files import atomic_save_npz, load_npz
+from eigendance.geometry import bounding_box_diagonal
+from eigendance.harmonic.cache import DiskCache
+from eigendance.harmonic.deform import Deformer
+from eigendance.harmonic.eigensolver import SOLVER_VERSION, solve
+from eigendance.harmonic.laplacian import laplacian as build_laplacian
+from eigendance.harmonic.mesh import Mesh, load_mesh
+
+FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
+               "coefficients", "residual", "laplacian")
+
+
+@dataclass
+class HarmonicBasis:
+    """The first k manifold harmonics of a normalised mesh, with everything the filter needs.
+
+    Arrays follow the basis file (docs/design.md#basis-file): vertices (n,3) normalised, faces
+    (m,3), center (3,), scale (), mass (n,) vertex areas, eigenvalues (k,) ascending in
+    (length)^-2, eigenvectors (n,k), coefficients (k,3), residual (n,3), laplacian "cotan" |
+    "robust". Original coordinates are ``vertices * scale + center``.
+
+    Example
+    -------
+    >>> import trimesh
+    >>> sphere = trimesh.creation.icosphere(2)
+    >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices, sphere.faces), k=9,
+    ...                                 cache=False)
+    >>> np.round(basis.eigenvalues[:4], 1).tolist()   # a unit sphere: l(l+1) = 0, 2, 2, 2
+    [0.0, 2.0, 2.0, 2.0]
+    >>> bool(np.allclose(basis.filter_positions(np.ones(9)), basis.vertices))   # φ ≡ 1
+    True
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    center: np.ndarray
+    scale: float
+    mass: np.ndarray
+    eigenvalues: np.ndarray
+    eigenvectors: np.ndarray
+    coefficients: np.ndarray
+    residual: np.ndarray
+    laplacian: str = "cotan"
+    seconds: float = 0.0  # time the eigen-solve took (not saved; 0 when it came from the cache)
+
+    @property
+    def k(self) -> int:
+        return len(self.eigenvalues)
+
+    @property
+    def n(self) -> int:
+        return len(self.vertices)
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """Mesh frequency √λ_ν of each harmonic (length^-1)."""
+        return np.sqrt(np.maximum(self.eigenvalues, 0))
+
+    @classmethod
+    def from_arrays(cls, mesh: Mesh, eigenvalues, eigenvectors, mass, laplacian="cotan",
+                    seconds=0.0) -> HarmonicBasis:
+        """The basis of `mesh` from a solve's eigenpairs: X̃ = Uᵀ M X, D = X − U X̃."""
+        coefficients = eigenvectors.T @ (mass[:, None] * mesh.vertices)
+        residual = mesh.vertices - eigenvectors @ coefficients
+        return cls(mesh.vertices, mesh.faces, mesh.center, mesh.scale, mass, eigenvalues,
+                   eigenvectors, coefficients, residual, laplacian, seconds)
+
+    @classmethod
+    def from_mesh(cls, mesh: Mesh | str | os.PathLike, k: int, laplacian: str = "cotan",
+                  solver: str = "bands", cache: bool = True, progress=None) -> HarmonicBasis:
+        """Compute (or fetch from the disk cache) the first k harmonics of a mesh or mesh file.
+
+        Parameters
+        ----------
+        mesh : a `Mesh` or the path of a mesh file (OBJ, PLY, OFF, STL, glTF/GLB).
+        k : number of harmonics, 1 ≤ k < n.
+        laplacian : "cotan" (needs a manifold mesh) or "robust".
+        solver : "bands" (spectrum slicing) or "eigsh" (the naive baseline).
+        cache : read and write the disk cache (`basis_key` names the entry).
+        progress : optional callable(done) told how many eigenpairs are accepted so far.
+
+        Returns
+        -------
+        HarmonicBasis with k harmonics, verified: L u = λ M u and Uᵀ M U = I.
+        """
+        if not isinstance(mesh, Mesh):
+            mesh = load_mesh(mesh)
+        if laplacian == "cotan" and (count := mesh.non_manifold_edge_count()):
+            raise InputError(f"{mesh.name}: {count} non-manifold edges (shared by more than two "
+                             "triangles); the cotangent Laplacian needs a manifold mesh",
+                             remedy={"laplacian": "robust"})
+        timing = {"seconds": 0.0}
+
+        def solved() -> dict[str, np.ndarray]:
+            stiffness, mass = build_laplacian(mesh.vertices, mesh.faces, laplacian)
+            start = time.perf_counter()
+            eigenvalues, eigenvectors = solve(stiffness, mass, k, solver, progress)
+            timing["seconds"] = time.perf_counter() - start
+            return {"eigenvalues": eigenvalues, "eigenvectors": eigenvectors, "mass": mass}
+
+        if cache:
+            arrays = basis_cache().get(basis_key(mesh, k, laplacian, solver), solved)
+        else:
+            arrays = solved()
+        eigenvalues, eigenvectors, mass = (arrays[name] for name in
+                                           ("eigenvalues", "eigenvectors", "mass"))
+        if eigenvectors.shape != (mesh.n, k) or eigenvalues.shape != (k,) or \
+                mass.shape != (mesh.n,):
+            raise InputError(f"{mesh.name}: a cached basis does not fit the mesh")
+        if progress is not None:
+            progress(k)
+        return cls.from_arrays(mesh, eigenvalues, eigenvectors, mass, laplacian,
+                               timing["seconds"])
+
+    @property
+    def diagonal(self) -> float:
+        """Bounding-box diagonal of the normalised mesh (≤ 2√3)."""
+        return bounding_box_diagonal(self.vertices)
+
+    def displacements(self, phi) -> np.ndarray:
+        """U((φ − 1) ⊙ X̃) for filters (S, k) → (S, n, 3), normalised units."""
+        return Deformer(self.eigenvectors, self.coefficients)(phi)
+
+    def deformer(self, original: bool = False) -> Deformer:
+        """The deformation kernel for this basis, in normalised or original coordinates."""
+        if original:
+            return Deformer(self.eigenvectors, self.coefficients * self.scale,
+                            self.to_original(self.vertices))
+        return Deformer(self.eigenvectors, self.coefficients, self.vertices)
+
+    def filter_positions(self, phi) -> np.ndarray:
+        """Filtered normalised positions X + U((φ − 1) ⊙ X̃) for φ of shape (..., k) → (..., n, 3).
+
+        All leading axes (gallery items, frames) go through a single matrix product.
+        """
+        phi = np.asarray(phi, dtype=np.float64)
+        if phi.shape[-1:] != (self.k,):
+            raise InputError(f"the filter has {phi.shape[-1:]} values per item; "
+                             f"the basis has k = {self.k}")
+        batch = phi.shape[:-1]
+        return self.deformer()(phi.reshape(-1, self.k)).reshape(*batch, self.n, 3)
+
+    def to_original(self, positions: np.ndarray) -> np.ndarray:
+        """Map normalised positions back to the mesh file's coordinates."""
+        return positions * self.scale + self.center
+
+    def save(self, path: str | os.PathLike) -> None:
+        """Write the basis file atomically (a temporary file, then a rename)."""
+        atomic_save_npz(path, **{name: getattr(self, name) for name in FORMAT_KEYS})
+
+    @classmethod
+    def load(cls, path: str | os.PathLike) -> HarmonicBasis:
+        """Read a basis file; a missing key or inconsistent shape raises InputError."""
+        data = load_npz(path, FORMAT_KEYS)
+        basis = cls(**{name: data[name] for name in FORMAT_KEYS})
+        basis.scale = float(basis.scale)
+        basis.laplacian = str(basis.laplacian)
+        n, k = basis.eigenvectors.shape
+        if (basis.vertices.shape != (n, 3) or basis.eigenvalues.shape != (k,)
+                or basis.coefficients.shape != (k, 3) or basis.mass.shape != (n,)):
+            raise InputError(f"{os.fspath(path)}: inconsistent array shapes in basis file")
+        return basis
+
+
+def basis_cache() -> DiskCache:
+    """The disk cache of eigen-solves (folder `bases` of the cache folder)."""
+    return DiskCache("bases")
+
+
+def basis_key(mesh: Mesh, k: int, laplacian: str, solver: str = "bands") -> str:
+    """The cache key of a solve: everything its eigenpairs depend on.
+
+    The normalised geometry's SHA-256, k, the Laplacian, the solver and its version.
+    """
+    digest = hashlib.sha256()
+    digest.update(np.ascontiguousarray(mesh.vertices, dtype=np.float64).tobytes())
+    digest.update(np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes())
+    return (f"eigendance.basis mesh={digest.hexdigest()} k={k} laplacian={laplacian} "
+            f"solver={solver} version={SOLVER_VERSION}")

@@ -1,0 +1,117 @@
+"""A content-addressed disk cache of named arrays (docs/design.md#cache).
+
+`DiskCache.get(key, fetch)` returns the arrays stored under `key`, or computes them with
+`fetch()` and stores them (the shape of trimesh's `DiskCache.get`). The cache knows nothing of
+its clients: a key is any string that names everything the arrays depend on, and an entry is an
+.npz file holding the arrays, the key itself and a SHA-256 checksum of the arrays. An entry that
+cannot be read, that was stored under another key, or whose arrays do not match its checksum is
+discarded and computed again; a cache folder that cannot be written only costs the speed-up.
+
+Folder: $EIGENDANCE_CACHE_DIR, else the platform's user cache folder.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import time
+import zipfile
+from collections.abc import Callable
+
+import numpy as np
+import platformdirs
+
+from eigendance.errors import InputError
+from eigendance.files import atomic_save_npz
+
+KEY, CHECKSUM = "__key__", "__checksum__"
+STALE_SECONDS = 3600  # temporary files older than this were left by a killed process
+
+
+def cache_folder() -> str:
+    """$EIGENDANCE_CACHE_DIR, else the user cache folder of the platform."""
+    return os.environ.get("EIGENDANCE_CACHE_DIR") or platformdirs.user_cache_dir("eigendance")
+
+
+def checksum(arrays: dict[str, np.ndarray]) -> str:
+    """SHA-256 over the names, dtypes, shapes and bytes of the arrays, in name order."""
+    digest = hashlib.sha256()
+    for name in sorted(arrays):
+        array = np.ascontiguousarray(arrays[name])
+        digest.update(f"{name}:{array.dtype.str}:{array.shape};".encode())
+        digest.update(array.reshape(-1).view(np.uint8))
+    return digest.hexdigest()
+
+
+class DiskCache:
+    """Arrays stored under string keys in `folder` (default: `cache_folder()/subfolder`)."""
+
+    def __init__(self, subfolder: str = "arrays", folder: str | None = None):
+        self.folder = folder or os.path.join(cache_folder(), subfolder)
+
+    def path(self, key: str) -> str:
+        """The file of the entry for `key`."""
+        return os.path.join(self.folder, hashlib.sha256(key.encode()).hexdigest() + ".npz")
+
+    def __contains__(self, key: str) -> bool:
+        return self.load(key) is not None
+
+    def get(self, key: str, fetch: Callable[[], dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+        """The arrays stored under `key`, or `fetch()`'s, stored for the next call."""
+        found = self.load(key)
+        if found is not None:
+            return found
+        arrays = fetch()
+        self.store(key, arrays)
+        return arrays
+
+    def load(self, key: str) -> dict[str, np.ndarray] | None:
+        """The arrays of a valid entry for `key`, or None (an invalid entry is removed)."""
+        path = self.path(key)
+        if not os.path.lexists(path):
+            return None
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                arrays = {name: data[name] for name in data.files}
+            stored_key, stored_sum = str(arrays.pop(KEY)), str(arrays.pop(CHECKSUM))
+            if stored_key == key and stored_sum == checksum(arrays):
+                return arrays
+        except (OSError, ValueError, KeyError, zipfile.BadZipFile, EOFError):
+            pass
+        self._discard(path)
+        return None
+
+    def store(self, key: str, arrays: dict[str, np.ndarray]) -> None:
+        """Write an entry atomically; an unwritable cache folder is ignored."""
+        self._sweep()
+        try:
+            atomic_save_npz(self.path(key), **arrays, **{KEY: np.array(key),
+                                                         CHECKSUM: np.array(checksum(arrays))})
+        except InputError:
+            pass  # a read-only or full cache folder must not fail the computation
+
+    def _discard(self, path: str) -> None:
+        try:
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path)
+            else:
+                os.unlink(path)
+        except OSError:
+            pass
+
+    def _sweep(self) -> None:
+        """Remove temporary files that a killed process left behind."""
+        try:
+            names = os.listdir(self.folder)
+        except OSError:
+            return
+        now = time.time()
+        for name in names:
+            if name.startswith(".tmp-") and name.endswith(".part"):
+                path = os.path.join(self.folder, name)
+                try:
+                    if now - os.path.getmtime(path) > STALE_SECONDS:
+                        os.unlink(path)
+                except OSError:
+                    pass

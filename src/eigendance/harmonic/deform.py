@@ -1,0 +1,62 @@
+"""The deformation kernel: X_φ = X + U((φ − 1) ⊙ X̃) for batches of filters (docs/design.md#filter).
+
+Every Python path that moves a mesh by its harmonics goes through `Deformer`: the basis's
+`filter_positions`, animation files, gallery calibration and exports. The browser runs the same
+formula on the GPU (web/src/deform.ts).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+class Deformer:
+    """rest + U((φ − 1) ⊙ X̃) for filters φ, one matrix product per batch.
+
+    Parameters
+    ----------
+    eigenvectors : (n, k) U.
+    coefficients : (k, 3) X̃ = Uᵀ M X, in the units the positions should have.
+    rest : (n, 3) positions for φ ≡ 1 (X, in the same units), or None for displacements only.
+
+    Example
+    -------
+    >>> U = np.eye(3)[:, :2]; X = np.arange(9.0).reshape(3, 3)
+    >>> Deformer(U, U.T @ X, X)(np.array([[1.0, 1.0]]))[0].tolist() == X.tolist()
+    True
+    """
+
+    def __init__(self, eigenvectors: np.ndarray, coefficients: np.ndarray,
+                 rest: np.ndarray | None = None):
+        self.eigenvectors = eigenvectors
+        self.coefficients_rows = np.ascontiguousarray(coefficients.T)  # (3, k)
+        self.rest_rows = None if rest is None else np.ascontiguousarray(np.asarray(rest).T)
+
+    @property
+    def n(self) -> int:
+        return self.eigenvectors.shape[0]
+
+    @property
+    def k(self) -> int:
+        return self.eigenvectors.shape[1]
+
+    def __call__(self, phi: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+        """phi (C, k) → positions (C, n, 3), written into `out` (any float dtype) if given.
+
+        Computed as Wᵀ·Uᵀ (3C × n; Uᵀ is a view, BLAS transposes): each row is one coordinate
+        of one filter, so the scatter into (C, n, 3) reads whole rows (faster than U·W's
+        (n, 3C) layout; measured in benchmarks/bench_animate.py).
+        """
+        phi = np.atleast_2d(np.asarray(phi, dtype=np.float64))
+        count = len(phi)
+        weights = (phi - 1.0)[:, None, :] * self.coefficients_rows[None]  # (C, 3, k)
+        moved = (weights.reshape(3 * count, self.k) @ self.eigenvectors.T).reshape(count, 3, -1)
+        if out is None:
+            out = np.empty((count, self.n, 3))
+        for axis in range(3):  # contiguous reads, stride-3 writes: faster than one transpose
+            if self.rest_rows is None:
+                np.copyto(out[:, :, axis], moved[:, axis, :], casting="unsafe")
+            else:
+                np.add(moved[:, axis, :], self.rest_rows[axis], out=out[:, :, axis],
+                       casting="unsafe")
+        return out

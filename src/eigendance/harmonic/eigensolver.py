@@ -1,0 +1,555 @@
+"""Eigen-solvers for L u = λ M u with M diagonal (docs/design.md#eigensolver).
+
+`solve_eigsh` is the naive one-shot shift-invert `scipy.sparse.linalg.eigsh`, the baseline of
+every benchmark. `solve_bands` (the default) slices the spectrum into bands solved one by one.
+Both return (eigenvalues (k,) ascending, eigenvectors (n, k)) with Uᵀ M U = I.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import multiprocessing
+import os
+import signal
+import sys
+import threading
+import time
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
+
+import numpy as np
+import qdldl
+import scipy.linalg
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+from scipy.sparse.csgraph import connected_components
+from threadpoolctl import threadpool_limits
+
+from eigendance.errors import InputError, InternalError
+from eigendance.harmonic.lanczos import lanczos_extreme
+
+SOLVERS = ("bands", "eigsh")
+SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
+# Shift below the spectrum (λ_0 = 0) so that L - σM is non-singular. Units of λ: a normalised
+# mesh's first non-zero eigenvalue is of order 1.
+BASELINE_SHIFT = -1e-2
+
+
+def check_request(n: int, k: int) -> None:
+    if k < 1:
+        raise InputError(f"k must be at least 1, got {k}")
+    if k >= n:
+        raise InputError(f"k = {k} harmonics need a mesh of more than {k} vertices; "
+                         f"this one has {n}")
+
+
+def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
+                progress=None) -> tuple[np.ndarray, np.ndarray]:
+    """Naive baseline: all k pairs in one ARPACK shift-invert run around σ = BASELINE_SHIFT."""
+    n = stiffness.shape[0]
+    check_request(n, k)
+    if n <= 500:
+        return _dense(stiffness, mass, k)
+    values, vectors = sla.eigsh(sp.csc_matrix(stiffness), k=k, M=sp.diags(mass).tocsc(),
+                                sigma=BASELINE_SHIFT, which="LM")
+    if progress is not None:
+        progress(k)
+    return _sorted_m_normalised(values, vectors, mass)
+
+
+def _dense(stiffness, mass, k):
+    """Small problems: dense symmetric solve of M^-1/2 L M^-1/2."""
+    root = 1 / np.sqrt(mass)
+    values, vectors = np.linalg.eigh(root[:, None] * stiffness.toarray() * root[None, :])
+    return values[:k], root[:, None] * vectors[:, :k]
+
+
+def _sorted_m_normalised(values, vectors, mass):
+    order = np.argsort(values)
+    values, vectors = values[order], vectors[:, order]
+    vectors = vectors / np.sqrt(np.einsum("ij,i,ij->j", vectors, mass, vectors))
+    return values, vectors
+
+
+# --- Spectrum slicing -------------------------------------------------------------------------
+
+PER_BAND = 60           # eigenpairs per band: fastest for bunny k = 1070 (benchmarks/)
+OVERLAP = 0.10          # fraction of a band's width shared with its neighbours
+RESIDUAL_TOLERANCE = 1e-7  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, checked for every accepted pair
+MAX_REPAIRS = 8         # searches for missed copies of multiple eigenvalues before giving up
+
+
+@dataclass(eq=False)  # bands are told apart by identity
+class Band:
+    """One shift-invert solve: every eigenvalue with |λ − σ| < radius is in `eigenvalues`.
+
+    below: Sylvester inertia of L − σM, the number of eigenvalues < σ (None if unknown).
+    residuals: ‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, computed where the band was solved.
+    """
+
+    shift: float
+    radius: float
+    eigenvalues: np.ndarray
+    eigenvectors: np.ndarray
+    below: int | None
+    residuals: np.ndarray
+
+    @property
+    def lower(self) -> float:
+        return self.shift - self.radius
+
+    @property
+    def upper(self) -> float:
+        return self.shift + self.radius
+
+
+class _ShiftInvert:
+    """(A − σI)^-1 for A = M^-½ L M^-½, via an LDLᵀ (qdldl) or LU (SuperLU) factorisation.
+
+    L − σM has the same sparsity for every σ, so each process keeps its last LDLᵀ and only
+    redoes the numeric part (half the time); the operator it belonged to stops working.
+    """
+
+    _last = None  # per process: (pattern key, qdldl.Solver, the _ShiftInvert using it)
+
+    def __init__(self, stiffness, mass, shift):
+        self.root = np.sqrt(mass)
+        shifted = (stiffness - shift * sp.diags(mass)).tocsc()
+        self.below = None
+        try:
+            factor = self._factorise(shifted)
+            diagonal = factor.factors()[1]
+            pivots_usable = np.all(np.isfinite(diagonal)) and np.all(diagonal != 0)
+        except Exception:  # zero pivot or missing wheel
+            pivots_usable = False
+        if pivots_usable:
+            # P(L − σM)Pᵀ = L D Lᵀ is a congruence: D's negatives count eigenvalues < σ.
+            self.below = int((diagonal < 0).sum())
+            self._solve = factor.solve
+        else:  # σ (nearly) on an eigenvalue: pivoting LU is slower but safe
+            self._solve = sla.splu(shifted, permc_spec="COLAMD").solve
+
+    def _factorise(self, shifted):
+        key = (shifted.shape, hash(shifted.indptr.tobytes()), hash(shifted.indices.tobytes()))
+        if _ShiftInvert._last is not None and _ShiftInvert._last[0] == key:
+            _, solver, previous = _ShiftInvert._last
+            previous._solve = previous._reused
+            solver.update(shifted)
+        else:
+            solver = qdldl.Solver(shifted)
+        _ShiftInvert._last = (key, solver, self)
+        return solver
+
+    def _reused(self, x):
+        raise RuntimeError("this shift's factorisation was reused for a later shift")
+
+    def __call__(self, x):
+        x = np.asarray(x).reshape(-1)
+        return self.root * self._solve(self.root * x)
+
+
+def _solve_band(stiffness, mass, shift: float, count: int, null: np.ndarray) -> Band:
+    """The `count` eigenpairs nearest `shift` besides the null space, from (A − σI)^-1.
+
+    Lanczos (or ARPACK's, if that has not converged in 3·count + 50 steps) runs orthogonal to
+    `null` (rows: L's kernel, see `null_space`), whose pairs (0, u) join the band when its
+    window reaches λ = 0: a Krylov space would find one of them only.
+    """
+    n = stiffness.shape[0]
+    operator = _ShiftInvert(stiffness, mass, shift)
+    known = null * operator.root  # y = M^½ u: orthonormal rows
+    found = lanczos_extreme(operator, n, count, deflate=known)
+    if found is None:
+        def deflated(x):
+            x = x - (known @ x) @ known
+            y = operator(x)
+            return y - (known @ y) @ known
+
+        linear = sla.LinearOperator((n, n), matvec=deflated, dtype=np.float64)
+        found = sla.eigsh(linear, k=count, ncv=min(n - 1, 2 * count + 1), which="LM", tol=1e-13)
+    theta, vectors = found
+    eigenvalues = shift + 1 / theta
+    radius = _trusted_radius(np.abs(eigenvalues - shift))
+    rows = vectors.T / operator.root
+    if abs(shift) < radius:
+        eigenvalues = np.concatenate([np.zeros(len(null)), eigenvalues])
+        rows = np.concatenate([null, rows])
+    return _band(stiffness, mass, shift, radius, eigenvalues, rows, operator.below)
+
+
+def _trusted_radius(distance: np.ndarray) -> float:
+    """Radius within which every eigenvalue was found, from the returned distances |λ − σ|.
+
+    Lanczos finds the nearest ones first, so all up to the farthest returned, except copies of a
+    multiple eigenvalue that its Krylov space did not see. The inertia counts catch those
+    inside; the farthest pair may be one copy of a multiple eigenvalue whose other copies lie
+    unseen at the same distance, so it is left out (with any returned copies of it).
+    """
+    far = distance.max()
+    edge = np.isclose(distance, far, rtol=1e-8, atol=0)
+    if edge.all():
+        return float(far * (1 + 1e-9))
+    return float((distance[~edge].max() + far) / 2)
+
+
+def _band(stiffness, mass, shift, radius, eigenvalues, rows, below) -> Band:
+    """A Band from unsorted pairs (eigenvectors as rows), with pairs of poor residual refined."""
+    order = np.argsort(eigenvalues, kind="stable")
+    eigenvalues, vectors = eigenvalues[order], _columns(rows[order])
+    accuracy = residuals(stiffness, mass, eigenvalues, vectors)
+    poor = accuracy > RESIDUAL_TOLERANCE / 100
+    if poor.any():
+        eigenvalues[poor], vectors[:, poor] = _refine(stiffness, mass, vectors[:, poor])
+        accuracy[poor] = residuals(stiffness, mass, eigenvalues[poor], vectors[:, poor])
+    return Band(shift, radius, eigenvalues, vectors, below, accuracy)
+
+
+def _refine(stiffness, mass, vectors):
+    """Sharper eigenpairs from approximate low eigenvectors (those just above the null space).
+
+    A pair found from a far shift σ has ‖Lu − λMu‖ ≈ tol·λ_max/|θ|, relative to max(λ,1): up
+    to 1e-7 for λ ≈ 0. One inverse-iteration step at BASELINE_SHIFT (the error shrinks by
+    |λ − σ₀| / |λ_j − σ₀| along every other eigenvector j) and a Rayleigh–Ritz fix that.
+    """
+    operator = _ShiftInvert(stiffness, mass, BASELINE_SHIFT)
+    refined = np.column_stack([operator(column) for column in (vectors * operator.root[:, None]).T])
+    refined /= operator.root[:, None]
+    gram = refined.T @ (mass[:, None] * refined)
+    energy = refined.T @ (stiffness @ refined)
+    values, mixing = scipy.linalg.eigh((energy + energy.T) / 2, (gram + gram.T) / 2)
+    return values, refined @ mixing
+
+
+def _complete_band(stiffness, mass, band: Band, missing: int) -> Band:
+    """`band` plus the copies of multiple eigenvalues it missed inside its window.
+
+    Lanczos again, kept orthogonal to the band's eigenvectors: the deflated operator's largest
+    |θ| are then the missing copies (and, beyond the window, eigenvalues nobody asked for).
+    """
+    n = stiffness.shape[0]
+    operator = _ShiftInvert(stiffness, mass, band.shift)
+    known = band.eigenvectors.T * operator.root  # y = M^½ u: orthonormal rows
+    # The copies may sit next to eigenvalues just outside the window: allow a long run.
+    found = lanczos_extreme(operator, n, missing + 4, deflate=known, seed=len(known),
+                            max_steps=3 * missing + 300)
+    if found is None:
+        return band
+    theta, vectors = found
+    eigenvalues = band.shift + 1 / theta
+    inside = np.abs(eigenvalues - band.shift) < band.radius
+    return _band(stiffness, mass, band.shift, band.radius,
+                 np.concatenate([band.eigenvalues, eigenvalues[inside]]),
+                 np.concatenate([band.eigenvectors.T, vectors.T[inside] / operator.root]),
+                 band.below)
+
+
+def null_space(stiffness, mass, most: int) -> np.ndarray:
+    """L's kernel as M-orthonormal rows (p, n), at most `most` of them.
+
+    The constant on each connected component of the graph of L's non-zero weights:
+    u_c = 1_c / √area_c, and L u_c = 0 because every row of L sums to zero.
+    """
+    graph = sp.csr_matrix(stiffness, copy=True)
+    graph.eliminate_zeros()
+    count, labels = connected_components(graph, directed=False)
+    count = min(count, most)
+    rows = np.zeros((count, len(mass)))
+    inside = labels < count
+    rows[labels[inside], np.flatnonzero(inside)] = 1
+    return rows / np.sqrt(rows @ mass)[:, None]
+
+
+def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
+    """‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, in column blocks to bound the memory."""
+    result = np.empty(len(eigenvalues))
+    for start in range(0, len(eigenvalues), 256):
+        block, value = eigenvectors[:, start:start + 256], eigenvalues[start:start + 256]
+        weighted = mass[:, None] * block
+        residual = np.linalg.norm(stiffness @ block - weighted * value, axis=0)
+        scale = np.maximum(np.abs(value), 1) * np.linalg.norm(weighted, axis=0)
+        result[start:start + 256] = residual / scale
+    return result
+
+
+def _band_worker(arguments):
+    with threadpool_limits(1):  # two band workers on two cores, one BLAS thread each
+        return _solve_band(*arguments)
+
+
+def _stitch(bands: list[Band]):
+    """Join bands sorted by shift into one spectrum without gaps or duplicates.
+
+    Between neighbours the cut goes through the widest gap of the overlap of their trusted
+    windows, so a cluster of (near-)equal eigenvalues always comes from a single band.
+    Returns (pieces, gap): pieces = [(band, mask of its accepted pairs)] in ascending order,
+    gap = (a, b), the first interval no band covers, or None.
+    """
+    if bands[0].lower >= BASELINE_SHIFT:  # the lowest window must reach below λ_0 = 0
+        return [], (BASELINE_SHIFT, bands[0].lower)
+    pieces = []
+    cut = -np.inf
+    for band, following in zip(bands, [*bands[1:], None], strict=True):
+        upper, gap = band.upper, None
+        if following is not None and following.lower >= band.upper:
+            gap = (band.upper, following.lower)
+        elif following is not None:
+            start = max(following.lower, cut)
+            inside = band.eigenvalues[(band.eigenvalues > start) & (band.eigenvalues < upper)]
+            points = np.concatenate([[start], inside, [upper]])
+            widest = int(np.argmax(np.diff(points)))
+            upper = (points[widest] + points[widest + 1]) / 2
+        pieces.append((band, (band.eigenvalues > cut) & (band.eigenvalues < upper)))
+        cut = upper
+        if gap is not None:
+            return pieces, gap
+    return pieces, None
+
+
+def _band_size(k: int, per_band: int, workers: int) -> int:
+    """Pairs per band near `per_band` such that the bands fill whole rounds of `workers`.
+
+    The first band holds ≈ count pairs, each next one (1 − OVERLAP)·count new ones; a round
+    with an idle worker costs as much as a full one, so the size grows until it saves a round.
+    """
+    def rounds(count):
+        bands = 1 + max(0, int(np.ceil((k - count) / ((1 - OVERLAP) * count))))
+        return int(np.ceil(bands / workers))
+
+    sizes = range(per_band, int(1.25 * per_band) + 1)
+    return min(sizes, key=lambda count: (rounds(count / 1.05), count))  # 5% margin
+
+
+def _next_shifts(pieces, gap, k: int, count: int, workers: int, area: float) -> list[float]:
+    """Shifts of the next round: the gap's middle, or bands above the pairs found so far.
+
+    Planned in index space: N(λ), the number of eigenvalues below λ (`_counting`), places each
+    window of `count` pairs so that it shares OVERLAP·count pairs with its lower neighbour; the
+    last one reaches pair k with a small margin.
+    """
+    if gap is not None:
+        return [(gap[0] + gap[1]) / 2]
+    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces]) if pieces else []
+    counting = _counting(np.asarray(values), area)
+    centres = []
+    overlap = OVERLAP * count
+    if not pieces:
+        # First band at pair ≈ 0.4·count: its window reaches below λ_0 = 0 and up to pair count.
+        # Weyl's law alone is rougher than a fit: the next window overlaps it twice as much.
+        centres, top, overlap = [0.4 * count], count, 2 * overlap
+    else:
+        top = len(values)
+    while len(centres) < workers and top < k + 0.05 * count:
+        centres.append(top - overlap + count / 2)
+        top += count - overlap
+        overlap = OVERLAP * count
+    return [counting(centre) for centre in centres]
+
+
+def _counting(values: np.ndarray, area: float):
+    """λ(i): the inverse of a smooth counting function N(λ) = aλ + b√λ + c.
+
+    Weyl's law for a surface gives a = area/4π (and a boundary term in √λ); before any pair is
+    known that is all, after it the three terms are fitted to the last pairs found (N(λ_j) ≈
+    j + ½), which follows the local density better than Weyl's constant.
+    """
+    a, b, c = area / (4 * np.pi), 0.0, 0.0
+    index = np.arange(len(values)) + 0.5
+    fitted = values > 0
+    if fitted.sum() >= 20:
+        recent = values[fitted][-400:]
+        design = np.column_stack([recent, np.sqrt(recent), np.ones_like(recent)])
+        solution = np.linalg.lstsq(design, index[fitted][-400:], rcond=None)[0]
+        if solution[0] > 0:
+            a, b, c = solution
+
+    def inverse(i):
+        root = (-b + np.sqrt(max(b * b - 4 * a * (c - i), 0))) / (2 * a)  # √λ
+        return max(root, 0.0) ** 2
+
+    return inverse
+
+
+def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
+                per_band: int = PER_BAND, workers: int = 2) -> tuple[np.ndarray, np.ndarray]:
+    """Spectrum slicing (after Vallet & Lévy 2008): shift-invert bands of ≈`per_band` pairs.
+
+    The first shifts come from Weyl's law (N(λ) ≈ area·λ/4π eigenvalues below λ), the later
+    ones from a counting function fitted to the eigenvalues found so far, so that neighbouring
+    windows share OVERLAP of their pairs; uncovered gaps get an extra band. Bands run
+    `workers` at a time in separate processes. L's kernel (one constant per connected
+    component) is known exactly and kept out of every Krylov space. Each band's Sylvester
+    inertia (and one more at the top) must equal the number of accepted eigenvalues below its
+    shift, else the bands around it look again for the copies of multiple eigenvalues they
+    missed; every accepted pair is checked by its residual. Nothing is missed or doubled.
+    """
+    n = stiffness.shape[0]
+    check_request(n, k)
+    if n <= 600:
+        return _dense(stiffness, mass, k)
+    null = null_space(stiffness, mass, k)
+    if len(null) >= k:  # k components or more: every wanted pair has λ = 0
+        return np.zeros(k), _columns(null)
+    per_band = max(1, min(per_band, n // 3))
+    count = min(n - 2 - len(null), _band_size(k, per_band, workers))
+    if k <= 0.8 * count:  # one band from the bottom of the spectrum
+        count = min(n - 2 - len(null), k + max(4, k // 10))
+        bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, count, null)]
+    else:
+        bands = []
+    repairs = 0
+    with _Workers(workers) as run:
+        while True:
+            pieces, gap = _stitch(bands) if bands else ([], None)
+            found = sum(int(keep.sum()) for _, keep in pieces)
+            if progress is not None:
+                progress(min(found, k))
+            if bands and gap is None and found >= k:
+                values, vectors = _assemble(pieces, k, n)
+                wrong, missing = _miscounted(stiffness, mass, bands, pieces, k)
+                if not wrong:
+                    break
+                if repairs == MAX_REPAIRS:
+                    raise InternalError(
+                        f"eigen-solver: {missing} eigenpair(s) still missing after {repairs} "
+                        "searches for multiple eigenvalues", remedy={"solver": "eigsh"})
+                repairs += 1
+                bands = [_complete_band(stiffness, mass, band, missing) if band in wrong
+                         else band for band in bands]
+            else:
+                shifts = _next_shifts(pieces, gap, k, count, workers, mass.sum())
+                bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
+            bands.sort(key=lambda band: band.shift)
+    _verify(values, pieces, bands)
+    return values, vectors
+
+
+class _Workers:
+    """Solves a list of bands, in `workers` separate processes when there are several.
+
+    The processes come from a fork server (a fresh single-threaded interpreter that imported
+    this module), never forked from the caller: the caller may be multi-threaded (the web
+    server solves in a thread) and forking such a process can deadlock. They ignore Ctrl-C (the
+    caller handles it and stops them) and die with the caller, whatever signal ends it.
+    """
+
+    def __init__(self, workers: int):
+        self.workers, self.pool = workers, None
+
+    def __enter__(self):
+        return self
+
+    def __call__(self, arguments: list[tuple]) -> list[Band]:
+        if len(arguments) == 1 or self.workers == 1:
+            return [_solve_band(*each) for each in arguments]
+        if self.pool is None:
+            method = "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() \
+                else "spawn"
+            context = multiprocessing.get_context(method)
+            if method == "forkserver":
+                context.set_forkserver_preload([__name__])  # not the caller's __main__
+            self.pool = ProcessPoolExecutor(self.workers, mp_context=context,
+                                            initializer=_start_worker, initargs=(os.getpid(),))
+        return list(self.pool.map(_band_worker, arguments))
+
+    def __exit__(self, kind, *exception):
+        if self.pool is None:
+            return
+        if kind is not None:  # interrupted or failed: do not wait for bands nobody needs
+            for process in list(getattr(self.pool, "_processes", {}).values()):
+                process.kill()
+        self.pool.shutdown(wait=kind is None, cancel_futures=True)
+
+
+def _start_worker(caller: int) -> None:
+    """In a band worker: leave Ctrl-C to the caller, and exit when the caller is gone."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    parent = os.getppid()
+    if sys.platform.startswith("linux"):  # the kernel kills us when our parent (the server) dies
+        PR_SET_PDEATHSIG = 1
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+
+    def watch():  # elsewhere, and as a second guard: poll the caller and the parent
+        while True:
+            time.sleep(0.5)
+            try:
+                os.kill(caller, 0)
+            except ProcessLookupError:
+                os._exit(1)
+            except PermissionError:
+                pass
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="watch-caller", daemon=True).start()
+
+
+def _assemble(pieces, k: int, n: int):
+    """The first k accepted pairs of the stitched pieces, in ascending order."""
+    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])[:k]
+    rows = np.empty((k, n))
+    filled = 0
+    for band, keep in pieces:
+        taken = min(int(keep.sum()), k - filled)
+        np.take(band.eigenvectors.T, np.flatnonzero(keep)[:taken], axis=0,
+                out=rows[filled:filled + taken])
+        filled += taken
+    return values, rows.T
+
+
+def _columns(rows):
+    """(n, c) eigenvectors as the transpose of C-ordered rows: each vector is contiguous."""
+    return np.ascontiguousarray(rows).T
+
+
+def _miscounted(stiffness, mass, bands, pieces, k: int):
+    """(bands, missing): the bands around the first shift whose count disagrees, or ([], 0).
+
+    Sylvester's count at each shift and at a cut just above λ_(k−1) must equal the number of
+    accepted eigenvalues below it. Between two shifts with agreeing counts nothing is missing;
+    a copy of a multiple eigenvalue that a Krylov space did not see shows up as a shortfall.
+    """
+    accepted = np.concatenate([band.eigenvalues[keep] for band, keep in pieces])
+    counted = [(band.shift, band.below) for band in bands]
+    if max(band.shift for band in bands) <= accepted[k - 1]:
+        # One more count above λ_(k−1), in the widest gap there, where it is unambiguous.
+        points = np.append(accepted[k - 1:], pieces[-1][0].upper)
+        widest = int(np.argmax(np.diff(points)))
+        top = (points[widest] + points[widest + 1]) / 2
+        counted.append((top, _ShiftInvert(stiffness, mass, top).below))
+    low = -np.inf
+    for shift, below in counted:
+        if below is None:
+            continue
+        found = int((accepted < shift).sum())
+        if found > below:
+            raise InternalError(f"eigen-solver: {below} eigenvalues lie below {shift:.4g} but "
+                                f"{found} were found", remedy={"solver": "eigsh"})
+        if found < below:
+            wrong = [band for band in bands if band.lower < shift and band.upper > low]
+            return wrong, (below - found)
+        low = shift
+    return [], 0
+
+
+def _verify(values, pieces, bands):
+    """Residual of every accepted pair, and inertia counts against the accepted eigenvalues."""
+    worst = max(float(band.residuals[keep].max(initial=0)) for band, keep in pieces)
+    if not worst <= RESIDUAL_TOLERANCE:
+        raise InternalError(f"eigen-solver: residual {worst:.1e} above tolerance",
+                            remedy={"solver": "eigsh"})
+    for band in bands:
+        if band.below is not None and band.shift < values[-1]:
+            accepted = int((values < band.shift).sum())
+            if accepted != band.below:
+                raise InternalError(
+                    f"eigen-solver: {band.below} eigenvalues lie below {band.shift:.4g} but "
+                    f"{accepted} were found", remedy={"solver": "eigsh"})
+
+
+def solve(stiffness, mass, k: int, solver: str = "bands", progress=None):
+    """Dispatch to `solve_bands` or `solve_eigsh`; see SOLVERS."""
+    if solver == "bands":
+        return solve_bands(stiffness, mass, k, progress)
+    if solver == "eigsh":
+        return solve_eigsh(stiffness, mass, k, progress)
+    raise InputError(f"unknown solver '{solver}' (expected one of {', '.join(SOLVERS)})")

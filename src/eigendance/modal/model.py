@@ -1,0 +1,214 @@
+"""Modal analysis of a skeleton: its natural vibration modes (docs/design.md#modal-model).
+
+Velocities are spatial [ω; v] in each body's frame (origin at its centre of mass), stacked into
+one vector of length 6·n_b. For a joint j between bodies i and l at P:
+
+- Ad_{i→j} = [[Ω, 0], [[O]×Ω, Ω]] with Ω = R_jᵀ R_i and O = R_jᵀ (c_i − P): body i's velocity
+  seen at P in the joint frame (thesis 3-60).
+- constraints (4-12): Γᵐ (Ad_{i→j} v̂_i − Ad_{l→j} v̂_l) = 0, stacked into G v̂ = 0.
+- elastic deflection: Γᶠ (Ad_{i→j} v̂_i − Ad_{l→j} v̂_l), stacked into R: the **difference** of
+  the two bodies' motions (the thesis's (4-35) adds them); K = diag of the free rows' stiffness.
+- N: orthonormal basis of ker G from the SVD with a relative rank tolerance, so loops (dependent
+  rows) give dim N = 6n_b − rank G.
+- M̃ = NᵀMN, K̃ = NᵀRᵀKRN, K̃u = λM̃u; modes η = Nu (ηᵀMη = I), frequencies ν = √λ/2π Hz.
+  The dim N − rank(RN) smallest eigenvalues are rigid motions of the whole (λ = 0; also any
+  mechanism left free by a zero stiffness): counted, not kept as vibrations. Joint damping
+  is read with the skeleton but not used: the modes are those of the undamped system.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+from threadpoolctl import threadpool_limits
+
+from eigendance.errors import InputError
+from eigendance.files import atomic_save_npz, load_npz
+from eigendance.modal.rotations import skew
+from eigendance.modal.skeleton import Skeleton
+
+RANK_TOLERANCE = 1e-9  # singular values below this times the largest count as zero
+
+MODAL_KEYS = ("frequencies", "modes", "rigid_modes", "nullspace_dim", "constraint_rows",
+              "constraint_rank", "body_names")
+
+
+def joint_adjoints(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray]:
+    """Ad_{i→j} and Ad_{l→j} for every joint, each (n_joints, 6, 6)."""
+    joints = skeleton.joints
+    if not joints:
+        return np.zeros((0, 6, 6)), np.zeros((0, 6, 6))
+    centers, rotations = skeleton.centers, skeleton.rotations
+    joint_rotations = np.array([skeleton.joint_rotation(joint) for joint in joints])
+    positions = np.array([joint.position for joint in joints])
+    pairs = np.array([joint.bodies for joint in joints])
+
+    def adjoint(body_index):
+        omega = np.einsum("jba,jbc->jac", joint_rotations, rotations[body_index])  # R_jᵀ R_b
+        offset = np.einsum("jba,jb->ja", joint_rotations, centers[body_index] - positions)
+        result = np.zeros((len(joints), 6, 6))
+        result[:, :3, :3] = omega
+        result[:, 3:, 3:] = omega
+        result[:, 3:, :3] = skew(offset) @ omega
+        return result
+
+    return adjoint(pairs[:, 0]), adjoint(pairs[:, 1])
+
+
+def joint_matrices(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """G (constrained rows), R (free rows) and the stiffness diagonal K of a skeleton."""
+    n_bodies, joints = skeleton.n_bodies, skeleton.joints
+    first, second = joint_adjoints(skeleton)
+    full = np.zeros((len(joints), 6, n_bodies, 6))
+    pairs = np.array([joint.bodies for joint in joints], dtype=int).reshape(-1, 2)
+    rows = np.arange(len(joints))
+    full[rows, :, pairs[:, 0], :] = first
+    full[rows, :, pairs[:, 1], :] -= second
+    full = full.reshape(6 * len(joints), 6 * n_bodies)
+    constrained = np.zeros((len(joints), 6), dtype=bool)
+    for index, joint in enumerate(joints):
+        constrained[index, list(joint.constrained_rows)] = True
+    constrained = constrained.reshape(-1)
+    stiffness = np.concatenate([joint.stiffness for joint in joints]) if joints else np.zeros(0)
+    return full[constrained], full[~constrained], stiffness
+
+
+def null_space(matrix: np.ndarray, n_columns: int) -> np.ndarray:
+    """Orthonormal basis of ker matrix as columns (n_columns, dim), relative tolerance."""
+    if matrix.shape[0] == 0:
+        return np.eye(n_columns)
+    return scipy.linalg.null_space(matrix, rcond=RANK_TOLERANCE)
+
+
+def matrix_rank(matrix: np.ndarray) -> int:
+    """Rank by SVD: singular values above RANK_TOLERANCE times the largest."""
+    if matrix.size == 0:
+        return 0
+    singular = np.linalg.svd(matrix, compute_uv=False)
+    return int(np.sum(singular > RANK_TOLERANCE * singular[0])) if singular[0] > 0 else 0
+
+
+@dataclass
+class ModalModel:
+    """Vibration modes of a skeleton (modal file: docs/design.md#modal-file).
+
+    frequencies: (nm,) Hz ascending, vibration modes only. modes: (6·n_b, nm), M-orthonormal,
+    body b's twist [θ; x] (body frame) in rows 6b … 6b+5. body_centers (n_b, 3) and
+    body_rotations (n_b, 3, 3): the rest pose, needed to move bodies and skin.
+
+    Example
+    -------
+    >>> from eigendance.modal.sample_rigs import planar_loop
+    >>> model = ModalModel.from_skeleton(planar_loop(4, skin=False))
+    >>> model.nullspace_dim, model.rigid_modes, model.n_modes   # thesis Table 4.1: dim N = 7
+    (7, 6, 1)
+    """
+
+    frequencies: np.ndarray
+    modes: np.ndarray
+    rigid_modes: int
+    nullspace_dim: int
+    constraint_rows: int
+    constraint_rank: int
+    body_names: list[str]
+    body_centers: np.ndarray
+    body_rotations: np.ndarray
+    mass: np.ndarray | None = None  # diagonal of M, (6·n_b,)
+
+    @property
+    def n_modes(self) -> int:
+        return len(self.frequencies)
+
+    @property
+    def n_bodies(self) -> int:
+        return len(self.body_names)
+
+    @classmethod
+    def from_skeleton(cls, skeleton: Skeleton, stiffness: float = 1.0,
+                      keep_matrices: bool = False) -> ModalModel:
+        """Modal analysis of a skeleton.
+
+        Parameters
+        ----------
+        skeleton : bodies and elastic joints.
+        stiffness : multiplies every joint stiffness (frequencies scale with its square root).
+        keep_matrices : also keep G, N, R, K as `model.matrices` (tests, inspection).
+
+        Returns
+        -------
+        ModalModel with the vibration modes, lowest frequency first.
+
+        The dense factorisations (a few hundred rows) run on one BLAS thread: faster at this
+        size than several, and much faster on a busy machine.
+        """
+        with threadpool_limits(1):
+            return cls._analyse(skeleton, stiffness, keep_matrices)
+
+    @classmethod
+    def _analyse(cls, skeleton: Skeleton, stiffness: float, keep_matrices: bool) -> ModalModel:
+        n_columns = 6 * skeleton.n_bodies
+        constraints, deflection, stiffnesses = joint_matrices(skeleton)
+        basis = null_space(constraints, n_columns)
+        rank = n_columns - basis.shape[1]
+        mass = skeleton.spatial_inertia
+        reduced_mass = basis.T @ (mass[:, None] * basis)
+        deflection_reduced = deflection @ basis
+        reduced_stiffness = deflection_reduced.T @ ((stiffness * stiffnesses)[:, None]
+                                                    * deflection_reduced)
+        reduced_mass = (reduced_mass + reduced_mass.T) / 2
+        reduced_stiffness = (reduced_stiffness + reduced_stiffness.T) / 2
+        dimension = basis.shape[1]
+        if dimension:
+            eigenvalues, vectors = scipy.linalg.eigh(reduced_stiffness, reduced_mass)
+        else:
+            eigenvalues, vectors = np.zeros(0), np.zeros((0, 0))
+        elastic = stiffnesses > 0
+        rigid = dimension - matrix_rank(deflection_reduced[elastic]) if dimension else 0
+        modes = basis @ vectors[:, rigid:]
+        frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
+        model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
+                    skeleton.body_names, skeleton.centers, skeleton.rotations, mass)
+        if keep_matrices:
+            model.matrices = {"G": constraints, "N": basis, "R": deflection, "K": stiffnesses,
+                              "rigid": basis @ vectors[:, :rigid]}
+        return model
+
+    def body_energy(self) -> np.ndarray:
+        """(n_b, nm): each body's share of a mode's kinetic energy ηᵀMη (columns sum to 1)."""
+        mass = self.mass if self.mass is not None else np.ones(self.modes.shape[0])
+        energy = (mass[:, None] * self.modes**2).reshape(self.n_bodies, 6, -1).sum(axis=1)
+        total = energy.sum(axis=0, keepdims=True)
+        return energy / np.where(total > 0, total, 1)
+
+    # ----------------------------------------------------------------- files
+    def save(self, path: str | os.PathLike) -> None:
+        """Write the modal file (docs/design.md#modal-file) atomically."""
+        atomic_save_npz(
+            path, frequencies=self.frequencies, modes=self.modes,
+            rigid_modes=np.int64(self.rigid_modes), nullspace_dim=np.int64(self.nullspace_dim),
+            constraint_rows=np.int64(self.constraint_rows),
+            constraint_rank=np.int64(self.constraint_rank),
+            body_names=np.array(self.body_names, dtype=str), body_centers=self.body_centers,
+            body_rotations=self.body_rotations,
+            mass=self.mass if self.mass is not None else np.ones(self.modes.shape[0]))
+
+    @classmethod
+    def load(cls, path: str | os.PathLike) -> ModalModel:
+        """Read a modal file; a missing key or inconsistent shape raises InputError."""
+        data = load_npz(path, MODAL_KEYS)
+        names = [str(name) for name in data["body_names"]]
+        n_bodies = len(names)
+        centers = data.get("body_centers", np.zeros((n_bodies, 3)))
+        rotations = data.get("body_rotations", np.tile(np.eye(3), (n_bodies, 1, 1)))
+        modes = np.asarray(data["modes"], dtype=float)
+        if modes.ndim != 2 or modes.shape[0] != 6 * n_bodies or \
+                modes.shape[1] != len(data["frequencies"]):
+            raise InputError(f"{os.fspath(path)}: modes and frequencies do not match "
+                             f"{n_bodies} bodies")
+        return cls(np.asarray(data["frequencies"], dtype=float), modes, int(data["rigid_modes"]),
+                   int(data["nullspace_dim"]), int(data["constraint_rows"]),
+                   int(data["constraint_rank"]), names, centers, rotations, data.get("mass"))

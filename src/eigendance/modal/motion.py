@@ -1,0 +1,191 @@
+"""Modal motion: music-driven mode coefficients, body poses, skinned vertices
+(docs/design.md#modal-motion).
+
+The coefficient of vibration mode κ at time t (thesis 6-2 with a time scale s and an offset b):
+
+    c_κ(t) = φ_κ(t) · μ_κ · sin(2π ν_κ s t + γ_κ),   φ_κ(t) = a(κ) · Σ_{ξ: κ(ξ)=κ} g̃(ξ, t) + b,
+
+where φ is the same filter as the harmonics' (`Mapping.filter` over the selected modes instead
+of harmonics, from the same `Spectrogram`). b = 0 makes silence the rest pose. Body b's twist
+p̂_b = Σ_κ c_κ η_κ^b = [θ; x] in its body frame moves it exactly: rotation exp([θ]×) about its
+centre of mass, then translation x.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from eigendance.errors import InputError
+from eigendance.files import atomic_save_npz
+from eigendance.modal.model import ModalModel
+from eigendance.modal.rotations import rotation_exp
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram
+
+FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
+DEFAULT_MODES = 8  # modes that move when none are chosen: the lowest ones
+
+
+def default_amplitudes(model: ModalModel, angle: float = 0.3,
+                       size: float | None = None) -> np.ndarray:
+    """μ per mode so that its largest body rotation is at most `angle` radians and its
+    largest body translation at most angle·size (size: the rest pose's extent)."""
+    twists = model.modes.reshape(model.n_bodies, 6, -1)
+    rotation = np.linalg.norm(twists[:, :3], axis=1).max(axis=0)
+    translation = np.linalg.norm(twists[:, 3:], axis=1).max(axis=0)
+    if size is None:
+        extent = model.body_centers.max(axis=0) - model.body_centers.min(axis=0)
+        size = float(np.linalg.norm(extent)) or 1.0
+    reference = np.maximum(rotation, translation / size)
+    return angle / np.where(reference > 0, reference, 1)
+
+
+def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
+                      time_scale: float = 1.0, drive=None, modes=None) -> np.ndarray:
+    """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ), shape (T, nm).
+
+    modes: indices of the modes that move (others get c = 0); default all. drive: φ,
+    shape (T, nm) (or (T, len(modes)) when `modes` is given), default 1.
+    """
+    times = np.asarray(times, dtype=float).reshape(-1)
+    count = model.n_modes
+    selected = np.arange(count) if modes is None else np.asarray(modes, dtype=int)
+    if selected.size and (selected.min() < 0 or selected.max() >= count):
+        raise InputError(f"mode index out of range: the model has {count} vibration modes "
+                         f"(0 … {count - 1})")
+    amplitudes = default_amplitudes(model) if amplitudes is None else \
+        np.broadcast_to(np.asarray(amplitudes, dtype=float), (count,))
+    phases = np.zeros(count) if phases is None else \
+        np.broadcast_to(np.asarray(phases, dtype=float), (count,))
+    result = np.zeros((times.size, count))
+    argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
+        + phases[selected]
+    values = amplitudes[selected] * np.sin(argument)
+    if drive is not None:
+        drive = np.asarray(drive, dtype=float)
+        if drive.shape == (times.size, count) and modes is not None:
+            drive = drive[:, selected]
+        if drive.shape != values.shape:
+            raise InputError(f"the drive has shape {drive.shape}; expected {values.shape} "
+                             "(frames, modes)")
+        values = values * drive
+    result[:, selected] = values
+    return result
+
+
+def twists(model: ModalModel, coefficients) -> np.ndarray:
+    """Body twists [θ; x] in body frames, (T, n_b, 6), for coefficients (T, nm)."""
+    coefficients = np.atleast_2d(np.asarray(coefficients, dtype=float))
+    return (coefficients @ model.modes.T).reshape(len(coefficients), model.n_bodies, 6)
+
+
+def body_poses(model: ModalModel, coefficients) -> tuple[np.ndarray, np.ndarray]:
+    """World rotations (T, n_b, 3, 3) and centres (T, n_b, 3) of every body: rotation
+    exp([θ]×) about the centre of mass, then translation x, both in the body frame."""
+    twist = twists(model, coefficients)
+    rotations = model.body_rotations[None] @ rotation_exp(twist[..., :3])
+    centers = model.body_centers[None] + np.einsum("bij,tbj->tbi", model.body_rotations,
+                                                   twist[..., 3:])
+    return rotations, centers
+
+
+def body_transforms(model: ModalModel, coefficients=None, poses=None) -> np.ndarray:
+    """World transforms (T, n_b, 4, 4) taking rest-pose points to posed points.
+
+    From the coefficients, or from `poses` = body_poses(model, coefficients) already computed.
+    """
+    rotations, centers = poses if poses is not None else body_poses(model, coefficients)
+    linear = rotations @ np.swapaxes(model.body_rotations, -1, -2)[None]
+    transforms = np.zeros(linear.shape[:2] + (4, 4))
+    transforms[..., :3, :3] = linear
+    transforms[..., :3, 3] = centers - np.einsum("tbij,bj->tbi", linear, model.body_centers)
+    transforms[..., 3, 3] = 1
+    return transforms
+
+
+def band_mapping(bands: int, n_modes: int) -> Mapping:
+    """The default mapping of bands onto modes: in order, in contiguous groups.
+
+    Band ξ drives the mode ⌊(ξ + ½)·nm/B⌋ (low sounds drive low modes), each with the
+    amplification nm/B, so that a full-scale spectrum gives φ ≈ 1 on every mode that a band
+    reaches.
+    """
+    transfer = (np.arange(bands) + 0.5) / bands
+    return Mapping(transfer, np.array([n_modes / bands]), name="bands in order")
+
+
+def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
+               offset: float = 0.0) -> np.ndarray:
+    """φ (T, n_modes) = a·Σ g̃ + offset: the mapping's filter over the modes at `times`."""
+    return mapping.filter(spectrogram.at(np.asarray(times, dtype=float)), n_modes, offset)
+
+
+def parse_modes(text: str | None, n_modes: int) -> np.ndarray:
+    """'0,2,5-8' → indices; None → the lowest min(DEFAULT_MODES, n_modes) modes."""
+    if text is None:
+        return np.arange(min(DEFAULT_MODES, n_modes))
+    indices = []
+    try:
+        for part in text.split(","):
+            part = part.strip()
+            if "-" in part:
+                low, high = (int(v) for v in part.split("-", 1))
+                if high >= n_modes or low < 0:
+                    raise InputError(f"modes {part}: the rig has {n_modes} vibration modes "
+                                     f"(0 … {n_modes - 1})")
+                indices.extend(range(low, high + 1))
+            elif part:
+                indices.append(int(part))
+    except ValueError:
+        raise InputError(f"modes {text!r}: expected indices like 0,2,5-8") from None
+    bad = [i for i in indices if not 0 <= i < n_modes]
+    if bad:
+        raise InputError(f"mode {bad[0]} does not exist (the rig has {n_modes} vibration "
+                         f"modes, 0 … {n_modes - 1})")
+    if not indices:
+        raise InputError("the mode list selects no mode")
+    return np.array(sorted(set(indices)))
+
+
+def animate_rig(skeleton: Skeleton, model: ModalModel, times, modes, amplitude: float = 0.3,
+                time_scale: float = 1.0, drive=None, skinning: str = "modal",
+                progress=None) -> dict:
+    """Arrays of the rig animation file (docs/design.md#animation-file).
+
+    times, faces, float32 positions (T, n, 3), body rotations/centres/transforms per frame,
+    the coefficients and the modes used. drive: φ (T, len(modes)) or None (φ ≡ 1).
+    """
+    times = np.asarray(times, dtype=float)
+    amplitudes = default_amplitudes(model, amplitude, size=skeleton.size)
+    phases = np.linspace(0, math.pi, model.n_modes, endpoint=False)
+    coefficients = mode_coefficients(model, times, amplitudes, phases, time_scale, drive, modes)
+    rotations, centers = body_poses(model, coefficients)
+    transforms = body_transforms(model, poses=(rotations, centers))
+    positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
+    skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype=np.float32) \
+        if skinning == "modal" else None
+    for start in range(0, len(times), FRAME_CHUNK):
+        stop = min(start + FRAME_CHUNK, len(times))
+        if skin is not None:
+            positions[start:stop] = skin.positions(coefficients[start:stop])
+        else:
+            positions[start:stop] = linear_blend_skinning(skeleton.vertices, skeleton.weights,
+                                                          transforms[start:stop])
+        if progress is not None:
+            progress(stop)
+    return {"times": times, "faces": skeleton.faces.astype(np.int64), "positions": positions,
+            "rest_vertices": skeleton.vertices, "weights": skeleton.weights.astype(np.float32),
+            "body_names": np.array(model.body_names, dtype=str),
+            "body_rotations": rotations, "body_centers": centers,
+            "body_transforms": transforms.astype(np.float32), "coefficients": coefficients,
+            "modes": np.asarray(modes, dtype=np.int64),
+            "frequencies": model.frequencies, "skinning": np.array(skinning)}
+
+
+def save_animation(path, arrays: dict) -> None:
+    """Write a rig animation file atomically."""
+    atomic_save_npz(path, **arrays)

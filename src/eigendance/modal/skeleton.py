@@ -1,0 +1,428 @@
+"""Articulated skeletons: rigid cylindrical bodies joined by elastic joints
+(docs/design.md#skeleton).
+
+A `Skeleton` holds bodies (solid cylinders from `start` to `end`, radius r, density ρ) and joints
+between pairs of bodies. A joint declared with three or more bodies becomes one joint per pair of
+them (thesis §5.2). Frames:
+
+- body frame: origin at the centre of mass, x along the axis (y, z a deterministic completion);
+  mass m = ρπr²ℓ, principal inertia J = (½mr², m(3r²+ℓ²)/12, m(3r²+ℓ²)/12); spatial inertia
+  diag(J, m·I₃) in [ω; v] ordering.
+- joint frame: origin at the joint position P; z = the joint's `axis` if given, else
+  unit(d_i × d_l), else a deterministic unit vector perpendicular to d_i; x = d_i made orthogonal
+  to z (a deterministic perpendicular of z when d_i ∥ z); y = z × x.
+
+Sources: the skeleton JSON (`Skeleton.from_json`, docs/design.md#skeleton-file) and glTF 2.0
+skins (`eigendance.modal.gltf_skin.skeleton_from_gltf`).
+In the JSON, a joint's "stiffness" is a number (every free row), a list (one per free row of
+[ωx ωy ωz vx vy vz], in that order), or "auto" (see DEFAULT_JOINT_FREQUENCY); "position"
+defaults to where the two bodies meet (a shared end, else the closest points of their axes);
+"density" defaults to DEFAULT_DENSITY; "damping" is kept but the modes are undamped.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import os
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from eigendance.errors import InputError
+
+# Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
+CONSTRAINED_ROWS = {
+    "revolute": (0, 1, 3, 4, 5),
+    "prismatic": (0, 1, 2, 3, 4),
+    "cylindrical": (0, 1, 3, 4),
+    "spherical": (3, 4, 5),
+}
+JOINT_TYPES = tuple(CONSTRAINED_ROWS)
+
+DEFAULT_DENSITY = 1000.0  # kg/m³, about that of water and of living tissue
+# Default joint stiffness (glTF rigs, and JSON joints with "stiffness": "auto"): each free row of
+# a joint gets the stiffness that makes the lighter of its two bodies, swinging (or sliding) about
+# the joint while the other is held still, vibrate at this frequency. Scale-free: a rig in
+# centimetres moves like the same rig in metres.
+DEFAULT_JOINT_FREQUENCY = 1.0  # Hz
+
+
+def unit(vector, name: str = "vector") -> np.ndarray:
+    vector = np.asarray(vector, dtype=float)
+    norm = np.linalg.norm(vector)
+    if not norm > 0:
+        raise InputError(f"{name} has zero length")
+    return vector / norm
+
+
+def perpendicular(direction) -> np.ndarray:
+    """A deterministic unit vector perpendicular to the unit vector `direction`."""
+    direction = np.asarray(direction, dtype=float)
+    helper = np.zeros(3)
+    helper[int(np.argmin(np.abs(direction)))] = 1.0
+    return unit(np.cross(direction, helper))
+
+
+def frame_from_xz(x_hint, z) -> np.ndarray:
+    """Rotation (columns x, y, z) with the given z, x = x_hint made orthogonal to z."""
+    z = unit(z)
+    x = np.asarray(x_hint, dtype=float) - np.dot(x_hint, z) * z
+    norm = np.linalg.norm(x)
+    x = x / norm if norm > 1e-9 * max(1.0, np.linalg.norm(x_hint)) else perpendicular(z)
+    return np.column_stack([x, np.cross(z, x), z])
+
+
+def body_rotation(direction) -> np.ndarray:
+    """World-from-body rotation with x = direction and a deterministic y, z."""
+    x = unit(direction)
+    y = perpendicular(x)
+    return np.column_stack([x, y, np.cross(x, y)])
+
+
+@dataclass
+class Body:
+    """A solid cylinder from `start` to `end`."""
+
+    name: str
+    start: np.ndarray
+    end: np.ndarray
+    radius: float
+    density: float = DEFAULT_DENSITY
+
+    @property
+    def length(self) -> float:
+        return float(np.linalg.norm(self.end - self.start))
+
+    @property
+    def direction(self) -> np.ndarray:
+        return unit(self.end - self.start, f"body {self.name!r}")
+
+    @property
+    def center(self) -> np.ndarray:
+        return (self.start + self.end) / 2
+
+    @property
+    def mass(self) -> float:
+        return self.density * math.pi * self.radius**2 * self.length
+
+    @property
+    def inertia(self) -> np.ndarray:
+        """Principal moments (Jx, Jy, Jz) about the centre of mass, x along the axis."""
+        m, r, l = self.mass, self.radius, self.length
+        transverse = m * (3 * r**2 + l**2) / 12
+        return np.array([m * r**2 / 2, transverse, transverse])
+
+
+@dataclass
+class Joint:
+    """An elastic joint between two bodies (indices `bodies` = (i, l)) at `position`.
+
+    stiffness: one value per free row of the joint type, in the order of the free rows of
+    [ωx ωy ωz vx vy vz] in the joint frame.
+    """
+
+    name: str
+    type: str
+    bodies: tuple[int, int]
+    position: np.ndarray
+    stiffness: np.ndarray
+    axis: np.ndarray | None = None
+    damping: float = 0.0
+
+    @property
+    def constrained_rows(self) -> tuple[int, ...]:
+        return CONSTRAINED_ROWS[self.type]
+
+    @property
+    def free_rows(self) -> tuple[int, ...]:
+        return tuple(row for row in range(6) if row not in CONSTRAINED_ROWS[self.type])
+
+
+@dataclass
+class Skeleton:
+    """Bodies and pairwise joints, optionally with a skinned mesh.
+
+    vertices (n, 3), faces (m, 3) and weights (n, n_bodies, rows summing to 1) describe the skin
+    in the same coordinates as the bodies; all three are None for a bare skeleton.
+    """
+
+    bodies: list[Body]
+    joints: list[Joint]
+    name: str = "skeleton"
+    vertices: np.ndarray | None = None
+    faces: np.ndarray | None = None
+    weights: np.ndarray | None = None
+    notes: list[str] = field(default_factory=list)
+
+    def __post_init__(self):
+        names = [body.name for body in self.bodies]
+        if not self.bodies:
+            raise InputError(f"{self.name}: the skeleton has no bodies")
+        duplicates = sorted({n for n in names if names.count(n) > 1})
+        if duplicates:
+            raise InputError(f"{self.name}: duplicate body name {duplicates[0]!r}")
+        for body in self.bodies:
+            if not (np.all(np.isfinite(body.start)) and np.all(np.isfinite(body.end))
+                    and math.isfinite(body.radius) and math.isfinite(body.density)):
+                raise InputError(f"{self.name}: body {body.name!r} has a non-finite value")
+            if not body.length > 0:
+                raise InputError(f"{self.name}: body {body.name!r} has zero length")
+            if not body.radius > 0 or not body.density > 0:
+                raise InputError(
+                    f"{self.name}: body {body.name!r} needs a positive radius and density")
+        for joint in self.joints:
+            i, l = joint.bodies
+            if i == l:
+                raise InputError(f"{self.name}: joint {joint.name!r} joins a body to itself")
+            if joint.type not in CONSTRAINED_ROWS:
+                raise InputError(f"{self.name}: joint {joint.name!r} has unknown type "
+                                      f"{joint.type!r} (use {', '.join(JOINT_TYPES)})")
+            if joint.stiffness.shape != (len(joint.free_rows),):
+                raise InputError(
+                    f"{self.name}: joint {joint.name!r} needs 1 or {len(joint.free_rows)} "
+                    f"stiffness values for a {joint.type} joint")
+            if not (np.all(np.isfinite(joint.position)) and np.all(np.isfinite(joint.stiffness))
+                    and np.all(joint.stiffness >= 0)):
+                raise InputError(f"{self.name}: joint {joint.name!r} has a non-finite or "
+                                      "negative value")
+
+    # ----------------------------------------------------------------- derived arrays
+    @property
+    def n_bodies(self) -> int:
+        return len(self.bodies)
+
+    @property
+    def body_names(self) -> list[str]:
+        return [body.name for body in self.bodies]
+
+    @property
+    def centers(self) -> np.ndarray:
+        """Centres of mass, (n_bodies, 3)."""
+        return np.array([body.center for body in self.bodies])
+
+    @property
+    def rotations(self) -> np.ndarray:
+        """World-from-body rotations, (n_bodies, 3, 3)."""
+        return np.array([body_rotation(body.end - body.start) for body in self.bodies])
+
+    @property
+    def spatial_inertia(self) -> np.ndarray:
+        """Diagonal of M, (6·n_bodies,): per body (Jx, Jy, Jz, m, m, m) in its body frame."""
+        return np.concatenate([np.concatenate([b.inertia, [b.mass] * 3]) for b in self.bodies])
+
+    def joint_rotation(self, joint: Joint) -> np.ndarray:
+        """World-from-joint rotation (columns x, y, z) (docs/design.md#joints)."""
+        d_i = self.bodies[joint.bodies[0]].direction
+        d_l = self.bodies[joint.bodies[1]].direction
+        if joint.axis is not None:
+            z = unit(joint.axis, f"axis of joint {joint.name!r}")
+        else:
+            normal = np.cross(d_i, d_l)
+            z = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 1e-9 \
+                else perpendicular(d_i)
+        return frame_from_xz(d_i, z)
+
+    @property
+    def size(self) -> float:
+        """Diagonal of the bounding box of all body ends (a length scale)."""
+        ends = np.concatenate([[b.start for b in self.bodies], [b.end for b in self.bodies]])
+        return float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0)))
+
+    # ----------------------------------------------------------------- loading
+    @classmethod
+    def from_json(cls, path: str | os.PathLike) -> Skeleton:
+        path = os.fspath(path)
+        try:
+            with open(path, encoding="utf-8") as file:
+                document = json.load(file)
+        except FileNotFoundError:
+            raise InputError(f"{path}: no such file") from None
+        except (OSError, UnicodeDecodeError) as error:
+            raise InputError(f"{path}: cannot read ({error})") from None
+        except json.JSONDecodeError as error:
+            raise InputError(f"{path}: malformed JSON at line {error.lineno} "
+                                  f"column {error.colno} ({error.msg})") from None
+        return cls.from_dict(document, name=os.path.basename(path))
+
+    @classmethod
+    def from_dict(cls, document, name: str = "skeleton") -> Skeleton:
+        """Build from a parsed skeleton JSON (docs/design.md#skeleton-file), checking each item."""
+        if not isinstance(document, dict) or document.get("format") != "eigendance.skeleton":
+            raise InputError(f"{name}: not an eigendance skeleton "
+                                  "(expected \"format\": \"eigendance.skeleton\")")
+        if document.get("version") != 1:
+            raise InputError(f"{name}: unsupported skeleton version "
+                                  f"{document.get('version')!r} (expected 1)")
+        raw_bodies = document.get("bodies")
+        raw_joints = document.get("joints", [])
+        if not isinstance(raw_bodies, list) or not raw_bodies:
+            raise InputError(f"{name}: \"bodies\" must be a non-empty list")
+        if not isinstance(raw_joints, list):
+            raise InputError(f"{name}: \"joints\" must be a list")
+        bodies = []
+        for index, item in enumerate(raw_bodies):
+            label = f"{name}: body {index}"
+            if not isinstance(item, dict):
+                raise InputError(f"{label} is not an object")
+            body_name = item.get("name")
+            if not isinstance(body_name, str) or not body_name:
+                raise InputError(f"{label} needs a \"name\" string")
+            label = f"{name}: body {body_name!r}"
+            start = _vector(item.get("start"), f"{label}: \"start\"")
+            end = _vector(item.get("end"), f"{label}: \"end\"")
+            radius = _number(item.get("radius"), f"{label}: \"radius\"", positive=True)
+            density = _number(item.get("density", DEFAULT_DENSITY), f"{label}: \"density\"",
+                              positive=True)
+            if not np.linalg.norm(end - start) > 0:
+                raise InputError(f"{label} has zero length (start = end)")
+            bodies.append(Body(body_name, start, end, radius, density))
+        names = [body.name for body in bodies]
+        for body_name in names:
+            if names.count(body_name) > 1:
+                raise InputError(f"{name}: duplicate body name {body_name!r}")
+        index_of = {body_name: i for i, body_name in enumerate(names)}
+        joints = []
+        joint_names = set()
+        for index, item in enumerate(raw_joints):
+            label = f"{name}: joint {index}"
+            if not isinstance(item, dict):
+                raise InputError(f"{label} is not an object")
+            joint_name = item.get("name", f"joint{index}")
+            if not isinstance(joint_name, str):
+                raise InputError(f"{label}: \"name\" must be a string")
+            label = f"{name}: joint {joint_name!r}"
+            if joint_name in joint_names:
+                raise InputError(f"{name}: duplicate joint name {joint_name!r}")
+            joint_names.add(joint_name)
+            kind = item.get("type")
+            if kind not in CONSTRAINED_ROWS:
+                raise InputError(f"{label} has unknown type {kind!r} "
+                                      f"(use {', '.join(JOINT_TYPES)})")
+            members = item.get("bodies")
+            if not isinstance(members, list) or len(members) < 2:
+                raise InputError(f"{label}: \"bodies\" must list at least 2 body names")
+            for member in members:
+                if member not in index_of:
+                    raise InputError(f"{label} names unknown body {member!r}")
+            if len(set(members)) != len(members):
+                raise InputError(f"{label} lists a body twice")
+            position = item.get("position")
+            position = None if position is None else _vector(position, f"{label}: \"position\"")
+            axis = item.get("axis")
+            if axis is not None:
+                axis = _vector(axis, f"{label}: \"axis\"")
+                if not np.linalg.norm(axis) > 0:
+                    raise InputError(f"{label}: \"axis\" has zero length")
+            stiffness = item.get("stiffness")
+            if stiffness is None:
+                raise InputError(f"{label} needs a \"stiffness\" (a number, a list, "
+                                      "or \"auto\")")
+            damping = _number(item.get("damping", 0.0), f"{label}: \"damping\"", minimum=0.0)
+            pairs = list(itertools.combinations([index_of[m] for m in members], 2))
+            for i, l in pairs:
+                pair_name = joint_name if len(pairs) == 1 else \
+                    f"{joint_name}[{names[i]},{names[l]}]"
+                where = position if position is not None else \
+                    meeting_point(bodies[i], bodies[l])
+                joint = Joint(pair_name, kind, (i, l), where, np.zeros(0), axis, damping)
+                joint.stiffness = _stiffness(stiffness, joint, bodies, label)
+                joints.append(joint)
+        return cls(bodies, joints, name=name)
+
+    def to_dict(self) -> dict:
+        """The skeleton JSON document (pairwise joints, explicit positions)."""
+        return {
+            "format": "eigendance.skeleton", "version": 1,
+            "bodies": [{"name": b.name, "start": b.start.tolist(), "end": b.end.tolist(),
+                        "radius": b.radius, "density": b.density} for b in self.bodies],
+            "joints": [{"name": j.name, "type": j.type,
+                        "bodies": [self.bodies[j.bodies[0]].name, self.bodies[j.bodies[1]].name],
+                        "position": j.position.tolist(),
+                        **({"axis": j.axis.tolist()} if j.axis is not None else {}),
+                        "stiffness": j.stiffness.tolist(), "damping": j.damping}
+                       for j in self.joints],
+        }
+
+    def scaled(self, stiffness: float = 1.0, density: float = 1.0) -> Skeleton:
+        """A copy with every stiffness and density multiplied by the given factors."""
+        bodies = [Body(b.name, b.start, b.end, b.radius, b.density * density)
+                  for b in self.bodies]
+        joints = [Joint(j.name, j.type, j.bodies, j.position, j.stiffness * stiffness, j.axis,
+                        j.damping) for j in self.joints]
+        return Skeleton(bodies, joints, self.name, self.vertices, self.faces, self.weights,
+                        list(self.notes))
+
+
+def meeting_point(a: Body, b: Body) -> np.ndarray:
+    """Where two bodies meet: a shared end if they have one, else the midpoint of the closest
+    points of their axes (thesis §3.2.1: the joint sits where the axes intersect)."""
+    ends_a, ends_b = (a.start, a.end), (b.start, b.end)
+    scale = max(a.length, b.length)
+    for p in ends_a:
+        for q in ends_b:
+            if np.linalg.norm(p - q) <= 1e-9 * scale:
+                return (p + q) / 2
+    d1, d2, r = a.end - a.start, b.end - b.start, a.start - b.start
+    aa, bb, ab, ar, br = d1 @ d1, d2 @ d2, d1 @ d2, d1 @ r, d2 @ r
+    denominator = aa * bb - ab * ab
+    if denominator <= 1e-12 * aa * bb:  # parallel: nearest pair of ends
+        pairs = [(p, q) for p in ends_a for q in ends_b]
+        p, q = min(pairs, key=lambda pq: np.linalg.norm(pq[0] - pq[1]))
+        return (p + q) / 2
+    s = (ab * br - bb * ar) / denominator
+    t = (aa * br - ab * ar) / denominator
+    return (a.start + s * d1 + b.start + t * d2) / 2
+
+
+def automatic_stiffness(joint: Joint, bodies: list[Body],
+                        frequency: float = DEFAULT_JOINT_FREQUENCY) -> np.ndarray:
+    """Per free row: (2πf)² times the lighter body's inertia about the joint (see module top)."""
+    omega2 = (2 * math.pi * frequency) ** 2
+    values = []
+    for row in joint.free_rows:
+        candidates = []
+        for index in joint.bodies:
+            body = bodies[index]
+            if row < 3:  # rotation: moment of inertia about the joint point (parallel axes)
+                distance = np.linalg.norm(body.center - joint.position)
+                candidates.append(body.inertia[1] + body.mass * distance**2)
+            else:
+                candidates.append(body.mass)
+        values.append(omega2 * min(candidates))
+    return np.array(values)
+
+
+def _stiffness(value, joint: Joint, bodies: list[Body], label: str) -> np.ndarray:
+    free = len(joint.free_rows)
+    if value == "auto":
+        return automatic_stiffness(joint, bodies)
+    if isinstance(value, bool):
+        raise InputError(f"{label}: \"stiffness\" must be a number, a list or \"auto\"")
+    if isinstance(value, (int, float)):
+        values = [value] * free
+    elif isinstance(value, list) and len(value) == free:
+        values = value
+    else:
+        raise InputError(f"{label}: \"stiffness\" must be a number, a list of {free} "
+                              f"numbers (one per free row of a {joint.type} joint) or \"auto\"")
+    return np.array([_number(v, f"{label}: \"stiffness\"", minimum=0.0) for v in values])
+
+
+def _number(value, label: str, positive: bool = False, minimum: float | None = None) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(f"{label} must be a number, not {value!r}")
+    if not math.isfinite(value):
+        raise InputError(f"{label} is not finite ({value!r})")
+    if positive and not value > 0:
+        raise InputError(f"{label} must be positive, not {value!r}")
+    if minimum is not None and value < minimum:
+        raise InputError(f"{label} must be at least {minimum}, not {value!r}")
+    return float(value)
+
+
+def _vector(value, label: str) -> np.ndarray:
+    if not isinstance(value, list) or len(value) != 3:
+        raise InputError(f"{label} must be a list of 3 numbers, not {value!r}")
+    return np.array([_number(v, label) for v in value])

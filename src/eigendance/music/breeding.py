@@ -1,0 +1,150 @@
+"""Breeding: the next gallery from the mappings a person selected (docs/design.md#breeding).
+
+The random parts use `Mulberry32`, a tiny uint32 generator that a browser can port bit for bit;
+`breed` documents the exact order of draws, so the same seed and parents give the same children
+in Python and in the browser (tests/js/breed_reference.mjs).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from eigendance.errors import InputError
+from eigendance.music.mapping import Mapping, resample_amplification
+
+
+class Mulberry32:
+    """mulberry32: a 32-bit state PRNG, ported bit for bit from its JavaScript original.
+
+    JavaScript (the reference the browser uses)::
+
+        function next() {            // returns a uint32
+          a = (a + 0x6D2B79F5) | 0;
+          let t = Math.imul(a ^ (a >>> 15), a | 1);
+          t = (t + Math.imul(t ^ (t >>> 7), t | 61)) ^ t;
+          return (t ^ (t >>> 14)) >>> 0;
+        }
+        uniform() = next() / 4294967296   // in [0, 1)
+
+    The initial state is the seed modulo 2^32.
+    """
+
+    MASK = 0xFFFFFFFF
+
+    def __init__(self, seed: int):
+        self.state = int(seed) & self.MASK
+
+    def next_uint32(self) -> int:
+        M = self.MASK
+        self.state = (self.state + 0x6D2B79F5) & M
+        a = self.state
+        t = ((a ^ (a >> 15)) * (a | 1)) & M
+        t = ((t + (((t ^ (t >> 7)) * (t | 61)) & M)) & M) ^ t
+        return (t ^ (t >> 14)) & M
+
+    def uniform(self) -> float:
+        """A float in [0, 1): next_uint32() / 2^32."""
+        return self.next_uint32() / 4294967296.0
+
+    def below(self, count: int) -> int:
+        """An integer in [0, count): ⌊uniform()·count⌋."""
+        return min(count - 1, int(math.floor(self.uniform() * count)))
+
+
+def cross(first, second, random: Mulberry32, mean_segment: float | None = None) -> np.ndarray:
+    """Segment-wise convex combination of two vectors of length L (thesis 6.2.1).
+
+    Until L entries are filled: draw the segment length n — n = 1, then while n < (entries left)
+    draw u and stop if u < p, else n += 1 (a Geometric(p) length truncated to what is left, one
+    uniform per trial), p = min(1, 1/mean_segment), mean_segment = L/4 by default; then draw
+    r = uniform() and fill the next n entries with r·first + (1 − r)·second.
+    """
+    first = np.asarray(first, dtype=np.float64)
+    second = np.asarray(second, dtype=np.float64)
+    length = len(first)
+    if mean_segment is None:
+        mean_segment = length / 4
+    p = min(1.0, 1.0 / mean_segment) if mean_segment > 0 else 1.0
+    child = np.empty(length)
+    filled = 0
+    while filled < length:
+        left = length - filled
+        n = 1
+        while n < left and not random.uniform() < p:
+            n += 1
+        r = random.uniform()
+        segment = slice(filled, filled + n)
+        child[segment] = r * first[segment] + (1 - r) * second[segment]
+        filled += n
+    return child
+
+
+def breed(parents, size: int = 8, seed: int = 0,
+          mean_segment: float | None = None) -> list[Mapping]:
+    """S children of the selected parents (thesis 6.2.1); deterministic for a seed.
+
+    Parameters
+    ----------
+    parents : the selected mappings (all with the same number of bands B).
+    size : number of children S ≥ 1.
+    seed : any integer; the generator starts from seed mod 2³².
+    mean_segment : mean length of a crossed segment (default L/4 for vectors of length L).
+
+    Returns
+    -------
+    S mappings (transfer of B values, amplification of parent 0's length K).
+
+    One Mulberry32(seed) stream; per child, in this order:
+      1. parents: i = below(P), then j = below(P − 1), j += 1 if j ≥ i (so i ≠ j); with a single
+         parent no draw is made and i = j = 0;
+      2. transfer: u = uniform(); if u < ½, cross(parent_i.transfer, parent_j.transfer);
+         else draw u = uniform() and copy parent i's transfer if u < ½, else parent j's;
+      3. amplification: the same as 2 with the amplifications (an independent coin).
+    Amplifications of other lengths than parent 0's are first resampled to its length K; child
+    transfers are clipped to [0, 1] (a convex combination can overshoot 1 by one rounding).
+    Children carry `seed` in their JSON.
+
+    Example
+    -------
+    >>> a = Mapping(np.linspace(0, 1, 4), np.ones(3))
+    >>> b = Mapping(np.linspace(1, 0, 4), -np.ones(3))
+    >>> children = breed([a, b], size=6, seed=1)
+    >>> len(children), all(np.all(abs(c.amplification) <= 1) for c in children)
+    (6, True)
+    >>> [c.transfer.tolist() for c in children] == [c.transfer.tolist() for c in
+    ...                                              breed([a, b], size=6, seed=1)]
+    True
+    """
+    parents = list(parents)
+    if not parents:
+        raise InputError("breeding needs at least one parent mapping")
+    if not isinstance(size, int | np.integer) or size < 1:
+        raise InputError(f"the gallery size must be a positive integer, got {size}")
+    bands = parents[0].bands
+    K = len(parents[0].amplification)
+    for parent in parents:
+        if parent.bands != bands:
+            raise InputError(f"{parent.name}: {parent.bands} bands, but "
+                             f"{parents[0].name} has {bands}; parents must agree")
+    transfers = [p.transfer for p in parents]
+    amplifications = [resample_amplification(p.amplification, K) for p in parents]
+    random = Mulberry32(seed)
+    children = []
+    for c in range(size):
+        if len(parents) == 1:
+            i = j = 0
+        else:
+            i = random.below(len(parents))
+            j = random.below(len(parents) - 1)
+            j += j >= i
+        genes = []
+        for vectors in (transfers, amplifications):
+            if random.uniform() < 0.5:
+                genes.append(cross(vectors[i], vectors[j], random, mean_segment))
+            else:
+                genes.append(vectors[i].copy() if random.uniform() < 0.5 else vectors[j].copy())
+        transfer = np.clip(genes[0], 0.0, 1.0)
+        children.append(Mapping(transfer, genes[1], int(seed), f"child {c}"))
+    return children

@@ -1,0 +1,342 @@
+"""The banded loudness spectrogram of music (docs/design.md#spectrogram).
+
+The analysis runs chunk by chunk on the decoder's output, so memory stays bounded by the chunk
+size plus the result (T × B float32 values) however long the track is.
+
+One definition for every consumer (browser, video, glTF, both pipelines):
+
+- frames j = 0 … ⌊duration·rate⌋, frame j centred on sample c_j = ⌊j·sr/rate + ½⌋ (round half
+  up) and covering samples c_j − N/2 … c_j + N/2 − 1, zero outside the signal;
+- periodic Hann window of N = the smallest power of two ≥ 0.046·sr samples; magnitude
+  |rfft| · 2/Σw, so a full-scale sine reads ≈ 1;
+- B bands with edges geomspace(fmin, min(fmax, sr/2), B+1); a band's magnitude is the largest
+  magnitude among bins q with edge_b ≤ q·sr/N < edge_{b+1}; a band holding no bin takes the
+  magnitude spectrum interpolated linearly (over bin frequency) at its geometric centre;
+- loudness v = clip((20·log10(magnitude) − floor_db)/(−floor_db), 0, 1);
+- smoothing s_j = m·s_{j−1} + (1 − m)·v_j, m = exp(−1/(rate·τ)), s_{−1} = 0;
+- `times[j] = j / rate`; between frames values are interpolated linearly (`Spectrogram.at`).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.fft import rfft
+
+from eigendance.errors import InputError
+from eigendance.files import atomic_save_npz, atomic_write, load_npz
+from eigendance.music.decode import CHUNK_SAMPLES, mono, open_audio
+
+FORMAT_KEYS = ("times", "band_edges", "values", "rate", "sample_rate", "duration")
+FRAME_BATCH = 1024  # analysis frames per batched FFT
+# Defaults of docs/design.md#spectrogram: frames per second, bands, band range (Hz), loudness
+# floor (dB) and smoothing time constant (s).
+RATE, BANDS, FMIN, FMAX, FLOOR_DB, SMOOTHING = 100.0, 64, 20.0, 16000.0, -80.0, 0.08
+
+
+def window_length(sample_rate: float) -> int:
+    """N = the smallest power of two ≥ 0.046·sr (2048 at 44.1 kHz, 4096 at 48 kHz)."""
+    return 1 << max(0, math.ceil(math.log2(0.046 * sample_rate)))
+
+
+def frame_count(sample_count: int, sample_rate: int, rate: float) -> int:
+    """Number of analysis frames: ⌊duration·rate⌋ + 1."""
+    return int(math.floor(sample_count * rate / sample_rate)) + 1
+
+
+def frame_centres(first: int, stop: int, sample_rate: int, rate: float) -> np.ndarray:
+    """c_j = ⌊j·sr/rate + ½⌋ for j in [first, stop), as int64."""
+    j = np.arange(first, stop, dtype=np.float64)
+    return np.floor(j * sample_rate / rate + 0.5).astype(np.int64)
+
+
+def band_edges(bands: int, sample_rate: float, fmin: float = FMIN,
+               fmax: float = FMAX) -> np.ndarray:
+    """geomspace(fmin, min(fmax, sr/2), bands + 1)."""
+    return np.geomspace(fmin, min(fmax, sample_rate / 2), bands + 1)
+
+
+def hann(length: int) -> np.ndarray:
+    """Periodic Hann window, 0.5 − 0.5·cos(2πn/N) (= scipy.signal.get_window('hann', N))."""
+    return 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(length) / length)
+
+
+def exponential_smoothing(values: np.ndarray, memory: float, previous) -> np.ndarray:
+    """s_j = m·s_{j−1} + (1 − m)·v_j along axis 0, s_{−1} = previous; vectorised over frames.
+
+    Closed form per block: s_j = m^(j+1)·s_{−1} + (1 − m)·m^j·Σ_{i≤j} m^(−i)·v_i, in blocks
+    short enough that m^(−i) stays far from overflow (all terms are positive: no cancellation).
+    """
+    values = np.asarray(values, dtype=np.float64)
+    out = np.empty_like(values)
+    state = np.asarray(previous, dtype=np.float64)
+    if memory < 1e-30:  # below float32 resolution after one step: no smoothing
+        return values.copy()
+    if memory >= 1:
+        out[:] = state
+        return out
+    block = max(1, int(300 / -math.log(memory)))  # m^(−block) ≤ e^300
+    for first in range(0, len(values), block):
+        v = values[first:first + block]
+        j = np.arange(len(v), dtype=np.float64)[:, None]
+        growth = memory ** -j  # m^(−i)
+        decay = memory ** j  # m^j
+        sums = np.cumsum(v * growth, axis=0)
+        out[first:first + len(v)] = memory * decay * state + (1 - memory) * decay * sums
+        state = out[first + len(v) - 1]
+    return out
+
+
+class _Analyser:
+    """Streaming spectrogram: feed mono chunks, get smoothed band values chunk by chunk."""
+
+    def __init__(self, sample_rate, rate=RATE, bands=BANDS, fmin=FMIN, fmax=FMAX,
+                 floor_db=FLOOR_DB, smoothing=SMOOTHING):
+        if not (isinstance(sample_rate, int | np.integer) and sample_rate > 0):
+            raise InputError(f"sample rate must be a positive integer, got {sample_rate}")
+        if not (np.isfinite(rate) and rate > 0):
+            raise InputError(f"the frame rate must be a positive number of frames per second, "
+                             f"got {rate}")
+        if not (isinstance(bands, int | np.integer) and bands >= 1):
+            raise InputError(f"the number of bands must be a positive integer, got {bands}")
+        top = min(fmax, sample_rate / 2)
+        if not (0 < fmin < top):
+            raise InputError(f"the band range {fmin:g}–{top:g} Hz is empty at a sample "
+                             f"rate of {sample_rate} Hz")
+        if not floor_db < 0:
+            raise InputError(f"the loudness floor must be negative (dB), got {floor_db}")
+        if not smoothing >= 0:
+            raise InputError(f"smoothing must be ≥ 0 s, got {smoothing}")
+        self.sample_rate, self.rate, self.floor_db = int(sample_rate), float(rate), floor_db
+        self.N = window_length(sample_rate)
+        self.half = self.N // 2
+        window = hann(self.N)
+        # The 2/Σw scale is folded into the window. Frames, window and FFT are float32: its
+        # rounding noise (≈ −140 dB of full scale) lies far below the −80 dB loudness floor.
+        self.window = (window * (2.0 / window.sum())).astype(np.float32)
+        self.edges = band_edges(bands, sample_rate, fmin, fmax)
+        frequencies = np.arange(self.N // 2 + 1) * sample_rate / self.N
+        first = np.searchsorted(frequencies, self.edges, side="left")  # first bin ≥ edge
+        self.nonempty = first[1:] > first[:-1]
+        self.reduce_starts = first[:-1][self.nonempty]
+        self.reduce_stop = int(first[-1])
+        centres = np.sqrt(self.edges[:-1] * self.edges[1:])[~self.nonempty]
+        below = np.searchsorted(frequencies, centres, side="right") - 1
+        self.interp_index = below
+        self.interp_weight = (centres - frequencies[below]) / (frequencies[below + 1]
+                                                               - frequencies[below])
+        self.memory = math.exp(-1.0 / (rate * smoothing)) if smoothing > 0 else 0.0
+        self.state = np.zeros((1, bands))
+        self.buffer = np.zeros(self.half, dtype=np.float32)
+        self.start = -self.half  # absolute sample index of buffer[0]
+        self.next = 0  # next frame to compute
+        self.total = 0  # samples received
+        self.outputs: list[np.ndarray] = []
+
+    def feed(self, chunk: np.ndarray) -> None:
+        chunk = np.asarray(chunk).ravel()
+        if not np.all(np.isfinite(chunk)):
+            raise InputError("the audio holds NaN or infinite samples")
+        self.total += len(chunk)
+        self.buffer = np.concatenate([self.buffer, chunk.astype(np.float32)])
+        self._process(final=False)
+
+    def finish(self) -> np.ndarray:
+        self.buffer = np.concatenate([self.buffer, np.zeros(self.N + 1, dtype=np.float32)])
+        self._process(final=True)
+        return np.concatenate(self.outputs) if self.outputs else np.zeros((0, len(self.edges) - 1),
+                                                                          np.float32)
+
+    def _process(self, final: bool) -> None:
+        end = self.start + len(self.buffer)  # one past the last sample held
+        if final:
+            stop = frame_count(self.total, self.sample_rate, self.rate)
+        else:
+            stop = int((end - self.half) * self.rate / self.sample_rate) + 2
+            centres = frame_centres(self.next, max(self.next, stop), self.sample_rate, self.rate)
+            stop = self.next + int(np.searchsorted(centres + self.half, end, side="right"))
+        if stop > self.next:
+            windows = np.lib.stride_tricks.sliding_window_view(self.buffer, self.N)
+        for first in range(self.next, stop, FRAME_BATCH):
+            last = min(stop, first + FRAME_BATCH)
+            offsets = frame_centres(first, last, self.sample_rate, self.rate) - self.half
+            self.outputs.append(self._analyse(windows[offsets - self.start]))
+        if stop > self.next:
+            self.next = stop
+        keep_from = int(frame_centres(self.next, self.next + 1, self.sample_rate,
+                                      self.rate)[0]) - self.half
+        if keep_from > self.start:
+            drop = min(keep_from - self.start, len(self.buffer))
+            self.buffer = self.buffer[drop:]
+            self.start += drop
+
+    def _analyse(self, frames: np.ndarray) -> np.ndarray:
+        """(F, N) raw frames → (F, B) smoothed loudness, float32."""
+        magnitude = np.abs(rfft(frames * self.window, axis=1))  # float32
+        bands = np.empty((len(frames), len(self.edges) - 1))
+        if len(self.reduce_starts):
+            bands[:, self.nonempty] = np.maximum.reduceat(
+                magnitude[:, :self.reduce_stop], self.reduce_starts, axis=1)
+        if len(self.interp_index):
+            weight = self.interp_weight
+            bands[:, ~self.nonempty] = (magnitude[:, self.interp_index] * (1 - weight)
+                                        + magnitude[:, self.interp_index + 1] * weight)
+        decibels = 20 * np.log10(np.maximum(bands, 1e-30))  # float64 from here
+        loudness = np.clip((decibels - self.floor_db) / -self.floor_db, 0.0, 1.0)
+        if self.memory == 0.0:
+            return loudness.astype(np.float32)
+        smoothed = exponential_smoothing(loudness, self.memory, self.state[0])
+        self.state = smoothed[-1:]
+        return smoothed.astype(np.float32)
+
+
+@dataclass
+class Spectrogram:
+    """Banded loudness of a track: values[j, b] ∈ [0, 1] at times[j] = j / rate.
+
+    The builders take the analysis options of docs/design.md#spectrogram as keywords, with
+    these defaults: rate=100 frames/s, bands=64, fmin=20 Hz, fmax=16 kHz, floor_db=−80 dB,
+    smoothing=0.08 s.
+
+    Example
+    -------
+    >>> sine = np.sin(2 * np.pi * 440 * np.arange(44100) / 44100)   # 1 s of A4, full scale
+    >>> spectrogram = Spectrogram.from_samples(sine, 44100)
+    >>> spectrogram.values.shape, round(float(spectrogram.duration), 3)
+    ((101, 64), 1.0)
+    >>> loudest = spectrogram.values[50].argmax()
+    >>> bool(spectrogram.band_edges[loudest] <= 440 < spectrogram.band_edges[loudest + 1])
+    True
+    """
+
+    times: np.ndarray  # (T,) seconds
+    band_edges: np.ndarray  # (B+1,) Hz
+    values: np.ndarray  # (T, B) float32
+    rate: float
+    sample_rate: int
+    duration: float
+
+    @property
+    def bands(self) -> int:
+        return self.values.shape[1]
+
+    @property
+    def band_centres(self) -> np.ndarray:
+        """Geometric centre √(edge_b · edge_{b+1}) of each band, Hz."""
+        return np.sqrt(self.band_edges[:-1] * self.band_edges[1:])
+
+    @classmethod
+    def from_chunks(cls, chunks, sample_rate: int, **options) -> Spectrogram:
+        """Analyse an iterable of mono float chunks (the streaming core of the other builders)."""
+        analyser = _Analyser(sample_rate, **options)
+        for chunk in chunks:
+            analyser.feed(chunk)
+        values = analyser.finish()
+        return cls(np.arange(len(values)) / analyser.rate, analyser.edges, values,
+                   analyser.rate, int(sample_rate), analyser.total / sample_rate)
+
+    @classmethod
+    def from_samples(cls, samples, sample_rate: int, **options) -> Spectrogram:
+        """From PCM samples (n,) or (n, channels) in [-1, 1]; channels are averaged."""
+        samples = mono(samples)
+        chunks = (samples[i:i + CHUNK_SAMPLES] for i in range(0, len(samples), CHUNK_SAMPLES))
+        return cls.from_chunks(chunks, sample_rate, **options)
+
+    @classmethod
+    def from_file(cls, path: str | os.PathLike, **options) -> Spectrogram:
+        """Decode and analyse an audio file in bounded memory (any format `open_audio` reads).
+
+        Parameters
+        ----------
+        path : the audio file.
+        options : rate, bands, fmin, fmax, floor_db, smoothing (see the class docstring).
+
+        Returns
+        -------
+        Spectrogram with T = ⌊duration·rate⌋ + 1 frames of B bands.
+        """
+        sample_rate, chunks = open_audio(path)
+        return cls.from_chunks(chunks, sample_rate, **options)
+
+    def at(self, times) -> np.ndarray:
+        """Values at arbitrary times (…,) s → (…, B) float64, linear between frames, clamped."""
+        times = np.asarray(times, dtype=np.float64)
+        values = self.values
+        if len(values) == 1:
+            return np.broadcast_to(values[0].astype(np.float64),
+                                   (*times.shape, self.bands)).copy()
+        position = times * self.rate
+        index = np.clip(np.floor(position), 0, len(values) - 2).astype(np.int64)
+        weight = np.clip(position - index, 0.0, 1.0)[..., None]
+        below = values[index].astype(np.float64)
+        above = values[index + 1].astype(np.float64)
+        return below * (1 - weight) + above * weight
+
+    def save(self, path: str | os.PathLike) -> None:
+        """Write the spectrogram file (docs/design.md#spectrogram-file) atomically."""
+        atomic_save_npz(path, times=self.times, band_edges=self.band_edges,
+                        values=self.values.astype(np.float32), rate=np.float64(self.rate),
+                        sample_rate=np.int64(self.sample_rate),
+                        duration=np.float64(self.duration))
+
+    @classmethod
+    def load(cls, path: str | os.PathLike) -> Spectrogram:
+        """Read a spectrogram file; a missing key or inconsistent shape raises InputError."""
+        data = load_npz(path, FORMAT_KEYS)
+        spectrogram = cls(data["times"], data["band_edges"], data["values"],
+                          float(data["rate"]), int(data["sample_rate"]), float(data["duration"]))
+        values = spectrogram.values
+        if (values.ndim != 2 or spectrogram.times.shape != (len(values),)
+                or spectrogram.band_edges.shape != (values.shape[1] + 1,)):
+            raise InputError(f"{os.fspath(path)}: inconsistent array shapes in "
+                             "spectrogram file")
+        return spectrogram
+
+
+def frame_times(duration: float, fps: float) -> np.ndarray:
+    """Frame times 0, 1/fps, … up to `duration` (s) included: ⌊duration·fps⌋ + 1 frames."""
+    if not (np.isfinite(fps) and fps > 0):
+        raise InputError(f"frames per second must be a positive number, got {fps}")
+    if not (np.isfinite(duration) and duration >= 0):
+        raise InputError(f"the duration must be a finite number of seconds ≥ 0, got {duration}")
+    return np.arange(int(math.floor(duration * fps + 1e-9)) + 1) / float(fps)
+
+
+PICTURE_FORMATS = ("png", "svg", "pdf", "jpg", "jpeg")
+
+
+def check_picture_path(path: str | os.PathLike) -> str:
+    """The picture format named by the suffix of `path`; InputError for one we cannot draw."""
+    suffix = os.path.splitext(os.fspath(path))[1].lstrip(".").lower()
+    if suffix not in PICTURE_FORMATS:
+        raise InputError(f"{os.fspath(path)}: cannot draw a picture of type '{suffix}' "
+                         f"(use {', '.join(PICTURE_FORMATS)})")
+    return suffix
+
+
+def save_picture(spectrogram: Spectrogram, path: str | os.PathLike,
+                 title: str | None = None) -> None:
+    """Draw a spectrogram: time across, band (labelled in Hz) up, loudness as colour."""
+    from matplotlib.figure import Figure  # heavy (≈0.5 s): only for pictures
+
+    format = check_picture_path(path)
+    width = min(16.0, max(6.0, 2 + spectrogram.duration / 4))
+    figure = Figure(figsize=(width, 4.5), dpi=100)
+    axes = figure.subplots()
+    rate, bands = spectrogram.rate, spectrogram.bands
+    image = axes.imshow(spectrogram.values.T, origin="lower", aspect="auto", cmap="magma",
+                        vmin=0, vmax=1, interpolation="nearest",
+                        extent=(-0.5 / rate, (len(spectrogram.values) - 0.5) / rate,
+                                -0.5, bands - 0.5))
+    ticks = list(range(0, bands, max(1, bands // 8)))
+    axes.set_yticks(ticks)
+    axes.set_yticklabels([f"{spectrogram.band_centres[b]:.0f}" for b in ticks])
+    axes.set_xlabel("time (s)")
+    axes.set_ylabel("band centre (Hz)")
+    axes.set_title(title or f"{bands} bands, {rate:g} frames/s, {spectrogram.sample_rate} Hz")
+    figure.colorbar(image, ax=axes, label="loudness")
+    figure.tight_layout()
+    atomic_write(path, lambda file: figure.savefig(file, format=format))

@@ -1,0 +1,80 @@
+"""`eigendance modes` and `eigendance animate-rig`."""
+
+import json
+
+import numpy as np
+import pytest
+import soundfile
+
+from eigendance.cli import main
+from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import parse_modes
+from helpers import fixture_path
+
+
+def test_modes_writes_the_modal_file_and_prints_a_table(tmp_path, capsys):
+    output = tmp_path / "fox.npz"
+    assert main(["modes", fixture_path("rigged", "Fox.glb"), "-o", str(output),
+                 "--show", "4"]) == 0
+    printed = capsys.readouterr().out
+    assert "frequency Hz" in printed and "6 rigid + 69 vibration modes" in printed
+    model = ModalModel.load(output)
+    assert model.n_modes == 69 and model.rigid_modes == 6 and model.n_bodies == 24
+    assert main(["modes", "loop16", "-o", str(output)]) == 1  # exists, no --force
+    assert "--force" in capsys.readouterr().err
+    assert main(["modes", "loop16", "-o", str(output), "--force"]) == 0
+    assert ModalModel.load(output).nullspace_dim == 19
+
+
+def test_modes_reports_a_bad_rig_on_one_line(tmp_path, capsys):
+    rig = tmp_path / "rig.json"
+    rig.write_text(json.dumps({"format": "eigendance.skeleton", "version": 1,
+                               "bodies": [{"name": "a", "start": [0, 0, 0], "end": [0, 0, 0],
+                                           "radius": 1}]}))
+    assert main(["modes", str(rig), "-o", str(tmp_path / "m.npz")]) == 1
+    error = capsys.readouterr().err.strip()
+    assert error.count("\n") == 0 and "body 'a' has zero length" in error
+
+
+def test_animate_rig_without_audio(tmp_path):
+    output = tmp_path / "anim.npz"
+    assert main(["animate-rig", "loop8", "--modes", "0,2-3", "--fps", "10", "--duration",
+                 "1", "-o", str(output)]) == 0
+    with np.load(output) as data:
+        assert data["positions"].shape == (11, len(data["rest_vertices"]), 3)
+        assert data["positions"].dtype == np.float32
+        assert data["faces"].shape[1] == 3 and data["times"].shape == (11,)
+        assert data["body_transforms"].shape == (11, 8, 4, 4)
+        assert data["modes"].tolist() == [0, 2, 3]
+        coefficients = data["coefficients"]
+        assert np.all(coefficients[:, [1, 4]] == 0) and np.any(coefficients[:, 0] != 0)
+        motion = np.abs(data["positions"] - data["rest_vertices"]).max()
+        assert 0.01 < motion < 0.5  # visible, not exploding (the loop is about 3 wide)
+
+
+def test_animate_rig_with_audio_drive(tmp_path, capsys):
+    rate = 8000
+    time = np.arange(rate) / rate
+    quiet_then_loud = np.where(time < 0.5, 0.0, 0.5 * np.sin(2 * np.pi * 60 * time))
+    audio = tmp_path / "tone.wav"
+    soundfile.write(audio, quiet_then_loud, rate)
+    output = tmp_path / "anim.npz"
+    assert main(["animate-rig", fixture_path("rigged", "RiggedSimple.glb"), str(audio),
+                 "--fps", "20", "--bands", "4", "--skinning", "lbs", "-o", str(output)]) == 0
+    with np.load(output) as data:
+        coefficients = data["coefficients"]
+        assert len(coefficients) == 21
+        assert np.abs(coefficients[:9]).max() < 1e-9  # silence stands still
+        assert np.abs(coefficients[12:]).max() > 0
+    bad = tmp_path / "bad.wav"
+    bad.write_text("not audio")
+    assert main(["animate-rig", "chain", str(bad), "-o", str(tmp_path / "x.npz")]) == 1
+    assert "bad.wav: not a readable audio file" in capsys.readouterr().err
+
+
+def test_mode_selection():
+    assert parse_modes("0,2-4", 6).tolist() == [0, 2, 3, 4]
+    assert parse_modes(None, 3).tolist() == [0, 1, 2]
+    with pytest.raises(Exception, match="mode 9 does not exist"):
+        parse_modes("9", 5)
+
