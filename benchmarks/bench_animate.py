@@ -1,4 +1,4 @@
-"""Animation throughput: the Stanford bunny with k = 300 harmonics (DESIGN §2, §4).
+"""Animation throughput: the Stanford bunny with k = 300 harmonics (docs/design.md#filter).
 
 Prints the project's figures — frames per second of `iter_positions` (spectrogram lookup, filter,
 fused product, original coordinates, float32; in memory) and of `write_animation` (the same plus

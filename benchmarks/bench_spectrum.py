@@ -1,4 +1,5 @@
-"""Spectrogram speed: a 3-minute stereo 44.1 kHz track, decoded and analysed (DESIGN §3).
+"""Spectrogram speed: a 3-minute stereo 44.1 kHz track, decoded and analysed
+(docs/design.md#spectrogram).
 
 Prints the project's figure (times real time, decode included; target ≥ 200×) beside a baseline
 measured in the same run: the same definition computed frame by frame in a Python loop (one FFT
@@ -34,7 +35,7 @@ def stereo_track(seconds: float) -> tuple[np.ndarray, int]:
 
 def naive_spectrogram(samples: np.ndarray, sr: int, rate=100.0, bands=64, floor_db=-80.0,
                       smoothing=0.08) -> np.ndarray:
-    """DESIGN §3 written the obvious way: a Python loop over frames and bands."""
+    """docs/design.md#spectrogram written the obvious way: a Python loop over frames and bands."""
     N = 1 << math.ceil(math.log2(0.046 * sr))
     window = hann(N)
     edges = band_edges(bands, sr)

@@ -18,6 +18,16 @@ class EigendanceError(Exception):
     """Base of the errors eigendance raises on purpose; ``str(error)`` is one line.
 
     remedy: settings that may avoid the error, {parameter: value}, e.g. {"laplacian": "robust"}.
+
+    Parameters
+    ----------
+    message : the error on one line (folded onto one line if it is not).
+    remedy : settings that may avoid it.
+
+    Example
+    -------
+    >>> str(EigendanceError("spaced    out\ttext"))
+    'spaced out text'
     """
 
     def __init__(self, message: str, remedy: dict | None = None):
@@ -26,7 +36,20 @@ class EigendanceError(Exception):
 
 
 class InputError(EigendanceError, ValueError):
-    """Bad input or an impossible request; `status` is the HTTP status the server answers."""
+    """Bad input or an impossible request; `status` is the HTTP status the server answers.
+
+    Parameters
+    ----------
+    message : one line naming the input and the problem.
+    remedy : settings that may avoid it, e.g. {"laplacian": "robust"}.
+    status : HTTP status (400, or 404, 409, 413, 415 where they fit).
+
+    Example
+    -------
+    >>> error = InputError("bunny.obj: 47 non-manifold edges", remedy={"laplacian": "robust"})
+    >>> str(error), error.remedy, error.status
+    ('bunny.obj: 47 non-manifold edges', {'laplacian': 'robust'}, 400)
+    """
 
     def __init__(self, message: str, remedy: dict | None = None, status: int = 400):
         super().__init__(message, remedy)
@@ -34,7 +57,18 @@ class InputError(EigendanceError, ValueError):
 
 
 class InternalError(EigendanceError, RuntimeError):
-    """A failure of eigendance itself (a bug to report), not of its input."""
+    """A failure of eigendance itself (a bug to report), not of its input.
+
+    Parameters
+    ----------
+    message : one line saying what failed.
+    remedy : settings that may avoid it, e.g. {"solver": "eigsh"}.
+
+    Example
+    -------
+    >>> isinstance(InternalError("eigen-solver: residual 1e-3"), EigendanceError)
+    True
+    """
 
 
 def one_line(error: BaseException | str, limit: int = 300) -> str:

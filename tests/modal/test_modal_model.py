@@ -1,4 +1,4 @@
-"""Skeletons and modal analysis (DESIGN §5): the thesis's Table 4.1 and hand-derived physics."""
+"""Modal analysis (docs/design.md#modal-model): the thesis's Table 4.1, hand-derived physics."""
 
 import math
 

@@ -1,4 +1,4 @@
-"""Modal skinning against linear blend skinning of the exact body transforms (DESIGN §5)."""
+"""Modal skinning against linear blend skinning of exact body transforms (design.md#skinning)."""
 
 import numpy as np
 import pytest

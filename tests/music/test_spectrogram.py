@@ -46,7 +46,7 @@ def test_exponential_smoothing_matches_recursion_for_any_memory():
 
 def test_window_length():
     assert window_length(44100) == 2048
-    # 0.046·48000 = 2208 → 4096 (DESIGN §3 says "2048 at 44.1/48 kHz": the formula wins here).
+    # 0.046·48000 = 2208 → 4096 (docs/design.md#spectrogram).
     assert window_length(48000) == 4096
     assert window_length(192000) == 16384
     assert window_length(8000) == 512
@@ -100,7 +100,7 @@ def test_smoothing_step_response_has_time_constant_tau():
     memory = np.exp(-1 / (rate * tau))
     expected = np.zeros_like(raw)
     state = np.zeros(raw.shape[1])
-    for j, v in enumerate(raw):  # the recursion of DESIGN §3, one frame at a time
+    for j, v in enumerate(raw):  # the recursion of docs/design.md#spectrogram, frame by frame
         state = memory * state + (1 - memory) * v
         expected[j] = state
     np.testing.assert_allclose(smooth, expected, atol=1e-6)

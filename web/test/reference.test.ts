@@ -73,7 +73,7 @@ describe("binary bundles", () => {
   });
 });
 
-describe("filter (DESIGN §4)", () => {
+describe("filter (docs/design.md#mapping)", () => {
   it("interpolates the spectrogram between frames like Spectrogram.at", () => {
     reference.times.forEach((t: number, i: number) => {
       expectClose(spectrumAt(spectrum, t), reference.values[i], 1e-6);

@@ -31,6 +31,15 @@ class Mesh:
     faces: (m, 3) int64 triangles, every vertex referenced, no zero-area or repeated triangle.
     vertex_map: (n_input,) int64, the cleaned index of each input vertex, -1 for dropped ones.
     report: what the clean-up changed, e.g. {"duplicate_vertices": 3, "zero_area_faces": 1}.
+
+    Example
+    -------
+    >>> square = Mesh.from_arrays([[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 0]],
+    ...                           [[0, 1, 2], [0, 2, 3], [4, 1, 2]])
+    >>> square.n, len(square.faces), square.report["duplicate_vertices"]
+    (4, 2, 1)
+    >>> square.vertices.min(axis=0).tolist(), square.scale
+    ([-1.0, -1.0, 0.0], 1.0)
     """
 
     vertices: np.ndarray
@@ -52,7 +61,18 @@ class Mesh:
 
     @classmethod
     def from_arrays(cls, vertices, faces, name: str = "mesh") -> Mesh:
-        """Check, clean and normalise raw arrays; see the module docstring."""
+        """Check, clean and normalise raw arrays (see the module docstring).
+
+        Parameters
+        ----------
+        vertices : (n, 3) finite coordinates, any unit.
+        faces : (m, 3) vertex indices of triangles (integers in 0 … n − 1).
+        name : how messages call this mesh (a file name).
+
+        Returns
+        -------
+        Mesh, normalised into [-1, 1]³; InputError for anything that cannot be repaired.
+        """
         vertices, faces = _validated(vertices, faces, name)
         vertices, faces, vertex_map, report = _cleaned(vertices, faces, name)
         lower, upper = vertices.min(axis=0), vertices.max(axis=0)
@@ -84,6 +104,21 @@ def load_mesh(path: str | os.PathLike) -> Mesh:
     """Read a mesh file (OBJ, PLY, OFF, STL, glTF/GLB) with trimesh and clean it.
 
     All triangle primitives of a glTF scene are merged with their node transforms applied.
+
+    Parameters
+    ----------
+    path : an OBJ, PLY, OFF, STL, glTF or GLB file.
+
+    Returns
+    -------
+    Mesh, cleaned and normalised (see `Mesh.from_arrays`).
+
+    Example
+    -------
+    >>> from importlib.resources import files
+    >>> cat = load_mesh(files("eigendance") / "data" / "cat_lowres.obj")
+    >>> cat.n, len(cat.faces), float(np.abs(cat.vertices).max())
+    (7949, 15894, 1.0)
     """
     import trimesh  # heavy (≈0.8 s): imported when a mesh file is read
 

@@ -136,10 +136,22 @@ def add_tube_skin(skeleton: Skeleton, rings: int = 8, around: int = 12,
 
 
 def load_rig(rig: str | os.PathLike) -> Skeleton:
-    """A skeleton JSON (.json) or glTF 2.0 skin (.glb, .gltf), or the name of a built-in rig.
+    """A rig with its skin, from a file or by name.
 
-    A name of SAMPLE_RIGS is a built-in rig unless a file of that name exists. A skeleton
-    without a mesh gets a tube skin.
+    Parameters
+    ----------
+    rig : a skeleton JSON (.json), a glTF 2.0 skin (.glb, .gltf), or the name of a built-in
+        rig (SAMPLE_RIGS), unless a file of that name exists.
+
+    Returns
+    -------
+    Skeleton with vertices, faces and weights (a skeleton without a mesh gets a tube skin).
+
+    Example
+    -------
+    >>> loop = load_rig("loop4")
+    >>> loop.n_bodies, len(loop.joints), loop.weights.shape[1]
+    (4, 4, 4)
     """
     rig = os.fspath(rig)
     if rig in SAMPLE_RIGS and not os.path.exists(rig):

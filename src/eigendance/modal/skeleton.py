@@ -146,6 +146,21 @@ class Skeleton:
 
     vertices (n, 3), faces (m, 3) and weights (n, n_bodies, rows summing to 1) describe the skin
     in the same coordinates as the bodies; all three are None for a bare skeleton.
+
+    Parameters
+    ----------
+    bodies : solid cylinders (lengths in any unit, densities in kg per unit³).
+    joints : pairwise elastic joints, stiffness per free row.
+    name : how messages call it (a file name).
+
+    Example
+    -------
+    >>> arm = Body("arm", np.zeros(3), np.array([1.0, 0, 0]), radius=0.1)
+    >>> hand = Body("hand", np.array([1.0, 0, 0]), np.array([1.0, 1, 0]), radius=0.1)
+    >>> elbow = Joint("elbow", "revolute", (0, 1), np.array([1.0, 0, 0]), np.array([50.0]))
+    >>> skeleton = Skeleton([arm, hand], [elbow])
+    >>> skeleton.n_bodies, round(arm.mass, 2)        # ρπr²ℓ with ρ = 1000
+    (2, 31.42)
     """
 
     bodies: list[Body]

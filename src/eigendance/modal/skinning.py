@@ -35,11 +35,27 @@ def _checked(vertices, weights, n_bodies):
 
 
 class ModalSkin:
-    """Precomputed modal skinning of `vertices` (n, 3) with `weights` (n, n_b) (dense or scipy
-    sparse, rows summing to 1) for the modes of `model`.
+    """Precomputed modal skinning of a mesh for the modes of a model.
 
-    displacement: (nm, 3n) — row κ is τ_·κ flattened; rotation: (nm, 3n) — ρ_·κ flattened.
-    dtype: float32 halves memory and time per frame (what a GPU uses); float64 by default.
+    Parameters
+    ----------
+    model : the rig's modes.
+    vertices : (n, 3) rest positions, in the bodies' coordinates.
+    weights : (n, n_b) skin weights (dense or scipy sparse), rows summing to 1.
+    dtype : float32 halves memory and time per frame (what a GPU uses); float64 by default.
+
+    Attributes: displacement (nm, 3n) — row κ is τ_·κ flattened; rotation (nm, 3n) — ρ_·κ.
+
+    Example
+    -------
+    >>> from eigendance.modal.motion import mode_coefficients
+    >>> from eigendance.modal.sample_rigs import sample_rig
+    >>> rig = sample_rig("chain")
+    >>> model = ModalModel.from_skeleton(rig)
+    >>> skin = ModalSkin(model, rig.vertices, rig.weights)
+    >>> moved = skin.positions(mode_coefficients(model, [0.0, 0.25]))   # (T, n, 3)
+    >>> moved.shape == (2, len(rig.vertices), 3), bool(np.allclose(moved[0], rig.vertices))
+    (True, True)
     """
 
     def __init__(self, model: ModalModel, vertices, weights, dtype=np.float64):
@@ -82,8 +98,26 @@ class ModalSkin:
 
 
 def linear_blend_skinning(vertices, weights, transforms, normals=None):
-    """Positions (T, n, 3) (and normals, if given) of vertices skinned by the body transforms
-    (T, n_b, 4, 4) blended with `weights` (n, n_b): x' = Σ_b w_ib (A_b x + t_b)."""
+    """Linear blend skinning: x' = Σ_b w_ib (A_b x + t_b).
+
+    Parameters
+    ----------
+    vertices : (n, 3) rest positions.
+    weights : (n, n_b) skin weights, rows summing to 1 (dense or scipy sparse).
+    transforms : (T, n_b, 4, 4) (or (n_b, 4, 4)) world transforms of the bodies from the rest
+        pose, e.g. `modal.motion.body_transforms`.
+    normals : optional (n, 3) rest normals, turned by the blended linear parts.
+
+    Returns
+    -------
+    positions (T, n, 3), and unit normals (T, n, 3) when `normals` is given.
+
+    Example
+    -------
+    >>> lift = np.eye(4); lift[2, 3] = 1.0                    # one body, moved up by 1
+    >>> linear_blend_skinning([[0.0, 0, 0], [1, 0, 0]], np.ones((2, 1)), lift[None]).tolist()
+    [[[0.0, 0.0, 1.0], [1.0, 0.0, 1.0]]]
+    """
     transforms = np.asarray(transforms, dtype=float)
     if transforms.ndim == 3:
         transforms = transforms[None]

@@ -28,7 +28,23 @@ VERSION = 1
 
 @dataclass
 class Mapping:
-    """A sound-to-motion mapping: transfer (B,) in [0, 1], amplification (K,), seed or None."""
+    """A sound-to-motion mapping.
+
+    Parameters
+    ----------
+    transfer : (B,) values in [0, 1]: band ξ drives target ⌊t(ξ)·k⌋ of k.
+    amplification : (K,) finite values, resampled to the k targets by normalised index.
+    seed : the breeding seed that made it, or None.
+    name : how messages call it (a file name).
+
+    Example
+    -------
+    >>> mapping = Mapping(transfer=[0.1, 0.1, 0.9], amplification=[2.0, 0.0, -1.0])
+    >>> mapping.filter([0.5, 0.25, 1.0], k=3).tolist()   # 2·(0.5 + 0.25) + 1, 1, −1·1 + 1
+    [2.5, 1.0, 0.0]
+    >>> Mapping.from_json(mapping.to_json()).to_json() == mapping.to_json()
+    True
+    """
 
     transfer: np.ndarray
     amplification: np.ndarray
@@ -54,7 +70,11 @@ class Mapping:
         return resample_amplification(self.amplification, k)
 
     def filter(self, values, k: int, offset: float = 1.0) -> np.ndarray:
-        """φ for band values (…, B) → (…, k); see `filters` for many mappings at once."""
+        """φ = a_k·Σ g̃ + offset for band values (…, B) → (…, k).
+
+        offset: 1 for harmonics (a ≡ 0 leaves a mesh still), the rig's b for modes.
+        `filters` evaluates many mappings at once.
+        """
         return filters([self], values, k, offset)[0]
 
     # JSON (docs/design.md#mapping-file) ------------------------------------------------------

@@ -1,0 +1,108 @@
+"""The eigensolver's band workers: started from any thread, gone with the process that asked.
+
+The workers come from a fork server, so the caller may be multi-threaded (the web server solves
+in a thread); they die when the caller is killed by any signal, and Ctrl-C stops a solve at
+once instead of waiting for the bands in flight.
+"""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+import trimesh
+
+from eigendance.harmonic.eigensolver import solve_bands
+from eigendance.harmonic.laplacian import laplacian
+from helpers import sphere
+
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
+
+
+def parents() -> dict[int, int]:
+    """pid → parent pid of every live (non-zombie) process."""
+    table = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit():
+            try:
+                with open(f"/proc/{name}/stat") as file:
+                    fields = file.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if fields[0] != "Z":
+                table[int(name)] = int(fields[1])
+    return table
+
+
+def descendants(pid: int) -> set[int]:
+    table, found, frontier = parents(), set(), {pid}
+    while frontier:
+        frontier = {child for child, parent in table.items() if parent in frontier} - found
+        found |= frontier
+    return found
+
+
+def alive(pids: set[int]) -> set[int]:
+    return pids & set(parents())
+
+
+@pytest.fixture(scope="module")
+def ball(tmp_path_factory):
+    path = tmp_path_factory.mktemp("ball") / "ball.obj"
+    trimesh.creation.icosphere(5).export(path)  # 10242 vertices: a solve of many bands
+    return str(path)
+
+
+def start_solve(ball, tmp_path):
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
+    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "basis", ball, "-k",
+                                "900", "-o", str(tmp_path / "out.npz")], env=env,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               start_new_session=True)
+    deadline = time.time() + 60
+    while len(workers := descendants(process.pid)) < 3:  # fork server + two band workers
+        assert process.poll() is None and time.time() < deadline, "no band workers started"
+        time.sleep(0.1)
+    return process, workers
+
+
+@pytest.mark.parametrize("sent", [signal.SIGKILL, signal.SIGTERM])
+def test_workers_die_with_a_killed_caller(ball, tmp_path, sent):
+    process, workers = start_solve(ball, tmp_path)
+    os.kill(process.pid, sent)
+    process.wait(10)
+    deadline = time.time() + 5
+    while alive(workers) and time.time() < deadline:
+        time.sleep(0.1)
+    assert not alive(workers)
+    assert not (tmp_path / "out.npz").exists()
+
+
+def test_ctrl_c_stops_a_solve_at_once(ball, tmp_path):
+    process, workers = start_solve(ball, tmp_path)
+    started = time.time()
+    os.killpg(process.pid, signal.SIGINT)  # what a terminal sends to its foreground group
+    _, errors = process.communicate(timeout=20)
+    assert process.returncode == 130 and "interrupted" in errors and "Traceback" not in errors
+    assert time.time() - started < 5
+    time.sleep(1)
+    assert not alive(workers)
+
+
+def test_bands_solved_from_a_thread_equal_bands_solved_from_the_main_thread():
+    mesh = sphere(4)
+    stiffness, mass = laplacian(mesh.vertices, mesh.faces)
+    results = {}
+
+    def run():
+        results["thread"] = solve_bands(stiffness, mass, 200, per_band=40)
+
+    worker = threading.Thread(target=run)
+    worker.start()
+    worker.join(120)
+    main_values, _ = solve_bands(stiffness, mass, 200, per_band=40)
+    np.testing.assert_allclose(results["thread"][0], main_values, rtol=1e-9, atol=1e-9)
