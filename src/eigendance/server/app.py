@@ -27,7 +27,11 @@ from eigendance.server.library import Library, kind_of
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
                ".oga": "audio/ogg", ".opus": "audio/ogg", ".flac": "audio/flac",
                ".m4a": "audio/mp4"}
+# The gallery-size rule the page follows (GET /api/config); `?size=` outside it falls back to
+# DEFAULT_GALLERY with a message.
+MIN_GALLERY = 2
 MAX_GALLERY = 16
+DEFAULT_GALLERY = 8
 
 
 def static_folder() -> str | None:
@@ -101,6 +105,10 @@ def create_app(paths=(), library: Library | None = None, folder: str | None = No
             return json.loads(body)
         except ValueError:
             raise HTTPException(400, "the request body is not valid JSON") from None
+
+    async def get_config(request):
+        return JSONResponse({"gallery": {"min": MIN_GALLERY, "max": MAX_GALLERY,
+                                         "default": DEFAULT_GALLERY}})
 
     async def get_library(request):
         return JSONResponse(library.as_json())
@@ -261,6 +269,7 @@ def create_app(paths=(), library: Library | None = None, folder: str | None = No
         return error(400, str(problem))
 
     routes = [
+        Route("/api/config", get_config),
         Route("/api/library", get_library),
         Route("/api/meshes/{id}", get_mesh),
         Route("/api/meshes/{id}/basis.bin", get_basis),
