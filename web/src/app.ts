@@ -26,6 +26,7 @@ export class App {
   readonly gallery: GalleryView;
   readonly player: PlayerView;
   readonly library: Library;
+  readonly recorder: Recorder;
   view: View;
   /** the library had a mesh and a song, and the first gallery was asked for */
   private started = false;
@@ -46,7 +47,7 @@ export class App {
     this.player = new PlayerView(this.motion, { status, open, requestDraw,
       rendering: () => ({ path: this.viewer.path, frameMs: this.viewer.frameMs }),
       harmonicScale: (index) => this.viewer.deformer?.harmonicScale(index) ?? 1 });
-    new Recorder($<HTMLCanvasElement>("gl"), this.transport, $<HTMLButtonElement>("record"),
+    this.recorder = new Recorder($<HTMLCanvasElement>("gl"), this.transport, $<HTMLButtonElement>("record"),
       () => this.play());
     this.library = new Library(options, this.motion, this.viewer, this.transport, status);
     this.library.onBasis = () => { this.gallery.basisChanged(); this.player.basisChanged(); };
