@@ -152,7 +152,7 @@ def test_uploaded_mesh_gets_its_basis_and_appears(browser, live_server, web_file
 def test_live_playback_follows_the_audio_clock_and_records_webm_with_audio(browser,
                                                                            live_server):
     page = browser.new_page(viewport={"width": 900, "height": 700}, accept_downloads=True)
-    page.goto(live_server["url"] + "?size=4")
+    page.goto(live_server["url"] + "?test&size=4")
     page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
     page.evaluate("window.eigendance.ready")
     page.click("#tab-player")
@@ -202,7 +202,7 @@ def test_dropping_an_audio_file_makes_it_the_current_song(browser, live_server, 
 
 
 def test_playback_stops_at_the_end_of_the_song_and_rewinds(browser, live_server):
-    page = open_app(browser, live_server["url"], "?size=4")
+    page = open_app(browser, live_server["url"], "?test&size=4")
     duration = page.evaluate("window.eigendance.info().duration")
     page.eval_on_selector("#seek", "(seek, t) => { seek.value = t; "
                                    "seek.dispatchEvent(new Event('input')); }", duration - 0.6)

@@ -223,6 +223,11 @@ def test_gallery_size_and_breed_seed_are_checked(client):
         error_of(client.post("/api/breed", json={"parents": [mapping], "seed": seed}), 400)
 
 
+def test_config_holds_the_gallery_size_rule(client):
+    """The page builds its *tiles* menu and checks `?size=` from this."""
+    assert client.get("/api/config").json() == {"gallery": {"min": 2, "max": 16, "default": 8}}
+
+
 def test_serves_the_built_front_end(client):
     response = client.get("/")
     assert response.status_code == 200 and "eigendance" in response.text

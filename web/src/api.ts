@@ -32,6 +32,10 @@ export async function postJSON<T>(url: string, body: unknown): Promise<T> {
 
 export const library = () => getJSON<Library>("api/library");
 
+/** The server's rules the page follows (`{gallery: {min, max, default}}`), checked by
+ * `options.galleryRule`. */
+export const config = () => getJSON<unknown>("api/config");
+
 /** The basis of a mesh; `half`: harmonics sent as float16 (half the download). */
 export async function basis(meshId: string, half = false): Promise<Basis> {
   const query = half ? "?dtype=float16" : "";

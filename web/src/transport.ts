@@ -1,0 +1,112 @@
+// The audio transport: the song's AudioContext, play / pause / seek, and the clock that every
+// frame's time comes from (DESIGN §6: time from the audio clock, never from frame counts).
+
+/** What the render loop needs of a clock. */
+export interface Clock {
+  readonly playing: boolean;
+  /** The song time now (s). Reads the clock only: no side effects. */
+  now(): number;
+  /** Whether playback has reached the end of the song (the loop then calls `rewind`). */
+  ended(): boolean;
+  /** Stop and go back to the start. */
+  rewind(): void;
+}
+
+export class AudioTransport implements Clock {
+  /** The song's length (s), from its spectrogram, so audio and motion end together. */
+  duration = 0;
+  /** Called when playback starts or stops (to show ▶ or ❚❚). */
+  onChange: (playing: boolean) => void = () => {};
+
+  private context: AudioContext | null = null;
+  private output: GainNode | null = null;
+  private buffer: AudioBuffer | null = null;
+  private source: AudioBufferSourceNode | null = null;
+  /** context time at which song time 0 would have played */
+  private startedAt = 0;
+  /** song time while paused */
+  private offset = 0;
+  private isPlaying = false;
+
+  /** `createContext` is replaceable so tests can drive a fake clock. */
+  constructor(private readonly createContext: () => AudioContext = () => new AudioContext()) {}
+
+  get playing(): boolean { return this.isPlaying; }
+
+  now(): number {
+    const t = this.isPlaying && this.context ? this.context.currentTime - this.startedAt
+      : this.offset;
+    return Math.min(t, this.duration);
+  }
+
+  ended(): boolean {
+    return this.isPlaying && this.context !== null
+      && this.context.currentTime - this.startedAt >= this.duration;
+  }
+
+  /** Decode and keep a song's audio (`bytes`), or with null only its length: `?render` mode
+   * plays no sound and starts at 0. Throws when the browser cannot decode the audio. */
+  async load(bytes: ArrayBuffer | null, duration: number): Promise<void> {
+    this.pause();
+    this.buffer = null;
+    this.duration = duration;
+    if (bytes === null) { this.offset = 0; return; }
+    this.buffer = await this.audio().decodeAudioData(bytes);
+  }
+
+  play(): void {
+    if (this.isPlaying || !this.buffer) return;
+    const context = this.audio();
+    void context.resume();
+    const source = context.createBufferSource();
+    source.buffer = this.buffer;
+    source.connect(this.output!);
+    source.start(0, this.offset);
+    this.source = source;
+    this.startedAt = context.currentTime - this.offset;
+    this.isPlaying = true;
+    this.onChange(true);
+  }
+
+  pause(): void {
+    if (!this.isPlaying) return;
+    this.offset = this.now();
+    this.isPlaying = false;
+    try { this.source?.stop(); } catch { /* already stopped */ }
+    this.source = null;
+    this.onChange(false);
+  }
+
+  seek(t: number): void {
+    const wasPlaying = this.isPlaying;
+    this.pause();
+    this.offset = Math.max(0, Math.min(t, this.duration));
+    if (wasPlaying) this.play();
+  }
+
+  rewind(): void {
+    this.pause();
+    this.offset = 0;
+  }
+
+  /** A stream of what plays, for the recorder; `untap` it when done. */
+  tap(): MediaStreamAudioDestinationNode {
+    const destination = this.audio().createMediaStreamDestination();
+    this.output!.connect(destination);
+    return destination;
+  }
+
+  untap(destination: MediaStreamAudioDestinationNode): void {
+    this.output?.disconnect(destination);
+  }
+
+  /** The AudioContext, made on first use (browsers want a page gesture before it sounds). */
+  private audio(): AudioContext {
+    if (!this.context) {
+      this.context = this.createContext();
+      this.output = this.context.createGain();
+      this.output.connect(this.context.destination);
+    }
+    return this.context;
+  }
+}

@@ -1,0 +1,56 @@
+// URL options and the gallery-size rule (api/config): a bad ?size= falls back to the default
+// with a message, never a hung page.
+import { describe, expect, it } from "vitest";
+import { galleryRule, gallerySize, readOptions, sizeChoices, wantsHooks } from "../src/options";
+
+const rule = { min: 2, max: 16, default: 8 };
+
+describe("gallery size", () => {
+  it("takes any integer of the rule, odd ones included", () => {
+    for (const size of [2, 3, 9, 16]) {
+      expect(gallerySize(String(size), rule)).toEqual({ size, problem: null });
+    }
+    expect(gallerySize(null, rule)).toEqual({ size: 8, problem: null });
+  });
+
+  it("falls back to the default with a message outside the rule or for non-integers", () => {
+    for (const raw of ["1", "17", "0", "-4", "6.5", "abc", "", "1e1", "0x8"]) {
+      const { size, problem } = gallerySize(raw, rule);
+      expect(size).toBe(8);
+      expect(problem).toContain(`?size=${raw} is not a gallery size`);
+      expect(problem).toContain("from 2 to 16");
+    }
+  });
+
+  it("offers every size from 4 to the maximum, and a smaller current one", () => {
+    expect(sizeChoices(rule, 8)).toEqual([4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]);
+    expect(sizeChoices(rule, 2)[0]).toBe(2);
+    expect(sizeChoices({ min: 6, max: 8, default: 6 }, 6)).toEqual([6, 7, 8]);
+  });
+
+  it("checks the server's answer", () => {
+    expect(galleryRule({ gallery: rule })).toEqual(rule);
+    expect(() => galleryRule({})).toThrow(/api\/config/);
+    expect(() => galleryRule({ gallery: { min: 2, max: 16, default: 20 } })).toThrow();
+    expect(() => galleryRule({ gallery: { min: "2", max: 16, default: 8 } })).toThrow();
+  });
+});
+
+describe("URL options", () => {
+  it("reads every option", () => {
+    const options = readOptions("?size=6&mesh=m&song=s&mapping=p&view=player&half&render"
+      + "&bare&path=cpu&batch=4");
+    expect(options).toMatchObject({ size: "6", mesh: "m", song: "s", mapping: "p",
+      view: "player", half: true, render: true, test: false, bare: true, path: "cpu", batch: 4 });
+    expect(readOptions("?half=0").half).toBe(false);
+    expect(readOptions("").half).toBeNull();
+    expect(readOptions("?path=tpu").path).toBeNull();
+  });
+
+  it("installs the hooks only for ?render and ?test", () => {
+    expect(wantsHooks(readOptions(""))).toBe(false);
+    expect(wantsHooks(readOptions("?size=4&view=player"))).toBe(false);
+    expect(wantsHooks(readOptions("?render"))).toBe(true);
+    expect(wantsHooks(readOptions("?test"))).toBe(true);
+  });
+});
