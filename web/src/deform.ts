@@ -1,4 +1,4 @@
-// GPU deformation (DESIGN §6): U packed four harmonics per RGBA32F texel in a float texture,
+// GPU deformation (docs/design.md#rendering): U packed four harmonics per RGBA32F texel in a float texture,
 // per tile only the k filter values change, uploaded as a uniform array of weights
 // (φ − 1) ⊙ X̃ (see filter.ts shaderWeights). A CPU path gives the same numbers.
 // The GLSL is in shaders.ts, the batched positions pass in positions-pass.ts.

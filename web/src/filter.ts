@@ -1,4 +1,4 @@
-// The filter of DESIGN §3–§4, evaluated per frame in the browser; the same numbers as the Python
+// The filter of docs/design.md#mapping, evaluated per frame in the browser; the same numbers as the Python
 // reference (eigendance.mapping / eigendance.animate).
 import type { Basis, Spectrum } from "./bundle";
 
@@ -42,7 +42,7 @@ export function smoothed(spectrum: Spectrum, tau: number): Float32Array {
   return out;
 }
 
-/** Amplification resampled to k entries by normalised index (DESIGN §8). */
+/** Amplification resampled to k entries by normalised index (docs/design.md#mapping). */
 export function resampleAmplification(amplification: number[], k: number): Float64Array {
   const K = amplification.length;
   const out = new Float64Array(k);

@@ -1,4 +1,4 @@
-// The gallery (DESIGN §4): S tiles dancing to the same song, selection, breeding, and the
+// The gallery (docs/design.md#gallery): S tiles dancing to the same song, selection, breeding, and the
 // generations one can go back and forth through (◀ ▶), with each tile's two plots.
 import * as api from "./api";
 import { TILE_COLORS } from "./deform";

@@ -1,5 +1,5 @@
 // eigendance web app: an animated gallery and a live player, in sync with the music
-// (DESIGN §4, §6). Entry only: read the URL options, start the App, and put the test / offline
+// (docs/design.md#gallery, #rendering). Entry only: read the URL options, start the App, and put the test / offline
 // rendering hooks on `window.eigendance` when `?render` or `?test` asks for them.
 import { App } from "./app";
 import { installHooks } from "./hooks";

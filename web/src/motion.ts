@@ -1,5 +1,5 @@
 // The motion being shown: the current mesh's basis and song's spectrum, and from them the band
-// values and per-mapping filter weights at any time t (DESIGN §3–§4). Shared by the views and
+// values and per-mapping filter weights at any time t (docs/design.md#mapping). Shared by the views and
 // the viewer, so the gain and the extra smoothing apply to the gallery and the player alike.
 import type { Basis, Spectrum } from "./bundle";
 import { filterValues, prepare, shaderWeights, smoothed, spectrumAt } from "./filter";

@@ -1,4 +1,4 @@
-// GPU pass 1 of the deformation (DESIGN §6): the deformed positions X + U((φ − 1) ⊙ X̃) of up
+// GPU pass 1 of the deformation (docs/design.md#rendering): the deformed positions X + U((φ − 1) ⊙ X̃) of up
 // to `tiles` gallery tiles at once, drawn as one point per vertex into float render targets (one
 // colour attachment per tile), so one harmonic fetch serves every tile of the batch.
 import * as THREE from "three";

@@ -1,4 +1,4 @@
-// GLSL of the deformation (DESIGN §6): harmonics packed four per RGBA32F texel, the surface pass
+// GLSL of the deformation (docs/design.md#rendering): harmonics packed four per RGBA32F texel, the surface pass
 // (GPU positions from a float target, or CPU positions as an attribute) and the batched
 // positions pass.
 
@@ -52,7 +52,7 @@ void main() {
 `;
 
 /** Surface pass, fragment: the flat normal of the deformed triangle blended with the original
- * vertex normal (DESIGN §6, thesis Fig. 6.4), key + fill light, rim and specular. */
+ * vertex normal (docs/design.md#rendering, thesis Fig. 6.4), key + fill light, rim and specular. */
 export const SURFACE_FRAGMENT = /* glsl */ `
 precision highp float;
 uniform vec3 baseColor;

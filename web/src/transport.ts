@@ -1,5 +1,5 @@
 // The audio transport: the song's AudioContext, play / pause / seek, and the clock that every
-// frame's time comes from (DESIGN §6: time from the audio clock, never from frame counts).
+// frame's time comes from (docs/design.md#rendering: time from the audio clock, never from frame counts).
 
 /** What the render loop needs of a clock. */
 export interface Clock {

@@ -1,6 +1,6 @@
 // The Viewer owns the WebGL canvas: renderer, cameras, the render loop, drawing the gallery's
 // tiles or the player into their viewports, frame timing, and the choice of deformation path
-// (DESIGN §6). What to draw comes from the views through `Stage`; time from a `Clock`.
+// (docs/design.md#rendering). What to draw comes from the views through `Stage`; time from a `Clock`.
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Basis } from "./bundle";
@@ -131,7 +131,7 @@ export class Viewer {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
   }
 
-  /** Pick the deformation path (DESIGN §6): the CPU when k does not fit the shader's uniforms,
+  /** Pick the deformation path (docs/design.md#rendering): the CPU when k does not fit the shader's uniforms,
    * else the one `forced`, else the faster of the two timed on a few frames. */
   choosePath(forced: DeformationPath | null): void {
     const deformer = this.deformer!;
