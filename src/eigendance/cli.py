@@ -84,6 +84,12 @@ FPS = number(0, 1000, above=True)
 PORT = number(0, 65535, integer=True)
 
 
+def add_output(parser, what: str) -> None:
+    """-o/--output (`what` it writes) and --force, as every command that writes has them."""
+    parser.add_argument("-o", "--output", required=True, help=what)
+    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+
+
 def progress_bar(total: int | None, description: str, unit: str = "pair"):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
@@ -123,8 +129,7 @@ def add_basis(parser):
     parser.add_argument("--solver", choices=SOLVERS, default="bands",
                         help="bands (default, spectrum slicing) or eigsh (naive baseline)")
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
-    parser.add_argument("-o", "--output", required=True, help="basis file to write (.npz)")
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    add_output(parser, "basis file to write (.npz)")
 
 
 def run_basis(args) -> None:
@@ -200,10 +205,9 @@ def add_spectrum(parser):
                         help="analysis frames per second (default 100, at most 1000)")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
                         help="number of bands (default 64)")
-    parser.add_argument("-o", "--output", required=True, help="spectrogram file to write (.npz)")
     parser.add_argument("--png", help="also draw the spectrogram into this picture "
                                       "(.png, .svg, .pdf or .jpg)")
-    parser.add_argument("--force", action="store_true", help="overwrite existing outputs")
+    add_output(parser, "spectrogram file to write (.npz)")
 
 
 def run_spectrum(args) -> None:
@@ -236,8 +240,7 @@ def add_gallery(parser):
                              "5%% of the diagonal (default), or each item its own")
     parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when BASIS is a mesh file (default 300)")
-    parser.add_argument("-o", "--output", required=True, help="folder for 0.json, 1.json, …")
-    parser.add_argument("--force", action="store_true", help="overwrite existing mappings")
+    add_output(parser, "folder for 0.json, 1.json, …")
 
 
 def run_gallery(args) -> None:
@@ -266,8 +269,7 @@ def add_animate(parser):
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when MESH is a mesh file (default 300)")
-    parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    add_output(parser, "animation file to write (.npz)")
 
 
 def run_animate(args) -> None:
@@ -293,13 +295,12 @@ STIFFNESS = number(0, 1e12, above=True)
 
 def add_modes(parser):
     parser.add_argument("rig", help=RIG_HELP)
-    parser.add_argument("-o", "--output", required=True, help="modal file to write (.npz)")
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1; frequencies scale "
                              "with its square root)")
     parser.add_argument("--show", type=number(0, integer=True), default=30,
                         help="modes listed (default 30)")
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    add_output(parser, "modal file to write (.npz)")
 
 
 def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> list[str]:
@@ -354,8 +355,7 @@ def add_animate_rig(parser):
                              "transforms, linear blend)")
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1)")
-    parser.add_argument("-o", "--output", required=True, help="animation file to write (.npz)")
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    add_output(parser, "animation file to write (.npz)")
 
 
 def run_animate_rig(args) -> None:
