@@ -24,9 +24,9 @@ from eigendance.harmonic.motion import chunk_frames, iter_positions, write_anima
 from eigendance.music.demo_music import demo_track
 from eigendance.music.gallery import strongest_item
 from eigendance.music.spectrogram import Spectrogram, frame_times
+from shared_data import shared_path
 
-BUNNY = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data", "meshes",
-                     "bunny_stanford.obj")
+BUNNY = shared_path("meshes", "bunny_stanford.obj")
 
 
 def main():

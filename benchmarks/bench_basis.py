@@ -13,8 +13,11 @@ import multiprocessing
 import os
 import resource
 import time
+from queue import Empty
 
-SHARED = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data", "meshes")
+from shared_data import shared_path
+
+SHARED = shared_path("meshes")
 CASES = [("bunny_stanford.obj", 1070), ("armadillo.obj", 2376)]
 QUICK = [("bunny_stanford.obj", 300)]
 
@@ -41,7 +44,14 @@ def run(path, k, solver):
     queue = context.Queue()
     process = context.Process(target=measure, args=(path, k, solver, queue))
     process.start()
-    result = queue.get()
+    while True:  # a solve that dies (a missing file, the OOM killer) must not hang the run
+        try:
+            result = queue.get(timeout=1)
+            break
+        except Empty:
+            if not process.is_alive():
+                raise SystemExit(f"the {solver} solve of {path} failed "
+                                 f"(exit status {process.exitcode})") from None
     process.join()
     return result
 

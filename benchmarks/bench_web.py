@@ -24,16 +24,17 @@ import urllib.request
 
 import numpy as np
 
+from shared_data import shared_path
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-BUNNY = os.path.join(HERE, "..", "..", "shared", "data", "meshes", "bunny_stanford.obj")
+BUNNY = shared_path("meshes", "bunny_stanford.obj")
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--no-first-run"]
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mesh", default=BUNNY if os.path.exists(BUNNY) else
-                        "/work/shared/data/meshes/bunny_stanford.obj")
+    parser.add_argument("--mesh", default=BUNNY)
     parser.add_argument("-k", type=int, default=1000)
     parser.add_argument("-S", "--size", type=int, default=12)
     parser.add_argument("--frames", type=int, default=5)

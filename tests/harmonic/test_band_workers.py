@@ -7,6 +7,7 @@ once instead of waiting for the bands in flight.
 
 import os
 import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -57,10 +58,10 @@ def ball(tmp_path_factory):
     return str(path)
 
 
-def start_solve(ball, tmp_path):
+def start_solve(ball, tmp_path, command=("basis", "-o", "out.npz")):
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "basis", ball, "-k",
-                                "900", "-o", str(tmp_path / "out.npz")], env=env,
+    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", command[0], ball, "-k",
+                                "900", *command[1:]], env=env, cwd=tmp_path,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                start_new_session=True)
     deadline = time.time() + 60
@@ -80,6 +81,23 @@ def test_workers_die_with_a_killed_caller(ball, tmp_path, sent):
         time.sleep(0.1)
     assert not alive(workers)
     assert not (tmp_path / "out.npz").exists()
+
+
+def test_workers_of_the_web_server_die_with_it(ball, tmp_path):
+    """The server solves in a thread: its workers come from a fork server, and go with it."""
+    process, workers = start_solve(ball, tmp_path, ("serve", "--port", str(free_port())))
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait(10)
+    deadline = time.time() + 5
+    while alive(workers) and time.time() < deadline:
+        time.sleep(0.1)
+    assert not alive(workers)
+
+
+def free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
 
 
 def test_ctrl_c_stops_a_solve_at_once(ball, tmp_path):

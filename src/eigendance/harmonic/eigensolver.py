@@ -426,10 +426,12 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
 class _Workers:
     """Solves a list of bands, in `workers` separate processes when there are several.
 
-    The processes come from a fork server (a fresh single-threaded interpreter that imported
-    this module), never forked from the caller: the caller may be multi-threaded (the web
-    server solves in a thread) and forking such a process can deadlock. They ignore Ctrl-C (the
-    caller handles it and stops them) and die with the caller, whatever signal ends it.
+    A single-threaded caller is forked (fast, and nothing is imported again). A multi-threaded
+    one (the web server solves in a thread) is never forked — a fork copies locks other threads
+    may hold — so its workers come from a fork server, a fresh single-threaded interpreter; like
+    `spawn`, it imports the caller's main module (which needs the usual `__main__` guard). The
+    workers ignore Ctrl-C (the caller handles it and stops them) and die with the caller,
+    whatever signal ends it.
     """
 
     def __init__(self, workers: int):
@@ -442,11 +444,14 @@ class _Workers:
         if len(arguments) == 1 or self.workers == 1:
             return [_solve_band(*each) for each in arguments]
         if self.pool is None:
-            method = "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() \
-                else "spawn"
+            methods = multiprocessing.get_all_start_methods()
+            if threading.active_count() == 1 and "fork" in methods:
+                method = "fork"
+            else:
+                method = "forkserver" if "forkserver" in methods else "spawn"
             context = multiprocessing.get_context(method)
             if method == "forkserver":
-                context.set_forkserver_preload([__name__])  # not the caller's __main__
+                context.set_forkserver_preload([__name__])
             self.pool = ProcessPoolExecutor(self.workers, mp_context=context,
                                             initializer=_start_worker, initargs=(os.getpid(),))
         return list(self.pool.map(_band_worker, arguments))
