@@ -44,7 +44,9 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, frame_times, save_picture
-from eigendance.server import (
+from eigendance.server.app import create_app
+from eigendance.server.library import Library
+from eigendance.server.serve import (
     DEFAULT_HOST,
     DEFAULT_PORT,
     DEMO_K,
@@ -52,8 +54,6 @@ from eigendance.server import (
     run,
     terminal_progress,
 )
-from eigendance.server.app import create_app
-from eigendance.server.library import Library
 
 RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
             + ", ".join(SAMPLE_RIGS))
