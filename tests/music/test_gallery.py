@@ -211,3 +211,12 @@ def test_cli_gallery_and_breed(tmp_path, basis, capsys):
     assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "17",
                  "-o", str(tmp_path / "big")]) == 1
     assert "2 to 16 items" in capsys.readouterr().err
+
+
+def test_children_keep_the_settings_of_their_first_drawn_parent(rng):
+    loud = Mapping(rng.uniform(0, 1, 8), rng.normal(size=10), gain=2.0, offset=1.0,
+                   shading="flat", name="loud")
+    calm = Mapping(rng.uniform(0, 1, 8), rng.normal(size=10), smoothing=0.3, name="calm")
+    children = breed([loud, calm], 12, seed=5)
+    settings = {(c.gain, c.smoothing, c.offset, c.shading) for c in children}
+    assert settings == {(2.0, 0.0, 1.0, "flat"), (1.0, 0.3, 0.0, "smooth")}

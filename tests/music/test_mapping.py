@@ -8,6 +8,7 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.gallery import direct_transfer, initial_indices, reversed_transfer
 from eigendance.music.mapping import (
     Mapping,
+    ModeSettings,
     filters,
     harmonic_indices,
     resample_amplification,
@@ -101,7 +102,7 @@ def test_json_round_trip(tmp_path, rng):
     np.testing.assert_array_equal(loaded.amplification, mapping.amplification)
     assert loaded.seed == 42
     data = json.loads((tmp_path / "m.json").read_text())
-    assert data["format"] == "eigendance.mapping" and data["version"] == 1
+    assert data["format"] == "eigendance.mapping" and data["version"] == 2
     assert data["bands"] == 8
     assert Mapping.from_json({**data, "seed": None}).seed is None
 
@@ -113,8 +114,8 @@ def valid():
 
 @pytest.mark.parametrize("change, message", [
     ({"format": "other"}, "format must be"),
-    ({"version": 2}, "version must be 1"),
-    ({"version": True}, "version must be 1"),
+    ({"version": 3}, "version must be one of"),
+    ({"version": True}, "version must be one of"),
     ({"bands": 0}, "bands must be a positive integer"),
     ({"bands": 3}, "transfer has 2 values; bands says 3"),
     ({"transfer": [0.1, 1.5]}, r"transfer\[1\] = 1.5 is outside \[0, 1\]"),
@@ -150,3 +151,52 @@ def test_malformed_json_is_one_line_error(tmp_path, text, message):
 def test_missing_mapping_file(tmp_path):
     with pytest.raises(EigendanceError, match="no such file"):
         Mapping.load(tmp_path / "none.json")
+
+
+def test_version_2_carries_what_the_player_applies(tmp_path):
+    mapping = Mapping([0.2, 0.7], [1.0, -2.0], 3, gain=1.5, smoothing=0.25, offset=1.0,
+                      modes=ModeSettings(np.array([0, 2]), np.array([0.3, 0.1]),
+                                         np.array([0.0, 1.0]), 0.5),
+                      deformed_normal_weight=0.4, shading="flat")
+    mapping.save(tmp_path / "m.json")
+    again = Mapping.load(tmp_path / "m.json")
+    assert again.to_json() == mapping.to_json()
+    assert again.to_json()["version"] == 2 and again.modes.selected.tolist() == [0, 2]
+    assert (again.gain, again.smoothing, again.offset, again.shading) == (1.5, 0.25, 1.0, "flat")
+
+
+def test_version_1_files_are_still_read_with_default_settings():
+    old = {"format": "eigendance.mapping", "version": 1, "bands": 2, "transfer": [0.1, 0.9],
+           "amplification": [3.0], "seed": None}
+    mapping = Mapping.from_json(old)
+    assert (mapping.gain, mapping.smoothing, mapping.offset, mapping.modes) == (1.0, 0.0, 0.0,
+                                                                               None)
+    assert mapping.deformed_normal_weight == 0.4 and mapping.shading == "smooth"
+
+
+def test_gain_scales_the_amplification_of_the_filter(rng):
+    values = rng.uniform(0, 1, (5, 8))
+    mapping = random_mapping(rng)
+    louder = Mapping(mapping.transfer, mapping.amplification, gain=2.5)
+    np.testing.assert_allclose(louder.filter(values, 12) - 1,
+                               2.5 * (mapping.filter(values, 12) - 1))
+    np.testing.assert_allclose(louder.filter(values, 12, offset=0.0) + 1,
+                               louder.filter(values, 12))
+
+
+@pytest.mark.parametrize("changes, message", [
+    ({"gain": -1}, "gain must be a number in"),
+    ({"smoothing": "slow"}, "smoothing must be a finite number"),
+    ({"look": {"shading": "toon"}}, "shading must be one of"),
+    ({"look": {"deformed_normal_weight": 2}}, "deformed_normal_weight must be a number in"),
+    ({"modes": {"selected": [0, 0]}}, "lists a mode twice"),
+    ({"modes": {"selected": [0, 1], "phases": [0.0]}}, "modes.phases has 1 values for 2"),
+    ({"modes": {"time_scale": 0}}, "time_scale must be positive"),
+    ({"version": 3}, "version must be one of"),
+])
+def test_version_2_fields_are_checked(changes, message):
+    data = {"format": "eigendance.mapping", "version": 2, "bands": 2, "transfer": [0.1, 0.9],
+            "amplification": [3.0], "seed": None, **changes}
+    with pytest.raises(EigendanceError, match=message) as caught:
+        Mapping.from_json(data, "m.json")
+    assert str(caught.value).startswith("m.json: ")

@@ -336,3 +336,16 @@ def test_cli_spectrum(tmp_path, capsys):
     assert main(["spectrum", str(tmp_path / "demo.wav"), "-o", str(out)]) == 1
     assert "exists" in capsys.readouterr().err
     assert main(["spectrum", str(tmp_path / "missing.wav"), "-o", str(tmp_path / "t.npz")]) == 1
+
+
+def test_smoothed_runs_the_recursion_once_more_over_the_frames():
+    samples, rate = demo_track(1.0)
+    spectrogram = Spectrogram.from_samples(samples, rate, bands=8)
+    tau = 0.2
+    smoothed = spectrogram.smoothed(tau)
+    memory = np.exp(-1 / (spectrogram.rate * tau))
+    state = np.zeros(8)
+    for j, row in enumerate(spectrogram.values):  # the player's smoothing, frame by frame
+        state = memory * state + (1 - memory) * row
+        np.testing.assert_allclose(smoothed.values[j], state, rtol=1e-5, atol=1e-6)
+    assert spectrogram.smoothed(0.0) is spectrogram

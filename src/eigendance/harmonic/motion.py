@@ -55,7 +55,7 @@ def positions_at(basis: HarmonicBasis, spectrogram: Spectrogram, mapping: Mappin
     >>> positions.shape, bool(np.allclose(positions[1], sphere.vertices))
     ((2, 162, 3), True)
     """
-    phi = mapping.filter(spectrogram.at(times), basis.k)
+    phi = mapping.filter(spectrogram.smoothed(mapping.smoothing).at(times), basis.k)
     return basis.to_original(basis.filter_positions(phi))
 
 
@@ -71,6 +71,7 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
     in turn: a chunk stays valid until the next-but-one is requested (copy it to keep it).
     """
     times = np.asarray(times, dtype=np.float64)
+    spectrogram = spectrogram.smoothed(mapping.smoothing)
     deform = basis.deformer(original=True)
     per_chunk = chunk_frames(basis.n)
     buffers = [np.empty((min(per_chunk, len(times)), basis.n, 3), dtype=dtype)

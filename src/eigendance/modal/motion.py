@@ -119,9 +119,13 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
 
 
 def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
-               offset: float = 0.0) -> np.ndarray:
-    """φ (T, n_modes) = a·Σ g̃ + offset: the mapping's filter over the modes at `times`."""
-    return mapping.filter(spectrogram.at(np.asarray(times, dtype=float)), n_modes, offset)
+               offset: float | None = None) -> np.ndarray:
+    """φ (T, n_modes) = gain·a·Σ g̃ + b: the mapping's filter over the modes at `times`.
+
+    b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
+    """
+    values = spectrogram.smoothed(mapping.smoothing).at(np.asarray(times, dtype=float))
+    return mapping.filter(values, n_modes, mapping.offset if offset is None else offset)
 
 
 def parse_modes(text: str | None, n_modes: int) -> np.ndarray:

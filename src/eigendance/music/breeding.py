@@ -104,7 +104,8 @@ def breed(parents, size: int = 8, seed: int = 0,
       3. amplification: the same as 2 with the amplifications (an independent coin).
     Amplifications of other lengths than parent 0's are first resampled to its length K; child
     transfers are clipped to [0, 1] (a convex combination can overshoot 1 by one rounding).
-    Children carry `seed` in their JSON.
+    Children carry `seed` in their JSON, and parent i's other settings (gain, smoothing,
+    offset, palette, look).
 
     Example
     -------
@@ -146,5 +147,6 @@ def breed(parents, size: int = 8, seed: int = 0,
             else:
                 genes.append(vectors[i].copy() if random.uniform() < 0.5 else vectors[j].copy())
         transfer = np.clip(genes[0], 0.0, 1.0)
-        children.append(Mapping(transfer, genes[1], int(seed), f"child {c}"))
+        # Settings besides the genes (gain, smoothing, offset, palette, look): parent i's.
+        children.append(parents[i].with_genes(transfer, genes[1], int(seed), f"child {c}"))
     return children

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -23,12 +23,67 @@ from eigendance.errors import InputError, one_line
 from eigendance.files import atomic_write
 
 FORMAT = "eigendance.mapping"
-VERSION = 1
+VERSION = 2  # written; version 1 (transfer, amplification, seed) is still read
+READABLE_VERSIONS = (1, 2)
+
+
+SHADINGS = ("smooth", "flat", "wireframe")
+
+
+@dataclass
+class ModeSettings:
+    """How a rig's vibration modes move besides the filter: the palette (design.md#modal-motion).
+
+    Every field may be None: the default rule of `eigendance.modal.motion` then decides.
+    selected: indices of the modes that move; amplitudes: per selected mode, its largest body
+    rotation at φ = 1, radians; phases: per selected mode, γ in radians; time_scale: s.
+    """
+
+    selected: np.ndarray | None = None
+    amplitudes: np.ndarray | None = None
+    phases: np.ndarray | None = None
+    time_scale: float | None = None
+
+    def to_json(self) -> dict:
+        return {"selected": _listed(self.selected, int),
+                "amplitudes": _listed(self.amplitudes), "phases": _listed(self.phases),
+                "time_scale": None if self.time_scale is None else float(self.time_scale)}
+
+    @classmethod
+    def from_json(cls, data, name: str) -> ModeSettings:
+        if not isinstance(data, dict):
+            raise InputError(f"{name}: modes must be an object or null")
+        selected = data.get("selected")
+        if selected is not None:
+            if not isinstance(selected, list) or not selected or not all(
+                    isinstance(i, int) and not isinstance(i, bool) and 0 <= i < 1 << 20
+                    for i in selected):
+                raise InputError(f"{name}: modes.selected must be a non-empty list of mode "
+                                 "indices or null")
+            if len(set(selected)) != len(selected):
+                raise InputError(f"{name}: modes.selected lists a mode twice")
+        vectors = {}
+        for key in ("amplitudes", "phases"):
+            value = data.get(key)
+            vectors[key] = None if value is None else \
+                np.array(_number_list(value, f"modes.{key}", name), dtype=np.float64)
+            if vectors[key] is not None:
+                _check_vector(vectors[key], f"modes.{key}", name)
+                if selected is not None and len(vectors[key]) != len(selected):
+                    raise InputError(f"{name}: modes.{key} has {len(vectors[key])} values for "
+                                     f"{len(selected)} selected modes")
+        if vectors["amplitudes"] is not None and np.any(vectors["amplitudes"] < 0):
+            raise InputError(f"{name}: modes.amplitudes must be ≥ 0")
+        time_scale = _number(data.get("time_scale"), "modes.time_scale", name, optional=True)
+        if time_scale is not None and not time_scale > 0:
+            raise InputError(f"{name}: modes.time_scale must be positive")
+        return cls(None if selected is None else np.array(selected, dtype=np.int64),
+                   vectors["amplitudes"], vectors["phases"], time_scale)
 
 
 @dataclass
 class Mapping:
-    """A sound-to-motion mapping.
+    """A sound-to-motion mapping, with everything the player applies (docs/design.md#mapping).
 
     Parameters
     ----------
@@ -36,6 +91,14 @@ class Mapping:
     amplification : (K,) finite values, resampled to the k targets by normalised index.
     seed : the breeding seed that made it, or None.
     name : how messages call it (a file name).
+    gain : ≥ 0, multiplies the amplification (the player's gain slider).
+    smoothing : ≥ 0 s, extra exponential smoothing of the spectrogram (`Spectrogram.smoothed`).
+    offset : b, added to the filter of a rig's modes (0: silence is the rest pose; 1: the
+        thesis's idle sway). Harmonics always add 1.
+    modes : a rig's palette (`ModeSettings`), or None.
+    deformed_normal_weight : weight of the deformed triangle's flat normal against the original
+        vertex normal, in [0, 1] (thesis Fig. 6.4(d): 0.4).
+    shading : "smooth", "flat" or "wireframe".
 
     Example
     -------
@@ -50,12 +113,29 @@ class Mapping:
     amplification: np.ndarray
     seed: int | None = None
     name: str = field(default="mapping", compare=False)
+    gain: float = 1.0
+    smoothing: float = 0.0
+    offset: float = 0.0
+    modes: ModeSettings | None = None
+    deformed_normal_weight: float = 0.4
+    shading: str = "smooth"
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
         self.amplification = np.asarray(self.amplification, dtype=np.float64)
         _check_vector(self.transfer, "transfer", self.name, unit=True)
         _check_vector(self.amplification, "amplification", self.name)
+        for key, low, high in (("gain", 0.0, 1e6), ("smoothing", 0.0, 60.0),
+                               ("offset", -1e6, 1e6), ("deformed_normal_weight", 0.0, 1.0)):
+            value = getattr(self, key)
+            if not (isinstance(value, int | float | np.floating | np.integer)
+                    and np.isfinite(value) and low <= value <= high):
+                raise InputError(f"{self.name}: {key} must be a number in [{low:g}, {high:g}], "
+                                 f"got {value!r}")
+            setattr(self, key, float(value))
+        if self.shading not in SHADINGS:
+            raise InputError(f"{self.name}: shading must be one of {', '.join(SHADINGS)}, got "
+                             f"{self.shading!r}")
 
     @property
     def bands(self) -> int:
@@ -66,16 +146,21 @@ class Mapping:
         return harmonic_indices(self.transfer, k)
 
     def amplification_for(self, k: int) -> np.ndarray:
-        """The amplification resampled to k harmonics (see the module docstring)."""
-        return resample_amplification(self.amplification, k)
+        """The amplification resampled to k targets, times the gain."""
+        return self.gain * resample_amplification(self.amplification, k)
 
     def filter(self, values, k: int, offset: float = 1.0) -> np.ndarray:
-        """φ = a_k·Σ g̃ + offset for band values (…, B) → (…, k).
+        """φ = gain·a_k·Σ g̃ + offset for band values (…, B) → (…, k).
 
-        offset: 1 for harmonics (a ≡ 0 leaves a mesh still), the rig's b for modes.
+        offset: 1 for harmonics (a ≡ 0 leaves a mesh still), `self.offset` for a rig's modes.
         `filters` evaluates many mappings at once.
         """
         return filters([self], values, k, offset)[0]
+
+    def with_genes(self, transfer, amplification, seed: int | None, name: str) -> Mapping:
+        """A mapping with other transfer and amplification and this one's other settings."""
+        return replace(self, transfer=transfer, amplification=amplification, seed=seed,
+                       name=name)
 
     # JSON (docs/design.md#mapping-file) ------------------------------------------------------
 
@@ -83,56 +168,101 @@ class Mapping:
         return {"format": FORMAT, "version": VERSION, "bands": self.bands,
                 "transfer": [float(x) for x in self.transfer],
                 "amplification": [float(x) for x in self.amplification],
-                "seed": None if self.seed is None else int(self.seed)}
+                "seed": None if self.seed is None else int(self.seed),
+                "gain": self.gain, "smoothing": self.smoothing, "offset": self.offset,
+                "modes": None if self.modes is None else self.modes.to_json(),
+                "look": {"deformed_normal_weight": self.deformed_normal_weight,
+                         "shading": self.shading}}
 
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> Mapping:
-        """Validate a parsed mapping document; every problem is a one-line error naming the field.
-        """
+        """Validate a parsed mapping document (version 1 or 2); every problem is a one-line
+        error naming the field."""
         if not isinstance(data, dict):
             raise InputError(f"{name}: a mapping must be a JSON object")
         if data.get("format") != FORMAT:
             raise InputError(f"{name}: format must be \"{FORMAT}\", "
-                                  f"got {json.dumps(data.get('format'))}")
-        if data.get("version") != VERSION or isinstance(data.get("version"), bool):
-            raise InputError(f"{name}: version must be {VERSION}, "
-                                  f"got {json.dumps(data.get('version'))}")
+                             f"got {_shown(data.get('format'))}")
+        version = data.get("version")
+        if version not in READABLE_VERSIONS or isinstance(version, bool):
+            raise InputError(f"{name}: version must be one of {READABLE_VERSIONS}, "
+                             f"got {_shown(version)}")
         bands = data.get("bands")
-        if not isinstance(bands, int) or isinstance(bands, bool) or bands < 1:
-            raise InputError(f"{name}: bands must be a positive integer, "
-                                  f"got {json.dumps(bands)}")
+        if not isinstance(bands, int) or isinstance(bands, bool) or not 1 <= bands <= 1 << 16:
+            raise InputError(f"{name}: bands must be a positive integer, got {_shown(bands)}")
         transfer = _number_list(data.get("transfer"), "transfer", name)
         if len(transfer) != bands:
-            raise InputError(f"{name}: transfer has {len(transfer)} values; bands says "
-                                  f"{bands}")
+            raise InputError(f"{name}: transfer has {len(transfer)} values; bands says {bands}")
         amplification = _number_list(data.get("amplification"), "amplification", name)
         seed = data.get("seed")
-        if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)):
-            raise InputError(f"{name}: seed must be an integer or null, "
-                                  f"got {json.dumps(seed)}")
-        return cls(np.array(transfer), np.array(amplification), seed, name)
+        if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)
+                                 or not 0 <= seed < 1 << 64):
+            raise InputError(f"{name}: seed must be an integer or null (0 to 2⁶⁴ − 1), "
+                             f"got {_shown(seed)}")
+        settings = {}
+        if version >= 2:
+            for key in ("gain", "smoothing", "offset"):
+                if key in data:
+                    settings[key] = _number(data[key], key, name)
+            if data.get("modes") is not None:
+                settings["modes"] = ModeSettings.from_json(data["modes"], name)
+            look = data.get("look", {})
+            if not isinstance(look, dict):
+                raise InputError(f"{name}: look must be an object")
+            if "deformed_normal_weight" in look:
+                settings["deformed_normal_weight"] = _number(
+                    look["deformed_normal_weight"], "look.deformed_normal_weight", name)
+            if "shading" in look:
+                settings["shading"] = look["shading"]
+        return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
+                   seed, name, **settings)
 
     def save(self, path: str | os.PathLike) -> None:
-        """Write the mapping as JSON, atomically."""
+        """Write the mapping as JSON, atomically (one field per line)."""
         fields = [f" {json.dumps(key)}: {json.dumps(value)}" for key, value in
                   self.to_json().items()]
-        text = "{\n" + ",\n".join(fields) + "\n}\n"  # one field per line
+        text = "{\n" + ",\n".join(fields) + "\n}\n"
         atomic_write(path, lambda file: file.write(text.encode()))
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> Mapping:
+        """Read a mapping file (any readable version)."""
         path = os.fspath(path)
         name = os.path.basename(path)
         try:
             with open(path, encoding="utf-8") as file:
                 data = json.load(file)
         except FileNotFoundError:
-            raise InputError(f"{path}: no such file") from None
+            raise InputError(f"{path}: no such file", status=404) from None
         except (UnicodeDecodeError, json.JSONDecodeError) as error:
             raise InputError(f"{name}: not valid JSON ({one_line(error)})") from None
+        except RecursionError:
+            raise InputError(f"{name}: the JSON is nested too deeply") from None
         except OSError as error:
             raise InputError(f"{path}: cannot read ({error.strerror})") from None
         return cls.from_json(data, name)
+
+
+def _listed(array, kind=float) -> list | None:
+    return None if array is None else [kind(x) for x in array]
+
+
+def _shown(value) -> str:
+    """A JSON value in a message: short, whatever it is."""
+    try:
+        text = json.dumps(value)
+    except (TypeError, ValueError, RecursionError):
+        text = type(value).__name__
+    return text if len(text) <= 40 else text[:39] + "…"
+
+
+def _number(value, key: str, name: str, optional: bool = False) -> float | None:
+    if value is None and optional:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float) or \
+            not np.isfinite(float(value)):
+        raise InputError(f"{name}: {key} must be a finite number, got {_shown(value)}")
+    return float(value)
 
 
 def _number_list(value, field_name: str, name: str) -> list:
@@ -140,15 +270,16 @@ def _number_list(value, field_name: str, name: str) -> list:
         raise InputError(f"{name}: {field_name} must be a non-empty list of numbers")
     for index, x in enumerate(value):
         if not isinstance(x, int | float) or isinstance(x, bool):
-            raise InputError(f"{name}: {field_name}[{index}] is not a number "
-                                  f"({json.dumps(x)})")
+            raise InputError(f"{name}: {field_name}[{index}] is not a number ({_shown(x)})")
+        if not np.isfinite(float(x)):
+            raise InputError(f"{name}: {field_name}[{index}] is not finite ({_shown(x)})")
     return value
 
 
 def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = False) -> None:
     if vector.ndim != 1 or len(vector) == 0:
         raise InputError(f"{name}: {field_name} must be a non-empty vector, "
-                              f"got shape {vector.shape}")
+                         f"got shape {vector.shape}")
     bad = np.flatnonzero(~np.isfinite(vector))
     if len(bad):
         raise InputError(f"{name}: {field_name}[{bad[0]}] is not finite ({vector[bad[0]]})")
@@ -156,7 +287,7 @@ def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = F
         bad = np.flatnonzero((vector < 0) | (vector > 1))
         if len(bad):
             raise InputError(f"{name}: {field_name}[{bad[0]}] = {vector[bad[0]]:g} is "
-                                  "outside [0, 1]")
+                             "outside [0, 1]")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -192,7 +323,7 @@ def filters(mappings, values, k: int, offset: float = 1.0) -> np.ndarray:
     for mapping in mappings:
         if mapping.bands != bands:
             raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands; the "
-                                  f"spectrogram has {bands}")
+                             f"spectrogram has {bands}")
     if not mappings:
         return np.zeros((0, *values.shape[:-1], k))
     count = len(mappings)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy.fft import rfft
@@ -274,6 +274,18 @@ class Spectrogram:
         below = values[index].astype(np.float64)
         above = values[index + 1].astype(np.float64)
         return below * (1 - weight) + above * weight
+
+    def smoothed(self, smoothing: float) -> Spectrogram:
+        """The spectrogram smoothed once more over its frames, with time constant `smoothing` s.
+
+        s_j = m·s_{j−1} + (1 − m)·v_j, m = exp(−1/(rate·smoothing)), s_{−1} = 0 (the player's
+        smoothing slider, web/src/filter.ts `smoothed`); 0 returns the spectrogram itself.
+        """
+        if not smoothing > 0:
+            return self
+        memory = math.exp(-1.0 / (self.rate * smoothing))
+        values = exponential_smoothing(self.values, memory, np.zeros(self.bands))
+        return replace(self, values=values.astype(np.float32))
 
     def save(self, path: str | os.PathLike) -> None:
         """Write the spectrogram file (docs/design.md#spectrogram-file) atomically."""
