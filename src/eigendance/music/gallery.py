@@ -25,7 +25,7 @@ from eigendance.music.mapping import Mapping
 MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
 # Target m of the lowest and the highest item (fractions of the bounding-box diagonal); items in
 # between fall geometrically. High harmonics are fine ripples: at the same RMS they read as noise.
-MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.02
+MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.015
 MOTION_BOUNDS = (0.01, 0.08)  # what every initial item's m is promised to lie in
 PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only for a moment)
 ZERO_FREQUENCY = 1e-6  # ω_ν ≤ this · ω_max: eigenvalue 0, a translation of a component

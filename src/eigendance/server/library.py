@@ -8,6 +8,7 @@ progress for the page (server-sent events).
 
 from __future__ import annotations
 
+import copy
 import json
 import os
 import secrets
@@ -27,6 +28,15 @@ from eigendance.server.binary import basis_bundle, spectrogram_bundle
 
 def new_id() -> str:
     return secrets.token_hex(6)
+
+
+def named(error: EigendanceError, path: str, name: str) -> EigendanceError:
+    """The error with the stored file's path and name replaced by the name the person gave it
+    (an upload is stored as upload-<random><suffix>: no message should show that)."""
+    text = str(error).replace(path, name).replace(os.path.basename(path), name)
+    renamed = copy.copy(error)
+    renamed.args = (text,)
+    return renamed
 
 
 @dataclass
@@ -133,6 +143,9 @@ class Library:
             if kind == "audio":
                 return self.add_song(stored, name)
             return self.add_mapping_file(stored, name)
+        except EigendanceError as error:
+            os.unlink(stored)
+            raise named(error, stored, name) from None
         except BaseException:
             os.unlink(stored)
             raise
@@ -171,7 +184,7 @@ class Library:
             item.basis = basis
             job.update(state="done", done=job.total)
         except EigendanceError as error:
-            job.update(state="error", message=str(error))
+            job.update(state="error", message=str(named(error, item.path, item.name)))
         except Exception as error:  # noqa: BLE001 - reported to the page, never crashes the server
             job.update(state="error", message=f"{item.name}: the basis failed (internal error: "
                                               f"{type(error).__name__}: {one_line(error, 200)})")
