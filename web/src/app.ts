@@ -231,8 +231,9 @@ export class App {
     this.slowSince ??= now;
     if (now - this.slowSince < SLOW_FOR_MS || !$("notice").hidden) return;
     const offer = fewerTiles(tiles, fps, AIMED_FPS, this.rule?.min ?? 2);
-    $("notice-text").textContent = `This page draws only ${fps.toFixed(0)} frames per second `
-      + `with ${tiles} tiles (smooth needs ${SMOOTH_FPS}).`;
+    const rate = fps.toFixed(fps < 10 ? 1 : 0);
+    $("notice-text").textContent = `This page draws only ${rate} frames per second with `
+      + `${tiles} tiles (smooth needs ${SMOOTH_FPS}).`;
     const button = $<HTMLButtonElement>("notice-fewer");
     button.hidden = offer === null;
     button.textContent = `show ${offer} tiles`;

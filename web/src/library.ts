@@ -38,7 +38,7 @@ export class Library {
     const mappings = $<HTMLSelectElement>("mapping-menu");
     const chosen = mappings.value;
     fillSelect(mappings, items.mappings, chosen);
-    mappings.disabled = !items.mappings.length;
+    (mappings.closest("label") ?? mappings).hidden = !items.mappings.length;
     return items;
   }
 

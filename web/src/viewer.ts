@@ -42,10 +42,10 @@ export interface FrameParts { deformation: number; drawing: number; }
 /** The frame rate below which the gallery offers fewer tiles. */
 export const SMOOTH_FPS = 20;
 const FIELD_OF_VIEW = 30;
-/** A model is framed at rest and in the song's POSES loudest moments, by its RIM_SHARE
- * farthest-reaching vertices. */
+/** A model is framed at rest and in the song's POSES loudest moments, by its RIM vertices that
+ * reach farthest (all of a small model: on a sphere every vertex reaches as far). */
 const POSES = 6;
-const RIM_SHARE = 0.05;
+const RIM = 2000;
 /** Frame times are averaged over this window (ms) for the frame-rate readout. */
 const RATE_WINDOW_MS = 1000;
 
@@ -124,7 +124,7 @@ export class Viewer {
     deformer.scene.add(this.studio.backdrop, this.studio.shadow);
     this.studio.placeShadow(basis);
     this.shape = silhouette(basis.vertices, VIEW_DIRECTION);
-    this.rim = rim(this.shape, RIM_SHARE);
+    this.rim = rim(this.shape, Math.min(1, RIM / basis.n));
     this.poses = new WeakMap();
     this.framings = new WeakMap();
     this.cpuBuffers = [];
