@@ -135,6 +135,7 @@ class Library:
     def add_upload(self, data: bytes, name: str, kind: str):
         """Store an uploaded file under a name of our own and register it as `kind`."""
         stored = os.path.join(self.folder, f"upload-{secrets.token_hex(6)}{suffix_of(name)}")
+        os.makedirs(self.folder, exist_ok=True)  # a /tmp cleaner may have removed it meanwhile
         with open(stored, "wb") as file:
             file.write(data)
         try:
