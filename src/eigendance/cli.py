@@ -25,6 +25,7 @@ from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
+from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     animate_rig,
@@ -60,6 +61,13 @@ RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
 
 
 # --- argument types: a bad value is an argparse error naming the flag ------------------------
+
+class Parser(argparse.ArgumentParser):
+    """argparse with the project's errors: one line, exit status 1 (bad input)."""
+
+    def error(self, message):
+        self.exit(1, f"eigendance: error: {one_line(message)} (see {self.prog} --help)\n")
+
 
 def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
            above: bool = False):
@@ -153,7 +161,7 @@ def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--host", default=DEFAULT_HOST,
                         help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
     parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
-                        help=f"port (default {DEFAULT_PORT})")
+                        help=f"port (default {DEFAULT_PORT}; 0: any free port)")
     parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
     parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
                         help="largest file a page may upload, MiB (default 64)")
@@ -172,7 +180,7 @@ def run_serve(args) -> None:
         library.add_path(path)
     terminal_progress(library)
     run(create_app(library), args.host, args.port,
-        announce=f"eigendance: serving on {url(args.host, args.port)}")
+        announce=lambda port: f"eigendance: serving on {url(args.host, port)}")
 
 
 def add_demo(parser):
@@ -185,7 +193,7 @@ def run_demo(args) -> None:
     for path in demo_paths():
         library.add_path(path)
     run(create_app(library), args.host, args.port,
-        announce=f"eigendance demo: open {url(args.host, args.port)} in a browser")
+        announce=lambda port: f"eigendance demo: open {url(args.host, port)} in a browser")
 
 
 def new_library(args) -> Library:
@@ -376,6 +384,10 @@ def run_animate_rig(args) -> None:
         drive = mode_drive(mapping, spectrogram, times, len(modes))
     else:
         times = frame_times(args.duration or 4.0, args.fps)
+    per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies + 8 * model.n_modes)
+    what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
+    check_memory(per_frame * len(times), what)
+    check_disk(args.output, per_frame * len(times), what)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
         arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
@@ -403,8 +415,7 @@ COMMANDS = {
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="eigendance", description="Make 3D models dance to music.")
+    parser = Parser(prog="eigendance", description="Make 3D models dance to music.")
     parser.add_argument("--version", action="version", version=f"eigendance {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (add, run_command, summary) in COMMANDS.items():
@@ -431,7 +442,10 @@ def main(argv=None) -> int:
     """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
     try:
-        args.run(args)
+        # Every output is checked finite before it is written (files.check_finite), so
+        # floating-point warnings on the way there would only add lines to the one error.
+        with np.errstate(all="ignore"):
+            args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)
         return 1
