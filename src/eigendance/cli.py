@@ -52,6 +52,7 @@ from eigendance.server.serve import (
     DEFAULT_PORT,
     DEMO_K,
     demo_paths,
+    listen,
     run,
     terminal_progress,
 )
@@ -84,6 +85,7 @@ def number(low: float = -math.inf, high: float = math.inf, integer: bool = False
             raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
                                              f"{text!r}")
         return value
+    parse.bounds = (low, high)  # for the tests that try every flag with absurd values
     return parse
 
 
@@ -175,11 +177,12 @@ def add_serve(parser):
 
 
 def run_serve(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     for path in args.files:
         library.add_path(path)
     terminal_progress(library)
-    run(create_app(library), args.host, args.port,
+    run(create_app(library), listening,
         announce=lambda port: f"eigendance: serving on {url(args.host, port)}")
 
 
@@ -188,11 +191,12 @@ def add_demo(parser):
 
 
 def run_demo(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     terminal_progress(library)
     for path in demo_paths():
         library.add_path(path)
-    run(create_app(library), args.host, args.port,
+    run(create_app(library), listening,
         announce=lambda port: f"eigendance demo: open {url(args.host, port)} in a browser")
 
 

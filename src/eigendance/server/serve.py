@@ -22,15 +22,10 @@ DEFAULT_PORT = 8765
 DEMO_K = 150
 
 
-def run(app, host: str, port: int, announce=None) -> None:
-    """Serve `app` until interrupted; print `announce` (one line) once the socket listens.
-
-    announce: the line, or a callable(port) that makes it (port 0 asks for any free port).
-    The socket is bound here, before uvicorn starts, so an address that is in use, unknown or
-    not allowed is an InputError naming it (uvicorn would log its own lines and exit).
-    """
-    listening = listen(host, port)
-    bound = listening.getsockname()[1]
+def run(app, listening: socket.socket, announce=None) -> None:
+    """Serve `app` on a socket from `listen` until interrupted; print `announce` (one line)
+    once it serves. announce: the line, or a callable(port) that makes it."""
+    host, bound = listening.getsockname()[:2]
     config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False)
     server = uvicorn.Server(config)
     if announce:
@@ -49,7 +44,11 @@ def run(app, host: str, port: int, announce=None) -> None:
 
 
 def listen(host: str, port: int) -> socket.socket:
-    """A TCP socket bound to host:port (port 0: any free one); InputError naming the problem."""
+    """A TCP socket bound to host:port (port 0: any free one); InputError naming the problem.
+
+    Bound before anything else starts (uvicorn would log its own lines and exit, after the
+    library had started solving), so an address in use, unknown or not allowed is one line.
+    """
     try:
         family, kind, protocol, _, address = socket.getaddrinfo(
             host or None, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)[0]
