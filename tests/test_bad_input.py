@@ -134,6 +134,10 @@ def made(tmp_path_factory):
     data = (folder / "sphere.stl").read_bytes()
     put("truncated.stl", data[: len(data) // 2 + 7])
     put("point.obj", obj([[1, 1, 1]] * 4, faces))
+    with open(fixture_path("rigged", "RiggedSimple.glb"), "rb") as file:
+        data = file.read()
+    put("cut.glb", data[: len(data) // 2])
+    put("version7.glb", data[:4] + (7).to_bytes(4, "little") + data[8:])  # pygltflib warns
     return paths
 
 
@@ -197,6 +201,7 @@ REFUSED = [
      "names unknown body [\"upper\"]"),
     ("body name a number", "modes {nameless.json} -o {out}/m.npz", "needs a \"name\" string"),
     ("400-digit radius", "modes {bigradius.json} -o {out}/m.npz", "an integer of 400 digits"),
+    ("truncated glTF", "animate-rig {cut.glb} -o {out}/a.npz", "cut.glb: "),
     ("1 Hz audio", "spectrum {1hz.wav} -o {out}/s.npz", "1hz.wav: a sample rate of 1 Hz"),
     ("0-sample audio", "spectrum {empty.wav} -o {out}/s.npz", "empty.wav: holds no audio"),
     ("0-sample audio for a rig", "animate-rig chain {empty.wav} -o {out}/a.npz",
@@ -327,6 +332,11 @@ def test_tiny_and_huge_meshes_have_the_harmonics_of_the_same_shape(tmp_path, cap
                                atol=1e-9)
     np.testing.assert_allclose(bases[1].to_original(bases[1].vertices) / scale,
                                bases[0].to_original(bases[0].vertices), rtol=1e-12, atol=1e-9)
+
+
+def test_a_library_warning_does_not_reach_the_terminal(made, tmp_path, capfd):
+    status, out, err = run(["modes", made["version7.glb"], "-o", tmp_path / "m.npz"], capfd)
+    assert status == 0 and err == "" and "vibration modes" in out
 
 
 def test_an_mp3_gives_the_spectrogram_of_its_wav_and_nothing_on_stderr(made, tmp_path, capfd):

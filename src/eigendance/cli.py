@@ -13,6 +13,7 @@ import os
 import sys
 import tempfile
 import time
+import warnings
 
 import numpy as np
 from tqdm import tqdm
@@ -446,9 +447,12 @@ def main(argv=None) -> int:
     """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
     try:
-        # Every output is checked finite before it is written (files.check_finite), so
-        # floating-point warnings on the way there would only add lines to the one error.
-        with np.errstate(all="ignore"):
+        with warnings.catch_warnings():
+            if not os.environ.get("EIGENDANCE_DEBUG"):
+                # Library warnings (numpy's floating-point ones, pygltflib's about odd files)
+                # would only add lines around the one line a command ends with; outputs are
+                # checked finite instead (files.check_finite).
+                warnings.simplefilter("ignore")
             args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)

@@ -22,6 +22,7 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.laplacian import laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.modal.model import ModalModel
+from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.skeleton import JOINT_TYPES, Skeleton
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
@@ -337,3 +338,21 @@ def test_spoiled_npz_files_give_a_result_or_an_input_error(tmp_path_factory, rea
         assert loaded.faces.min() >= 0 and loaded.faces.max() < loaded.n
     else:
         assert all_finite(loaded.values, loaded.at(np.linspace(0, loaded.duration, 5)))
+
+
+RIGGED = os.path.join(os.path.dirname(__file__), "..", "fixtures", "rigged")
+
+
+@FUZZ
+@given(name=st.sampled_from(["RiggedSimple.glb", "SimpleSkin.gltf"]), at=st.integers(0, 10**6),
+       patch=st.binary(min_size=1, max_size=24), cut=st.booleans())
+def test_spoiled_gltf_skins_give_a_rig_or_an_input_error(tmp_path_factory, name, at, patch, cut):
+    with open(os.path.join(RIGGED, name), "rb") as file:
+        data = file.read()
+    at %= len(data)
+    data = data[:at] if cut else data[:at] + patch + data[at + len(patch):]
+    path = tmp_path_factory.mktemp("gltf") / name
+    path.write_bytes(data)
+    rig = outcome(lambda: load_rig(str(path)))
+    if rig is not None:
+        assert all_finite(rig.vertices, rig.weights, rig.centers)

@@ -224,9 +224,9 @@ class HarmonicBasis:
 def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
     """Whether stored arrays are k M-orthonormal eigenpairs of L u = λ M u for these L, M.
 
-    Shapes, finite values, the same mass, ascending eigenvalues, every residual within
-    CACHE_TOLERANCE, and Uᵀ M U = I probed with one fixed random vector w: ‖Uᵀ M U w − w‖ is
-    zero for the identity and, for any other matrix, almost surely not. O(nnz(L)·k).
+    Shapes, finite values, the same mass, ascending eigenvalues, uᵀ M u = 1 and every residual
+    within CACHE_TOLERANCE, and Uᵀ M U = I probed with one fixed random vector w: ‖Uᵀ M U w − w‖
+    is zero for the identity and, for any other matrix, almost surely not. O(nnz(L)·k).
     """
     eigenvalues, eigenvectors, stored_mass = (arrays.get(name) for name in
                                               ("eigenvalues", "eigenvectors", "mass"))
@@ -241,6 +241,9 @@ def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
         return False
     scale = max(1.0, float(np.abs(eigenvalues).max()))
     if np.any(np.diff(eigenvalues) < -CACHE_TOLERANCE * scale):
+        return False
+    norms = np.einsum("ij,i,ij->j", eigenvectors, mass, eigenvectors)  # uᵀ M u
+    if not np.all(np.abs(norms - 1) <= CACHE_TOLERANCE):
         return False
     if not residuals(stiffness, mass, eigenvalues, eigenvectors).max() <= CACHE_TOLERANCE:
         return False
