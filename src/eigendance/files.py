@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import fcntl
 import json
+import math
 import os
 import tempfile
 import time
@@ -228,6 +229,15 @@ def _json_integer(text: str) -> int:
     if len(text) > JSON_INTEGER_DIGITS:
         raise _LongInteger(f"an integer of {len(text.lstrip('-'))} digits")
     return int(text)
+
+
+def finite_number(value) -> bool:
+    """Whether a number from a JSON document is finite as a float (an int too large for a float
+    is not: math.isfinite would raise OverflowError)."""
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
 
 
 def read_json(path: str | os.PathLike):

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import read_json
+from eigendance.files import finite_number, read_json
 from eigendance.geometry import MAX_COORDINATE
 
 # Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
@@ -481,21 +481,13 @@ def _stiffness(value, joint: Joint, bodies: list[Body], label: str) -> np.ndarra
 def _number(value, label: str, positive: bool = False, minimum: float | None = None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(f"{label} must be a number, not {_shown(value)}")
-    if not _finite(value):
+    if not finite_number(value):
         raise InputError(f"{label} is not finite ({_shown(value)})")
     if positive and not value > 0:
         raise InputError(f"{label} must be positive, not {_shown(value)}")
     if minimum is not None and value < minimum:
         raise InputError(f"{label} must be at least {minimum}, not {_shown(value)}")
     return float(value)
-
-
-def _finite(value) -> bool:
-    """Whether a JSON number is finite as a float (an integer too large for one is not)."""
-    try:
-        return math.isfinite(value)
-    except OverflowError:
-        return False
 
 
 def _shown(value) -> str:

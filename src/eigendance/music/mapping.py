@@ -14,14 +14,13 @@ own for modes.
 from __future__ import annotations
 
 import json
-import math
 import os
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_write, read_json
+from eigendance.files import atomic_write, finite_number, read_json
 
 FORMAT = "eigendance.mapping"
 VERSION = 2  # written; version 1 (transfer, amplification, seed) is still read
@@ -244,18 +243,10 @@ def _shown(value) -> str:
     return text if len(text) <= 40 else text[:39] + "…"
 
 
-def _finite(value) -> bool:
-    """Whether a JSON number is finite as a float (an integer too large for one is not)."""
-    try:
-        return math.isfinite(value)
-    except OverflowError:
-        return False
-
-
 def _number(value, key: str, name: str, optional: bool = False) -> float | None:
     if value is None and optional:
         return None
-    if isinstance(value, bool) or not isinstance(value, int | float) or not _finite(value):
+    if isinstance(value, bool) or not isinstance(value, int | float) or not finite_number(value):
         raise InputError(f"{name}: {key} must be a finite number, got {_shown(value)}")
     return float(value)
 
@@ -266,7 +257,7 @@ def _number_list(value, field_name: str, name: str) -> list:
     for index, x in enumerate(value):
         if not isinstance(x, int | float) or isinstance(x, bool):
             raise InputError(f"{name}: {field_name}[{index}] is not a number ({_shown(x)})")
-        if not _finite(x):
+        if not finite_number(x):
             raise InputError(f"{name}: {field_name}[{index}] is not finite ({_shown(x)})")
     return value
 
