@@ -13,8 +13,9 @@ import shutil
 
 from eigendance.errors import InputError
 
-# Share of the memory available now that one result may plan to use.
-MEMORY_SHARE = 0.5
+# Share of the memory available now that one result may plan to use: the estimates are
+# generous, and the point is to refuse what cannot fit, not what might.
+MEMORY_SHARE = 0.8
 
 
 def available_memory() -> int:

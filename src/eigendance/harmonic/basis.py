@@ -29,9 +29,10 @@ FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "e
 # A cached solve is used only if its pairs pass the solver's own test with this slack
 # (‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, and Uᵀ M U = I within tol).
 CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
-# Bytes a solve of k harmonics on n vertices may hold at once, per eigenvector value: the
-# eigenvectors (8), the solver's band blocks and their copies while stitching (≈ 3·8).
-SOLVE_BYTES_PER_VALUE = 32
+# Bytes a solve of k harmonics on n vertices holds at its peak, per eigenvector value: the
+# eigenvectors, the solver's band blocks and their copies while stitching. Measured peaks: 18
+# (armadillo, k = 2376) to 21 (bunny, k = 1070); README's performance table.
+SOLVE_BYTES_PER_VALUE = 24
 
 
 @dataclass
