@@ -389,6 +389,9 @@ def run_animate_rig(args) -> None:
         drive = mode_drive(mapping, spectrogram, times, len(modes))
     else:
         times = frame_times(args.duration or 4.0, args.fps)
+    # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
+    # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
+    # mode); half again for the intermediates.
     per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies + 8 * model.n_modes)
     what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
     check_memory(per_frame * len(times), what)
