@@ -13,6 +13,7 @@ import os
 import sys
 import tempfile
 import time
+import warnings
 
 import numpy as np
 from tqdm import tqdm
@@ -25,6 +26,7 @@ from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
+from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     animate_rig,
@@ -51,6 +53,7 @@ from eigendance.server.serve import (
     DEFAULT_PORT,
     DEMO_K,
     demo_paths,
+    listen,
     run,
     terminal_progress,
 )
@@ -60,6 +63,13 @@ RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
 
 
 # --- argument types: a bad value is an argparse error naming the flag ------------------------
+
+class Parser(argparse.ArgumentParser):
+    """argparse with the project's errors: one line, exit status 1 (bad input)."""
+
+    def error(self, message):
+        self.exit(1, f"eigendance: error: {one_line(message)} (see {self.prog} --help)\n")
+
 
 def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
            above: bool = False):
@@ -76,6 +86,7 @@ def number(low: float = -math.inf, high: float = math.inf, integer: bool = False
             raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
                                              f"{text!r}")
         return value
+    parse.bounds = (low, high)  # for the tests that try every flag with absurd values
     return parse
 
 
@@ -153,7 +164,7 @@ def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--host", default=DEFAULT_HOST,
                         help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
     parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
-                        help=f"port (default {DEFAULT_PORT})")
+                        help=f"port (default {DEFAULT_PORT}; 0: any free port)")
     parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
     parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
                         help="largest file a page may upload, MiB (default 64)")
@@ -167,12 +178,13 @@ def add_serve(parser):
 
 
 def run_serve(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     for path in args.files:
         library.add_path(path)
     terminal_progress(library)
-    run(create_app(library), args.host, args.port,
-        announce=f"eigendance: serving on {url(args.host, args.port)}")
+    run(create_app(library), listening,
+        announce=lambda port: f"eigendance: serving on {url(args.host, port)}")
 
 
 def add_demo(parser):
@@ -180,12 +192,13 @@ def add_demo(parser):
 
 
 def run_demo(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     terminal_progress(library)
     for path in demo_paths():
         library.add_path(path)
-    run(create_app(library), args.host, args.port,
-        announce=f"eigendance demo: open {url(args.host, args.port)} in a browser")
+    run(create_app(library), listening,
+        announce=lambda port: f"eigendance demo: open {url(args.host, port)} in a browser")
 
 
 def new_library(args) -> Library:
@@ -376,6 +389,13 @@ def run_animate_rig(args) -> None:
         drive = mode_drive(mapping, spectrogram, times, len(modes))
     else:
         times = frame_times(args.duration or 4.0, args.fps)
+    # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
+    # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
+    # mode); half again for the intermediates.
+    per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies + 8 * model.n_modes)
+    what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
+    check_memory(per_frame * len(times), what)
+    check_disk(args.output, per_frame * len(times), what)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
         arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
@@ -403,8 +423,7 @@ COMMANDS = {
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="eigendance", description="Make 3D models dance to music.")
+    parser = Parser(prog="eigendance", description="Make 3D models dance to music.")
     parser.add_argument("--version", action="version", version=f"eigendance {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (add, run_command, summary) in COMMANDS.items():
@@ -431,7 +450,13 @@ def main(argv=None) -> int:
     """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
     try:
-        args.run(args)
+        with warnings.catch_warnings():
+            if not os.environ.get("EIGENDANCE_DEBUG"):
+                # Library warnings (numpy's floating-point ones, pygltflib's about odd files)
+                # would only add lines around the one line a command ends with; outputs are
+                # checked finite instead (files.check_finite).
+                warnings.simplefilter("ignore")
+            args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)
         return 1

@@ -144,6 +144,8 @@ def parse_modes(text: str | None, n_modes: int) -> np.ndarray:
                 indices.extend(range(low, high + 1))
             elif part:
                 indices.append(int(part))
+    except InputError:
+        raise
     except ValueError:
         raise InputError(f"modes {text!r}: expected indices like 0,2,5-8") from None
     bad = [i for i in indices if not 0 <= i < n_modes]

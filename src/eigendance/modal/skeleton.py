@@ -31,6 +31,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.files import finite_number, read_json
+from eigendance.geometry import MAX_COORDINATE
 
 # Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
 CONSTRAINED_ROWS = {
@@ -47,6 +49,16 @@ DEFAULT_DENSITY = 1000.0  # kg/m³, about that of water and of living tissue
 # the joint while the other is held still, vibrate at this frequency. Scale-free: a rig in
 # centimetres moves like the same rig in metres.
 DEFAULT_JOINT_FREQUENCY = 1.0  # Hz
+
+# What a skeleton may hold: the range in which the modal analysis works, measured by
+# tests/fuzz/test_parsers.py. The analysis mixes rotations (no unit) and translations (the rig's
+# length unit) in one matrix, so its rank tolerance and the Cholesky factor of M̃ fail on rigs
+# far from unit size; K̃/M̃ overflows beyond the physical range.
+PHYSICAL_RANGE = (1e-100, 1e100)  # each body's mass and moments, each joint stiffness (or 0)
+SIZE_RANGE = (1e-4, 1e6)  # bounding-box diagonal of the body ends, in the rig's unit
+ASPECT_RANGE = (1e-6, 1e3)  # radius / length of a body
+MAX_LENGTH_RATIO = 1e3  # longest body / shortest body
+MAX_DENSITY_RATIO = 1e12  # densest body / lightest body
 
 
 def unit(vector, name: str = "vector") -> np.ndarray:
@@ -187,6 +199,7 @@ class Skeleton:
             if not body.radius > 0 or not body.density > 0:
                 raise InputError(
                     f"{self.name}: body {body.name!r} needs a positive radius and density")
+        self._check_ranges()
         for joint in self.joints:
             i, l = joint.bodies
             if i == l:
@@ -202,6 +215,22 @@ class Skeleton:
                     and np.all(joint.stiffness >= 0)):
                 raise InputError(f"{self.name}: joint {joint.name!r} has a non-finite or "
                                       "negative value")
+
+    def _check_ranges(self) -> None:
+        """InputError for a skeleton outside the range the modal analysis handles: its bodies
+        (`check_bodies`), joint positions and stiffnesses (PHYSICAL_RANGE)."""
+        check_bodies(self.bodies, self.name)
+        low, high = PHYSICAL_RANGE
+        for joint in self.joints:
+            position = np.asarray(joint.position, dtype=float)
+            if not (np.all(np.isfinite(position)) and np.abs(position).max() <= MAX_COORDINATE):
+                raise InputError(f"{self.name}: joint {joint.name!r} lies beyond "
+                                 f"±{MAX_COORDINATE:.0e}")
+            stiffness = np.asarray(joint.stiffness, dtype=float)
+            bad = stiffness[(stiffness > high) | ((stiffness > 0) & (stiffness < low))]
+            if len(bad):
+                raise InputError(f"{self.name}: joint {joint.name!r} has stiffness {bad[0]:g}; "
+                                 f"it must be 0 or from {low:g} to {high:g}")
 
     # ----------------------------------------------------------------- derived arrays
     @property
@@ -248,18 +277,8 @@ class Skeleton:
     # ----------------------------------------------------------------- loading
     @classmethod
     def from_json(cls, path: str | os.PathLike) -> Skeleton:
-        path = os.fspath(path)
-        try:
-            with open(path, encoding="utf-8") as file:
-                document = json.load(file)
-        except FileNotFoundError:
-            raise InputError(f"{path}: no such file") from None
-        except (OSError, UnicodeDecodeError) as error:
-            raise InputError(f"{path}: cannot read ({error})") from None
-        except json.JSONDecodeError as error:
-            raise InputError(f"{path}: malformed JSON at line {error.lineno} "
-                                  f"column {error.colno} ({error.msg})") from None
-        return cls.from_dict(document, name=os.path.basename(path))
+        """Read a skeleton JSON file (docs/design.md#skeleton-file), checked like `from_dict`."""
+        return cls.from_dict(read_json(path), name=os.path.basename(os.fspath(path)))
 
     @classmethod
     def from_dict(cls, document, name: str = "skeleton") -> Skeleton:
@@ -269,7 +288,7 @@ class Skeleton:
                                   "(expected \"format\": \"eigendance.skeleton\")")
         if document.get("version") != 1:
             raise InputError(f"{name}: unsupported skeleton version "
-                                  f"{document.get('version')!r} (expected 1)")
+                                  f"{_shown(document.get('version'))} (expected 1)")
         raw_bodies = document.get("bodies")
         raw_joints = document.get("joints", [])
         if not isinstance(raw_bodies, list) or not raw_bodies:
@@ -297,6 +316,7 @@ class Skeleton:
         for body_name in names:
             if names.count(body_name) > 1:
                 raise InputError(f"{name}: duplicate body name {body_name!r}")
+        check_bodies(bodies, name)  # before "auto" stiffness computes with their masses
         index_of = {body_name: i for i, body_name in enumerate(names)}
         joints = []
         joint_names = set()
@@ -312,15 +332,15 @@ class Skeleton:
                 raise InputError(f"{name}: duplicate joint name {joint_name!r}")
             joint_names.add(joint_name)
             kind = item.get("type")
-            if kind not in CONSTRAINED_ROWS:
-                raise InputError(f"{label} has unknown type {kind!r} "
+            if not isinstance(kind, str) or kind not in CONSTRAINED_ROWS:
+                raise InputError(f"{label} has unknown type {_shown(kind)} "
                                       f"(use {', '.join(JOINT_TYPES)})")
             members = item.get("bodies")
             if not isinstance(members, list) or len(members) < 2:
                 raise InputError(f"{label}: \"bodies\" must list at least 2 body names")
             for member in members:
-                if member not in index_of:
-                    raise InputError(f"{label} names unknown body {member!r}")
+                if not isinstance(member, str) or member not in index_of:
+                    raise InputError(f"{label} names unknown body {_shown(member)}")
             if len(set(members)) != len(members):
                 raise InputError(f"{label} lists a body twice")
             position = item.get("position")
@@ -368,6 +388,39 @@ class Skeleton:
                         j.damping) for j in self.joints]
         return Skeleton(bodies, joints, self.name, self.vertices, self.faces, self.weights,
                         list(self.notes))
+
+
+def check_bodies(bodies: list[Body], name: str) -> None:
+    """InputError, naming the first body beyond them, unless the bodies keep to the ranges the
+    modal analysis handles: coordinates, SIZE_RANGE, ASPECT_RANGE, PHYSICAL_RANGE for masses
+    and moments, MAX_LENGTH_RATIO and MAX_DENSITY_RATIO (in that order: each check keeps the
+    numbers of the next one finite)."""
+    ends = np.array([end for body in bodies for end in (body.start, body.end)], dtype=float)
+    if not (np.all(np.isfinite(ends)) and np.abs(ends).max() <= MAX_COORDINATE):
+        raise InputError(f"{name}: coordinates must lie within ±{MAX_COORDINATE:.0e}")
+    size = float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0)))
+    if not SIZE_RANGE[0] <= size <= SIZE_RANGE[1]:
+        raise InputError(f"{name}: the rig spans {size:.3g}; rigs from {SIZE_RANGE[0]:g} to "
+                         f"{SIZE_RANGE[1]:g} units across can be analysed (rescale it)")
+    low, high = PHYSICAL_RANGE
+    for body in bodies:
+        aspect = body.radius / body.length
+        if not ASPECT_RANGE[0] <= aspect <= ASPECT_RANGE[1]:
+            raise InputError(f"{name}: body {body.name!r} has radius / length = {aspect:.3g}, "
+                             f"outside {ASPECT_RANGE[0]:g} … {ASPECT_RANGE[1]:g}")
+        values = np.array([body.mass, *body.inertia])
+        if not np.all((values >= low) & (values <= high)):
+            raise InputError(f"{name}: body {body.name!r} has a mass or moment of inertia "
+                             f"outside {low:g} … {high:g} (check its density {body.density:g} "
+                             f"and radius {body.radius:g})")
+    lengths = np.array([body.length for body in bodies])
+    densities = np.array([body.density for body in bodies])
+    if lengths.max() > MAX_LENGTH_RATIO * lengths.min():
+        raise InputError(f"{name}: body lengths range from {lengths.min():.3g} to "
+                         f"{lengths.max():.3g}, more than {MAX_LENGTH_RATIO:g} times apart")
+    if densities.max() > MAX_DENSITY_RATIO * densities.min():
+        raise InputError(f"{name}: densities range from {densities.min():.3g} to "
+                         f"{densities.max():.3g}, more than {MAX_DENSITY_RATIO:g} times apart")
 
 
 def meeting_point(a: Body, b: Body) -> np.ndarray:
@@ -427,17 +480,29 @@ def _stiffness(value, joint: Joint, bodies: list[Body], label: str) -> np.ndarra
 
 def _number(value, label: str, positive: bool = False, minimum: float | None = None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise InputError(f"{label} must be a number, not {value!r}")
-    if not math.isfinite(value):
-        raise InputError(f"{label} is not finite ({value!r})")
+        raise InputError(f"{label} must be a number, not {_shown(value)}")
+    if not finite_number(value):
+        raise InputError(f"{label} is not finite ({_shown(value)})")
     if positive and not value > 0:
-        raise InputError(f"{label} must be positive, not {value!r}")
+        raise InputError(f"{label} must be positive, not {_shown(value)}")
     if minimum is not None and value < minimum:
-        raise InputError(f"{label} must be at least {minimum}, not {value!r}")
+        raise InputError(f"{label} must be at least {minimum}, not {_shown(value)}")
     return float(value)
+
+
+def _shown(value) -> str:
+    """A JSON value in a message: short, whatever it is."""
+    try:
+        text = repr(value) if isinstance(value, str) else json.dumps(value)
+    except (TypeError, ValueError, RecursionError):
+        text = type(value).__name__
+    return text if len(text) <= 40 else text[:39] + "…"
 
 
 def _vector(value, label: str) -> np.ndarray:
     if not isinstance(value, list) or len(value) != 3:
-        raise InputError(f"{label} must be a list of 3 numbers, not {value!r}")
-    return np.array([_number(v, label) for v in value])
+        raise InputError(f"{label} must be a list of 3 numbers, not {_shown(value)}")
+    vector = np.array([_number(v, label) for v in value])
+    if np.abs(vector).max() > MAX_COORDINATE:
+        raise InputError(f"{label} must lie within ±{MAX_COORDINATE:.0e}")
+    return vector
