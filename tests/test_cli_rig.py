@@ -74,7 +74,7 @@ def test_animate_rig_with_audio_drive(tmp_path, capsys):
 
 def test_mode_selection():
     assert parse_modes("0,2-4", 6).tolist() == [0, 2, 3, 4]
-    assert parse_modes(None, 3).tolist() == [0, 1, 2]
+    assert parse_modes(None, 3) is None  # the palette's default selection
     with pytest.raises(Exception, match="mode 9 does not exist"):
         parse_modes("9", 5)
 

@@ -21,7 +21,7 @@ from eigendance.modal.skeleton import (
     Body,
     Joint,
     Skeleton,
-    automatic_stiffness,
+    set_automatic_stiffness,
 )
 
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
@@ -60,9 +60,10 @@ def skeleton_from_gltf(path: str | os.PathLike,
       frequencies do not depend on it with the default stiffness).
     - Joints: one spherical joint (free ω, natural for characters) between each joint node
       and its parent joint node, at the child's position; stiffness per rotation row from
-      `automatic_stiffness`, i.e. every joint alone would swing its lighter body at
-      `stiffness_frequency` Hz (1 Hz). Other choices: change `joints` (type,
-      stiffness) of the returned skeleton in code; the skin stays valid.
+      `skeleton.automatic_stiffness`: every joint alone would swing the lighter of the two
+      parts it joins (for a limb: the limb from that joint outward) rigidly at
+      `stiffness_frequency` Hz (1 Hz). Other choices: `Skeleton.with_stiffness`, or change
+      `joints` (type, stiffness) of the returned skeleton in code; the skin stays valid.
     - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
       skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
       (vertices with no weight go to the nearest body); seam vertices (same position)
@@ -358,12 +359,10 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     for child, parent in enumerate(rig.parents):
         if parent < 0:
             continue
-        joint = Joint(f"{rig.names[parent]}-{rig.names[child]}", "spherical", (parent, child),
-                      positions[child].copy(), np.zeros(3))
-        joint.stiffness = automatic_stiffness(joint, bodies, stiffness_frequency)
-        joints.append(joint)
-    attached = _attach_separate_trees(bodies, joints, rig, descendants, weights,
-                                      stiffness_frequency)
+        joints.append(Joint(f"{rig.names[parent]}-{rig.names[child]}", "spherical",
+                            (parent, child), positions[child].copy(), np.zeros(3)))
+    attached = _attach_separate_trees(bodies, joints, rig, descendants, weights)
+    set_automatic_stiffness(bodies, joints, frequency=stiffness_frequency)
     notes = list(rig.notes)
     if attached:
         notes.append(f"attached {attached} separate joint trees to their nearest body")
@@ -381,7 +380,7 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     return skeleton
 
 
-def _attach_separate_trees(bodies, joints, rig, descendants, weights, frequency) -> int:
+def _attach_separate_trees(bodies, joints, rig, descendants, weights) -> int:
     """Join the roots of separate joint trees (IK targets, flat hierarchies such as the WebXR
     hand) into one tree, Prim-style: repeatedly attach the free root nearest to a body already
     in the tree with a spherical joint at the root's position. Returns how many were attached."""
@@ -407,10 +406,8 @@ def _attach_separate_trees(bodies, joints, rig, descendants, weights, frequency)
             if best is None or distance[nearest] < best[0]:
                 best = (distance[nearest], root, int(members[nearest]))
         _, root, host = best
-        joint = Joint(f"{bodies[host].name}-{bodies[root].name}", "spherical", (host, root),
-                      bodies[root].start.copy(), np.zeros(3))
-        joint.stiffness = automatic_stiffness(joint, bodies, frequency)
-        joints.append(joint)
+        joints.append(Joint(f"{bodies[host].name}-{bodies[root].name}", "spherical",
+                            (host, root), bodies[root].start.copy(), np.zeros(3)))
         waiting.remove(root)
         in_tree.update(_preorder(children, [0 if j != root else -1
                                             for j in range(len(bodies))]))

@@ -15,9 +15,12 @@ them (thesis §5.2). Frames:
 Sources: the skeleton JSON (`Skeleton.from_json`, docs/design.md#skeleton-file) and glTF 2.0
 skins (`eigendance.modal.gltf_skin.skeleton_from_gltf`).
 In the JSON, a joint's "stiffness" is a number (every free row), a list (one per free row of
-[ωx ωy ωz vx vy vz], in that order), or "auto" (see DEFAULT_JOINT_FREQUENCY); "position"
+[ωx ωy ωz vx vy vz], in that order), or "auto" (`automatic_stiffness`); "position"
 defaults to where the two bodies meet (a shared end, else the closest points of their axes);
 "density" defaults to DEFAULT_DENSITY; "damping" is kept but the modes are undamped.
+
+Editing (copies, the original is kept): `with_stiffness` sets joints' stiffness by name,
+`rotate_joint` changes the rest pose by turning one side of a joint about it (thesis §4.5.6).
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.modal.rotations import rotation_exp
 
 # Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
 CONSTRAINED_ROWS = {
@@ -42,10 +46,12 @@ CONSTRAINED_ROWS = {
 JOINT_TYPES = tuple(CONSTRAINED_ROWS)
 
 DEFAULT_DENSITY = 1000.0  # kg/m³, about that of water and of living tissue
-# Default joint stiffness (glTF rigs, and JSON joints with "stiffness": "auto"): each free row of
-# a joint gets the stiffness that makes the lighter of its two bodies, swinging (or sliding) about
-# the joint while the other is held still, vibrate at this frequency. Scale-free: a rig in
-# centimetres moves like the same rig in metres.
+# Default joint stiffness (glTF rigs, built-in rigs, JSON joints with "stiffness": "auto"): each
+# free row of a joint gets the stiffness that makes the lighter of its two *sides* (the parts the
+# skeleton falls into without the joint; the joint's own two bodies when it closes a loop),
+# swinging (or sliding) rigidly about the joint while the other side is held still, vibrate at
+# this frequency (`automatic_stiffness`). Scale-free: a rig in centimetres moves like the same
+# rig in metres.
 DEFAULT_JOINT_FREQUENCY = 1.0  # Hz
 
 
@@ -102,6 +108,11 @@ class Body:
     @property
     def center(self) -> np.ndarray:
         return (self.start + self.end) / 2
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """World-from-body rotation (3, 3): x along the axis (`body_rotation`)."""
+        return body_rotation(self.end - self.start)
 
     @property
     def mass(self) -> float:
@@ -220,7 +231,7 @@ class Skeleton:
     @property
     def rotations(self) -> np.ndarray:
         """World-from-body rotations, (n_bodies, 3, 3)."""
-        return np.array([body_rotation(body.end - body.start) for body in self.bodies])
+        return np.array([body.rotation for body in self.bodies])
 
     @property
     def spatial_inertia(self) -> np.ndarray:
@@ -229,15 +240,139 @@ class Skeleton:
 
     def joint_rotation(self, joint: Joint) -> np.ndarray:
         """World-from-joint rotation (columns x, y, z) (docs/design.md#joints)."""
-        d_i = self.bodies[joint.bodies[0]].direction
-        d_l = self.bodies[joint.bodies[1]].direction
-        if joint.axis is not None:
-            z = unit(joint.axis, f"axis of joint {joint.name!r}")
-        else:
-            normal = np.cross(d_i, d_l)
-            z = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 1e-9 \
-                else perpendicular(d_i)
-        return frame_from_xz(d_i, z)
+        return joint_frame(joint, self.bodies)
+
+    @property
+    def joint_pairs(self) -> np.ndarray:
+        """(n_joints, 2) int64: the two bodies (i, l) of every joint."""
+        return np.array([joint.bodies for joint in self.joints], dtype=np.int64).reshape(-1, 2)
+
+    def joint_index(self, key) -> int:
+        """The index of a joint given by name or by index; InputError naming the joint."""
+        if isinstance(key, int | np.integer) and not isinstance(key, bool):
+            if not 0 <= key < len(self.joints):
+                raise InputError(f"{self.name}: no joint {key} (the rig has "
+                                 f"{len(self.joints)} joints)", status=404)
+            return int(key)
+        found = [index for index, joint in enumerate(self.joints) if joint.name == key]
+        if not found:
+            raise InputError(f"{self.name}: no joint named {key!r}", status=404)
+        return found[0]
+
+    def joint_sides(self, index: int) -> tuple[np.ndarray, np.ndarray] | None:
+        """The bodies on each side of joint `index` (body i's side, body l's side) as index
+        arrays: the parts the skeleton falls into without this joint. None when the joint closes
+        a loop (its two bodies stay connected without it)."""
+        return _sides(self.n_bodies, self.joint_pairs, index)
+
+    def automatic_stiffness(self, index: int,
+                            frequency: float = DEFAULT_JOINT_FREQUENCY) -> np.ndarray:
+        """The default stiffness of joint `index` ("auto"; `automatic_stiffness`)."""
+        return automatic_stiffness(self.joints[index], self.bodies, frequency,
+                                   self.joint_sides(index))
+
+    # ----------------------------------------------------------------- editing
+    def with_stiffness(self, values: dict, scale: float = 1.0) -> Skeleton:
+        """A copy with new stiffness for the joints named in `values`.
+
+        Parameters
+        ----------
+        values : {joint name (or index): stiffness}, a stiffness being a number (every free row),
+            a list with one number per free row of the joint, or "auto" (the default rule,
+            `automatic_stiffness`).
+        scale : then multiplies every joint's stiffness (1: unchanged).
+
+        Example
+        -------
+        >>> from eigendance.modal.sample_rigs import open_chain
+        >>> chain = open_chain(3, "revolute", skin=False)
+        >>> chain.with_stiffness({"j0": 5.0}).joints[0].stiffness.tolist()
+        [5.0]
+        """
+        if not isinstance(values, dict):
+            raise InputError(f"{self.name}: joint stiffness must be given as "
+                             "{joint name: stiffness}")
+        if not (isinstance(scale, int | float) and math.isfinite(scale) and scale >= 0):
+            raise InputError(f"{self.name}: the stiffness scale must be a finite number ≥ 0, "
+                             f"not {scale!r}")
+        edited = self.copy()
+        for key, value in values.items():
+            index = edited.joint_index(key)
+            joint = edited.joints[index]
+            label = f"{self.name}: joint {joint.name!r}"
+            joint.stiffness = edited.automatic_stiffness(index) if value == "auto" else \
+                _stiffness(value, joint, label)
+        for joint in edited.joints:
+            joint.stiffness = joint.stiffness * float(scale)
+        return edited
+
+    def rotate_joint(self, key, rotation) -> Skeleton:
+        """A copy in a new rest pose: the side of joint `key` holding its second body turns
+        about the joint (thesis §4.5.6, Fig. 4.17).
+
+        Parameters
+        ----------
+        key : the joint's name or index.
+        rotation : (3,) rotation vector in world coordinates, radians: the side turns by
+            exp([rotation]×) about the joint's position P.
+
+        Every body of that side moves rigidly, x ↦ P + Q(x − P) with Q = exp([rotation]×), and
+        the joints inside it (positions, axes) with it; skin vertices move by the share of
+        their weight on that side, x ↦ x + (Σ_{b ∈ side} w_b)(P + Q(x − P) − x) (linear blend
+        skinning of the edit). Stiffnesses are kept. A joint that closes a loop cannot turn one
+        side alone: InputError.
+
+        Example
+        -------
+        >>> from eigendance.modal.sample_rigs import open_chain
+        >>> chain = open_chain(2, skin=False)            # b0 from (0,0,0) to (1,0,0), then b1
+        >>> bent = chain.rotate_joint("j0", [0, 0, np.pi / 2])
+        >>> np.round(bent.bodies[1].end - bent.bodies[1].start, 6).tolist()
+        [-0.0, 1.0, 0.0]
+        """
+        index = self.joint_index(key)
+        joint = self.joints[index]
+        vector = np.asarray(rotation, dtype=float)
+        if vector.shape != (3,) or not np.all(np.isfinite(vector)):
+            raise InputError(f"{self.name}: a joint rotation is 3 finite numbers (a rotation "
+                             f"vector in radians), not {rotation!r}")
+        sides = self.joint_sides(index)
+        if sides is None:
+            raise InputError(f"{self.name}: joint {joint.name!r} closes a loop; one side of it "
+                             "cannot turn alone")
+        moving = np.zeros(self.n_bodies, dtype=bool)
+        moving[sides[1]] = True
+        turn = rotation_exp(vector)
+        pivot = joint.position
+
+        def move(point):
+            return pivot + turn @ (np.asarray(point, dtype=float) - pivot)
+
+        edited = self.copy()
+        for body_index in np.flatnonzero(moving):
+            body = edited.bodies[body_index]
+            body.start, body.end = move(body.start), move(body.end)
+        for other in edited.joints:
+            if moving[other.bodies[0]] and moving[other.bodies[1]]:
+                other.position = move(other.position)
+                if other.axis is not None:
+                    other.axis = turn @ other.axis
+        if edited.vertices is not None:
+            share = edited.weights[:, moving].sum(axis=1)[:, None]
+            moved = pivot + (edited.vertices - pivot) @ turn.T
+            edited.vertices = edited.vertices + share * (moved - edited.vertices)
+        return edited
+
+    def copy(self) -> Skeleton:
+        """A deep copy (bodies, joints and skin arrays)."""
+        bodies = [Body(b.name, b.start.copy(), b.end.copy(), b.radius, b.density)
+                  for b in self.bodies]
+        joints = [Joint(j.name, j.type, tuple(j.bodies), j.position.copy(), j.stiffness.copy(),
+                        None if j.axis is None else j.axis.copy(), j.damping)
+                  for j in self.joints]
+        skin = [None if a is None else a.copy() for a in (self.vertices, self.faces,
+                                                         self.weights)]
+        return Skeleton(bodies, joints, self.name, *skin, list(self.notes))
 
     @property
     def size(self) -> float:
@@ -298,7 +433,7 @@ class Skeleton:
             if names.count(body_name) > 1:
                 raise InputError(f"{name}: duplicate body name {body_name!r}")
         index_of = {body_name: i for i, body_name in enumerate(names)}
-        joints = []
+        joints, automatic = [], []
         joint_names = set()
         for index, item in enumerate(raw_joints):
             label = f"{name}: joint {index}"
@@ -341,9 +476,14 @@ class Skeleton:
                     f"{joint_name}[{names[i]},{names[l]}]"
                 where = position if position is not None else \
                     meeting_point(bodies[i], bodies[l])
-                joint = Joint(pair_name, kind, (i, l), where, np.zeros(0), axis, damping)
-                joint.stiffness = _stiffness(stiffness, joint, bodies, label)
+                joint = Joint(pair_name, kind, (i, l), where,
+                              np.zeros(len(_free_rows(kind))), axis, damping)
+                if stiffness == "auto":
+                    automatic.append(len(joints))
+                else:
+                    joint.stiffness = _stiffness(stiffness, joint, label)
                 joints.append(joint)
+        set_automatic_stiffness(bodies, joints, automatic)
         return cls(bodies, joints, name=name)
 
     def to_dict(self) -> dict:
@@ -370,6 +510,26 @@ class Skeleton:
                         list(self.notes))
 
 
+def read_joint_stiffness(path: str | os.PathLike) -> dict:
+    """A joint stiffness file: a JSON object {joint name: number | [one per free row] |
+    "auto"} (`Skeleton.with_stiffness` checks the values against the rig's joints)."""
+    path = os.fspath(path)
+    name = os.path.basename(path)
+    try:
+        with open(path, encoding="utf-8") as file:
+            values = json.load(file)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file", status=404) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError(f"{path}: cannot read ({error})") from None
+    except json.JSONDecodeError as error:
+        raise InputError(f"{name}: malformed JSON at line {error.lineno} column {error.colno} "
+                         f"({error.msg})") from None
+    if not isinstance(values, dict):
+        raise InputError(f"{name}: expected a JSON object {{joint name: stiffness}}")
+    return values
+
+
 def meeting_point(a: Body, b: Body) -> np.ndarray:
     """Where two bodies meet: a shared end if they have one, else the midpoint of the closest
     points of their axes (thesis §3.2.1: the joint sits where the axes intersect)."""
@@ -391,28 +551,96 @@ def meeting_point(a: Body, b: Body) -> np.ndarray:
     return (a.start + s * d1 + b.start + t * d2) / 2
 
 
+def joint_frame(joint: Joint, bodies: list[Body]) -> np.ndarray:
+    """World-from-joint rotation (columns x, y, z) of a joint (docs/design.md#joints)."""
+    d_i = bodies[joint.bodies[0]].direction
+    d_l = bodies[joint.bodies[1]].direction
+    if joint.axis is not None:
+        z = unit(joint.axis, f"axis of joint {joint.name!r}")
+    else:
+        normal = np.cross(d_i, d_l)
+        z = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 1e-9 \
+            else perpendicular(d_i)
+    return frame_from_xz(d_i, z)
+
+
+def inertia_about(bodies: list[Body], members, point) -> tuple[np.ndarray, float]:
+    """World inertia tensor (3, 3) about `point` and total mass of the bodies `members`:
+    Σ_b R_b diag(J_b) R_bᵀ + m_b (|d_b|² I − d_b d_bᵀ), d_b = c_b − point (parallel axes)."""
+    tensor, mass = np.zeros((3, 3)), 0.0
+    for index in members:
+        body = bodies[index]
+        rotation, offset = body.rotation, body.center - point
+        tensor += (rotation * body.inertia) @ rotation.T + body.mass * (
+            offset @ offset * np.eye(3) - np.outer(offset, offset))
+        mass += body.mass
+    return tensor, mass
+
+
 def automatic_stiffness(joint: Joint, bodies: list[Body],
-                        frequency: float = DEFAULT_JOINT_FREQUENCY) -> np.ndarray:
-    """Per free row: (2πf)² times the lighter body's inertia about the joint (see module top)."""
+                        frequency: float = DEFAULT_JOINT_FREQUENCY,
+                        sides: tuple | None = None) -> np.ndarray:
+    """The default stiffness of a joint, one value per free row (docs/design.md#joints).
+
+    k_row = (2πf)² · min(I_row(side i), I_row(side l)): for a rotation row (ωx, ωy, ωz) I_row is
+    the moment of inertia of a side about the joint frame's axis of that row through the joint
+    position P; for a translation row (vx, vy, vz) the side's mass. A side swinging rigidly
+    about the joint while the other is held then vibrates at f Hz (ω² = k/I). `sides`: the two
+    lists of bodies (`Skeleton.joint_sides`); None (a joint closing a loop) takes the joint's own
+    two bodies.
+    """
     omega2 = (2 * math.pi * frequency) ** 2
-    values = []
-    for row in joint.free_rows:
-        candidates = []
-        for index in joint.bodies:
-            body = bodies[index]
-            if row < 3:  # rotation: moment of inertia about the joint point (parallel axes)
-                distance = np.linalg.norm(body.center - joint.position)
-                candidates.append(body.inertia[1] + body.mass * distance**2)
-            else:
-                candidates.append(body.mass)
-        values.append(omega2 * min(candidates))
-    return np.array(values)
+    frame = joint_frame(joint, bodies)
+    groups = sides if sides is not None else ([joint.bodies[0]], [joint.bodies[1]])
+    candidates = []
+    for members in groups:
+        tensor, mass = inertia_about(bodies, members, joint.position)
+        moments = np.einsum("ia,ij,ja->a", frame, tensor, frame)  # e_aᵀ I e_a, joint axes
+        candidates.append(np.concatenate([moments, [mass] * 3]))
+    lighter = np.minimum(*candidates)
+    return omega2 * lighter[list(joint.free_rows)]
 
 
-def _stiffness(value, joint: Joint, bodies: list[Body], label: str) -> np.ndarray:
+def set_automatic_stiffness(bodies: list[Body], joints: list[Joint], indices=None,
+                            frequency: float = DEFAULT_JOINT_FREQUENCY) -> None:
+    """Give the joints at `indices` (default all) their `automatic_stiffness`, in place."""
+    pairs = np.array([joint.bodies for joint in joints], dtype=np.int64).reshape(-1, 2)
+    for index in range(len(joints)) if indices is None else indices:
+        joints[index].stiffness = automatic_stiffness(
+            joints[index], bodies, frequency, _sides(len(bodies), pairs, index))
+
+
+def _sides(n_bodies: int, pairs: np.ndarray, index: int):
+    """Bodies reachable from each body of joint `index` without it, or None (a loop)."""
+    neighbours = [[] for _ in range(n_bodies)]
+    for position, (i, l) in enumerate(pairs):
+        if position != index:
+            neighbours[i].append(l)
+            neighbours[l].append(i)
+
+    def reach(start):
+        seen, stack = {start}, [start]
+        while stack:
+            for other in neighbours[stack.pop()]:
+                if other not in seen:
+                    seen.add(other)
+                    stack.append(other)
+        return seen
+
+    first, second = pairs[index]
+    side = reach(first)
+    if second in side:
+        return None
+    return np.array(sorted(side)), np.array(sorted(reach(second)))
+
+
+def _free_rows(kind: str) -> tuple[int, ...]:
+    return tuple(row for row in range(6) if row not in CONSTRAINED_ROWS[kind])
+
+
+def _stiffness(value, joint: Joint, label: str) -> np.ndarray:
+    """A stiffness given as a number or a list (one per free row), checked."""
     free = len(joint.free_rows)
-    if value == "auto":
-        return automatic_stiffness(joint, bodies)
     if isinstance(value, bool):
         raise InputError(f"{label}: \"stiffness\" must be a number, a list or \"auto\"")
     if isinstance(value, (int, float)):
