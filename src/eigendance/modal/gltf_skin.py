@@ -73,6 +73,15 @@ def skeleton_from_gltf(path: str | os.PathLike,
     return _skeleton_from_rig(rig, os.path.basename(os.fspath(path)), stiffness_frequency)
 
 
+def has_skin(path: str | os.PathLike) -> bool:
+    """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable."""
+    try:
+        document = pygltflib.GLTF2().load(os.fspath(path))
+    except Exception:  # noqa: BLE001 - pygltflib raises many kinds; the mesh reader says why
+        return False
+    return bool(document is not None and document.skins)
+
+
 def read_skins(path: str | os.PathLike) -> SkinnedRig:
     """Every skin of the file merged by joint node (several skins may share one skeleton)."""
 

@@ -156,7 +156,9 @@ class Skeleton:
     """Bodies and pairwise joints, optionally with a skinned mesh.
 
     vertices (n, 3), faces (m, 3) and weights (n, n_bodies, rows summing to 1) describe the skin
-    in the same coordinates as the bodies; all three are None for a bare skeleton.
+    in the same coordinates as the bodies; all three are None for a bare skeleton. After rest-pose
+    edits (`rotate_joint`), bind_vertices are the skin as loaded and pose (n_bodies, 4, 4) each
+    body's rigid transform since then: vertices = Σ_b w_b pose_b · bind_vertices.
 
     Parameters
     ----------
@@ -181,6 +183,8 @@ class Skeleton:
     faces: np.ndarray | None = None
     weights: np.ndarray | None = None
     notes: list[str] = field(default_factory=list)
+    bind_vertices: np.ndarray | None = None
+    pose: np.ndarray | None = None
 
     def __post_init__(self):
         names = [body.name for body in self.bodies]
@@ -317,10 +321,10 @@ class Skeleton:
             exp([rotation]×) about the joint's position P.
 
         Every body of that side moves rigidly, x ↦ P + Q(x − P) with Q = exp([rotation]×), and
-        the joints inside it (positions, axes) with it; skin vertices move by the share of
-        their weight on that side, x ↦ x + (Σ_{b ∈ side} w_b)(P + Q(x − P) − x) (linear blend
-        skinning of the edit). Stiffnesses are kept. A joint that closes a loop cannot turn one
-        side alone: InputError.
+        the joints inside it (positions, axes) with it; the skin follows by linear blend
+        skinning from the skin as loaded, x = Σ_b w_b pose_b x_bind, where pose_b composes the
+        edits of body b (so turning a joint back restores the mesh exactly). Stiffnesses are
+        kept. A joint that closes a loop cannot turn one side alone: InputError.
 
         Example
         -------
@@ -332,7 +336,10 @@ class Skeleton:
         """
         index = self.joint_index(key)
         joint = self.joints[index]
-        vector = np.asarray(rotation, dtype=float)
+        try:
+            vector = np.asarray(rotation, dtype=float)
+        except (TypeError, ValueError):
+            vector = np.zeros(0)
         if vector.shape != (3,) or not np.all(np.isfinite(vector)):
             raise InputError(f"{self.name}: a joint rotation is 3 finite numbers (a rotation "
                              f"vector in radians), not {rotation!r}")
@@ -358,9 +365,16 @@ class Skeleton:
                 if other.axis is not None:
                     other.axis = turn @ other.axis
         if edited.vertices is not None:
-            share = edited.weights[:, moving].sum(axis=1)[:, None]
-            moved = pivot + (edited.vertices - pivot) @ turn.T
-            edited.vertices = edited.vertices + share * (moved - edited.vertices)
+            if edited.bind_vertices is None:
+                edited.bind_vertices = edited.vertices
+                edited.pose = np.tile(np.eye(4), (self.n_bodies, 1, 1))
+            step = np.eye(4)
+            step[:3, :3], step[:3, 3] = turn, pivot - turn @ pivot
+            edited.pose[moving] = step @ edited.pose[moving]
+            blended = (edited.weights @ edited.pose[:, :3].reshape(self.n_bodies, 12))
+            blended = blended.reshape(-1, 3, 4)
+            edited.vertices = np.einsum("nij,nj->ni", blended[:, :, :3],
+                                        edited.bind_vertices) + blended[:, :, 3]
         return edited
 
     def copy(self) -> Skeleton:
@@ -372,7 +386,8 @@ class Skeleton:
                   for j in self.joints]
         skin = [None if a is None else a.copy() for a in (self.vertices, self.faces,
                                                          self.weights)]
-        return Skeleton(bodies, joints, self.name, *skin, list(self.notes))
+        posed = [None if a is None else a.copy() for a in (self.bind_vertices, self.pose)]
+        return Skeleton(bodies, joints, self.name, *skin, list(self.notes), *posed)
 
     @property
     def size(self) -> float:
@@ -507,7 +522,17 @@ class Skeleton:
         joints = [Joint(j.name, j.type, j.bodies, j.position, j.stiffness * stiffness, j.axis,
                         j.damping) for j in self.joints]
         return Skeleton(bodies, joints, self.name, self.vertices, self.faces, self.weights,
-                        list(self.notes))
+                        list(self.notes), self.bind_vertices, self.pose)
+
+
+def is_skeleton_json(path: str | os.PathLike) -> bool:
+    """Whether a file is a skeleton JSON (its "format" says so); False for anything else."""
+    try:
+        with open(path, encoding="utf-8") as file:
+            document = json.load(file)
+    except (OSError, ValueError, RecursionError):
+        return False
+    return isinstance(document, dict) and document.get("format") == "eigendance.skeleton"
 
 
 def read_joint_stiffness(path: str | os.PathLike) -> dict:
