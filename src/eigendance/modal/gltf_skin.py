@@ -46,8 +46,10 @@ class SkinnedRig:
 
 
 def skeleton_from_gltf(path: str | os.PathLike,
-                       stiffness_frequency: float = DEFAULT_JOINT_FREQUENCY) -> Skeleton:
-    """Read the skins of a glTF 2.0 file (.glb, .gltf) as a skeleton with a skinned mesh.
+                       stiffness_frequency: float = DEFAULT_JOINT_FREQUENCY,
+                       name: str | None = None) -> Skeleton:
+    """Read the skins of a glTF 2.0 file (.glb, .gltf) as a skeleton with a skinned mesh; messages
+    call it `name` (default: the file's name).
 
     - Rest pose: the file's node pose. Joint j sits at the origin of its world matrix W_j;
       skinned vertices are placed at Σ_j w_j W_j·IBM_j·x (the bind pose, x itself when the

@@ -25,8 +25,24 @@ from eigendance.music.spectrogram import Spectrogram
 
 @dataclass
 class Rig:
-    """A skeleton with its skin, its vibration modes, the modal skin and the default palette
-    (None when the rig has no vibration mode)."""
+    """A rig ready to play: its skeleton, vibration modes, modal skin and default palette.
+
+    Parameters
+    ----------
+    skeleton : bodies, joints and the skin (vertices, faces, weights).
+    model : the skeleton's vibration modes.
+    skin : the modal skinning of the skin (`ModalSkin`).
+    palette : the default palette (`eigendance.modal.palette`), None without vibration modes.
+
+    Example
+    -------
+    >>> from eigendance.modal.motion import rig_coefficients
+    >>> from eigendance.modal.sample_rigs import load_rig
+    >>> rig = Rig.from_skeleton(load_rig("hand"))
+    >>> moved = rig.skin.positions(rig_coefficients(rig.model, None, None, [0.0, 0.5]))
+    >>> moved.shape == (2, len(rig.skeleton.vertices), 3)
+    True
+    """
 
     skeleton: Skeleton
     model: ModalModel

@@ -93,9 +93,7 @@ def sample_rig(name: str) -> Skeleton:
         return open_chain(3)
     if name == "hand":
         with resources.as_file(resources.files("eigendance") / "data" / HAND_FILE) as path:
-            skeleton = skeleton_from_gltf(path)
-        skeleton.name = "hand"
-        return skeleton
+            return skeleton_from_gltf(path, name="hand")
     raise InputError(f"unknown sample rig {name!r} (use {', '.join(SAMPLE_RIGS)})")
 
 
@@ -143,13 +141,14 @@ def add_tube_skin(skeleton: Skeleton, rings: int = 8, around: int = 12,
     skeleton.weights = np.concatenate(weights)
 
 
-def load_rig(rig: str | os.PathLike) -> Skeleton:
+def load_rig(rig: str | os.PathLike, name: str | None = None) -> Skeleton:
     """A rig with its skin, from a file or by name.
 
     Parameters
     ----------
     rig : a skeleton JSON (.json), a glTF 2.0 skin (.glb, .gltf), or the name of a built-in
         rig (SAMPLE_RIGS), unless a file of that name exists.
+    name : what messages and the skeleton call a file (default: the file's name).
 
     Returns
     -------
@@ -169,8 +168,8 @@ def load_rig(rig: str | os.PathLike) -> Skeleton:
         raise InputError(f"{rig}: unknown rig format {suffix!r} (use .json, .glb or .gltf, or "
                          f"a built-in rig: {', '.join(SAMPLE_RIGS)})")
     check_readable(rig)
-    skeleton = skeleton_from_gltf(rig) if suffix in (".glb", ".gltf") else \
-        Skeleton.from_json(rig)
+    skeleton = skeleton_from_gltf(rig, name=name) if suffix in (".glb", ".gltf") else \
+        Skeleton.from_json(rig, name)
     if skeleton.vertices is None:
         add_tube_skin(skeleton)
     return skeleton

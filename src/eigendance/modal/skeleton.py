@@ -256,11 +256,11 @@ class Skeleton:
         if isinstance(key, int | np.integer) and not isinstance(key, bool):
             if not 0 <= key < len(self.joints):
                 raise InputError(f"{self.name}: no joint {key} (the rig has "
-                                 f"{len(self.joints)} joints)", status=404)
+                                 f"{len(self.joints)} joints)")
             return int(key)
         found = [index for index, joint in enumerate(self.joints) if joint.name == key]
         if not found:
-            raise InputError(f"{self.name}: no joint named {key!r}", status=404)
+            raise InputError(f"{self.name}: no joint named {key!r}")
         return found[0]
 
     def joint_sides(self, index: int) -> tuple[np.ndarray, np.ndarray] | None:
@@ -329,10 +329,11 @@ class Skeleton:
         Example
         -------
         >>> from eigendance.modal.sample_rigs import open_chain
-        >>> chain = open_chain(2, skin=False)            # b0 from (0,0,0) to (1,0,0), then b1
-        >>> bent = chain.rotate_joint("j0", [0, 0, np.pi / 2])
-        >>> np.round(bent.bodies[1].end - bent.bodies[1].start, 6).tolist()
-        [-0.0, 1.0, 0.0]
+        >>> chain = open_chain(2, skin=False)         # b0 from (0, 0, 0) to (1, 0, 0), then b1
+        >>> bent = chain.rotate_joint("j0", [0, 0, np.pi / 2])   # a quarter turn about z
+        >>> x, y, z = chain.bodies[1].end - chain.bodies[1].start
+        >>> bool(np.allclose(bent.bodies[1].end - bent.bodies[1].start, [-y, x, z]))
+        True
         """
         index = self.joint_index(key)
         joint = self.joints[index]
@@ -397,7 +398,8 @@ class Skeleton:
 
     # ----------------------------------------------------------------- loading
     @classmethod
-    def from_json(cls, path: str | os.PathLike) -> Skeleton:
+    def from_json(cls, path: str | os.PathLike, name: str | None = None) -> Skeleton:
+        """Read a skeleton JSON file; messages call it `name` (default: the file's name)."""
         path = os.fspath(path)
         try:
             with open(path, encoding="utf-8") as file:
@@ -409,7 +411,7 @@ class Skeleton:
         except json.JSONDecodeError as error:
             raise InputError(f"{path}: malformed JSON at line {error.lineno} "
                                   f"column {error.colno} ({error.msg})") from None
-        return cls.from_dict(document, name=os.path.basename(path))
+        return cls.from_dict(document, name=name or os.path.basename(path))
 
     @classmethod
     def from_dict(cls, document, name: str = "skeleton") -> Skeleton:

@@ -311,6 +311,7 @@ async def get_rig_skeleton(request: Request):
 
 async def rig_stiffness(request: Request):
     """{joints: {name: number | [per free row] | "auto"}, scale?} → the new rig bundle."""
+    rig_of(request)
     body = await json_body(request)
     if not isinstance(body, dict) or not isinstance(body.get("joints", {}), dict):
         raise HTTPException(400, "expected a JSON object {joints: {joint name: stiffness}, "
@@ -327,6 +328,7 @@ async def rig_stiffness(request: Request):
 
 async def rig_pose(request: Request):
     """{joint: name or index, rotation: [3 numbers, radians]} → the new rig bundle."""
+    rig_of(request)
     body = await json_body(request)
     if not isinstance(body, dict) or "joint" not in body or \
             not isinstance(body.get("rotation"), list):

@@ -260,7 +260,7 @@ class Library:
     def add_rig(self, path: str, name: str, origin: str) -> RigItem:
         """A rig file (skeleton JSON or glTF skin), analysed now; InputError if it is bad."""
         item = RigItem(new_id(), name, origin, path)
-        self._analyse(item, load_rig(path))
+        self._analyse(item, load_rig(path, name))
         with self.lock:
             self.rigs[item.id] = item
         return item
@@ -272,7 +272,7 @@ class Library:
             return None
         item = RigItem(new_id(), mesh.name, origin, path)
         try:
-            self._analyse(item, load_rig(path))
+            self._analyse(item, load_rig(path, mesh.name))
         except EigendanceError as error:
             item.error = str(error)
         with self.lock:
@@ -287,7 +287,7 @@ class Library:
             if item.rig is None and not item.error:
                 try:
                     self._analyse(item, sample_rig(item.source) if item.origin == "built-in"
-                                  else load_rig(item.source))
+                                  else load_rig(item.source, item.name))
                 except EigendanceError as error:
                     item.error = str(error)
             if item.error:
