@@ -125,7 +125,7 @@ def test_gpu_modal_skinning_from_the_packed_texels_equals_python(client):
     """Per vertex i and group g, coordinate d moves by dot(c[4g:4g+4], tau[i, g, d]): the
     positions equal `ModalSkin.positions` within 1e-6 of the diagonal (float32)."""
     meta, arrays = bundle(client.get(f"/api/rigs/{rig_id(client, 'hand')}/rig.bin"))
-    rig = Rig.from_skeleton(sample_rig("hand"))
+    rig = Rig.from_skeleton(sample_rig("hand"), dtype=np.float64)  # the float64 reference
     times = np.linspace(0, 2, 5)
     coefficients = rig_coefficients(rig.model, None, None, times)
     padded = np.zeros((len(times), 4 * meta["groups"]))

@@ -50,8 +50,9 @@ class Rig:
     palette: Palette | None
 
     @classmethod
-    def from_skeleton(cls, skeleton: Skeleton) -> Rig:
-        """Modal analysis and skin precomputation (float64) of a skeleton with a skin.
+    def from_skeleton(cls, skeleton: Skeleton, dtype=np.float32) -> Rig:
+        """Modal analysis and skin precomputation of a skeleton with a skin; the modal skin in
+        float32 by default, as a GPU plays it (float64 for a reference).
 
         Example
         -------
@@ -61,7 +62,7 @@ class Rig:
         (13, (13, 4608))
         """
         model = ModalModel.from_skeleton(skeleton)
-        skin = ModalSkin(model, skeleton.vertices, skeleton.weights)
+        skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype)
         return cls(skeleton, model, skin, default_palette(model) if model.n_modes else None)
 
     def dancer(self, palette: Palette | None = None, band_edges=None) -> RigDancer:

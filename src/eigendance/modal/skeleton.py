@@ -63,12 +63,18 @@ def unit(vector, name: str = "vector") -> np.ndarray:
     return vector / norm
 
 
+def cross(a, b) -> np.ndarray:
+    """a × b of two 3-vectors (np.cross costs ~20 µs of set-up for a single pair)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
+
+
 def perpendicular(direction) -> np.ndarray:
     """A deterministic unit vector perpendicular to the unit vector `direction`."""
     direction = np.asarray(direction, dtype=float)
     helper = np.zeros(3)
     helper[int(np.argmin(np.abs(direction)))] = 1.0
-    return unit(np.cross(direction, helper))
+    return unit(cross(direction, helper))
 
 
 def frame_from_xz(x_hint, z) -> np.ndarray:
@@ -77,14 +83,14 @@ def frame_from_xz(x_hint, z) -> np.ndarray:
     x = np.asarray(x_hint, dtype=float) - np.dot(x_hint, z) * z
     norm = np.linalg.norm(x)
     x = x / norm if norm > 1e-9 * max(1.0, np.linalg.norm(x_hint)) else perpendicular(z)
-    return np.column_stack([x, np.cross(z, x), z])
+    return np.column_stack([x, cross(z, x), z])
 
 
 def body_rotation(direction) -> np.ndarray:
     """World-from-body rotation with x = direction and a deterministic y, z."""
     x = unit(direction)
     y = perpendicular(x)
-    return np.column_stack([x, y, np.cross(x, y)])
+    return np.column_stack([x, y, cross(x, y)])
 
 
 @dataclass
@@ -274,6 +280,13 @@ class Skeleton:
         """The default stiffness of joint `index` ("auto"; `automatic_stiffness`)."""
         return automatic_stiffness(self.joints[index], self.bodies, frequency,
                                    self.joint_sides(index))
+
+    def automatic_stiffnesses(self, frequency: float = DEFAULT_JOINT_FREQUENCY) -> list:
+        """The default stiffness of every joint (the bodies' inertias computed once)."""
+        inertias, pairs = body_inertias(self.bodies), self.joint_pairs
+        return [automatic_stiffness(joint, self.bodies, frequency,
+                                    _sides(self.n_bodies, pairs, index), inertias)
+                for index, joint in enumerate(self.joints)]
 
     # ----------------------------------------------------------------- editing
     def with_stiffness(self, values: dict, scale: float = 1.0) -> Skeleton:
@@ -585,28 +598,34 @@ def joint_frame(joint: Joint, bodies: list[Body]) -> np.ndarray:
     if joint.axis is not None:
         z = unit(joint.axis, f"axis of joint {joint.name!r}")
     else:
-        normal = np.cross(d_i, d_l)
+        normal = cross(d_i, d_l)
         z = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 1e-9 \
             else perpendicular(d_i)
     return frame_from_xz(d_i, z)
 
 
-def inertia_about(bodies: list[Body], members, point) -> tuple[np.ndarray, float]:
+def body_inertias(bodies: list[Body]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """World inertia tensors about the centres (n, 3, 3), masses (n,) and centres (n, 3)."""
+    rotations = np.array([body.rotation for body in bodies])
+    moments = np.array([body.inertia for body in bodies])
+    tensors = np.einsum("bij,bj,bkj->bik", rotations, moments, rotations)  # R diag(J) Rᵀ
+    return tensors, np.array([body.mass for body in bodies]), np.array([b.center for b in bodies])
+
+
+def inertia_about(inertias, members, point) -> tuple[np.ndarray, float]:
     """World inertia tensor (3, 3) about `point` and total mass of the bodies `members`:
-    Σ_b R_b diag(J_b) R_bᵀ + m_b (|d_b|² I − d_b d_bᵀ), d_b = c_b − point (parallel axes)."""
-    tensor, mass = np.zeros((3, 3)), 0.0
-    for index in members:
-        body = bodies[index]
-        rotation, offset = body.rotation, body.center - point
-        tensor += (rotation * body.inertia) @ rotation.T + body.mass * (
-            offset @ offset * np.eye(3) - np.outer(offset, offset))
-        mass += body.mass
-    return tensor, mass
+    Σ_b R_b diag(J_b) R_bᵀ + m_b (|d_b|² I − d_b d_bᵀ), d_b = c_b − point (parallel axes).
+    `inertias` = `body_inertias(bodies)`."""
+    tensors, masses, centres = (array[np.asarray(members, dtype=np.int64)] for array in inertias)
+    offsets = centres - point
+    parallel = masses[:, None, None] * (np.einsum("bi,bi->b", offsets, offsets)[:, None, None]
+                                        * np.eye(3) - np.einsum("bi,bj->bij", offsets, offsets))
+    return (tensors + parallel).sum(axis=0), float(masses.sum())
 
 
 def automatic_stiffness(joint: Joint, bodies: list[Body],
                         frequency: float = DEFAULT_JOINT_FREQUENCY,
-                        sides: tuple | None = None) -> np.ndarray:
+                        sides: tuple | None = None, inertias=None) -> np.ndarray:
     """The default stiffness of a joint, one value per free row (docs/design.md#joints).
 
     k_row = (2πf)² · min(I_row(side i), I_row(side l)): for a rotation row (ωx, ωy, ωz) I_row is
@@ -614,14 +633,15 @@ def automatic_stiffness(joint: Joint, bodies: list[Body],
     position P; for a translation row (vx, vy, vz) the side's mass. A side swinging rigidly
     about the joint while the other is held then vibrates at f Hz (ω² = k/I). `sides`: the two
     lists of bodies (`Skeleton.joint_sides`); None (a joint closing a loop) takes the joint's own
-    two bodies.
+    two bodies. `inertias`: `body_inertias(bodies)`, if already computed.
     """
     omega2 = (2 * math.pi * frequency) ** 2
+    inertias = inertias if inertias is not None else body_inertias(bodies)
     frame = joint_frame(joint, bodies)
     groups = sides if sides is not None else ([joint.bodies[0]], [joint.bodies[1]])
     candidates = []
     for members in groups:
-        tensor, mass = inertia_about(bodies, members, joint.position)
+        tensor, mass = inertia_about(inertias, members, joint.position)
         moments = np.einsum("ia,ij,ja->a", frame, tensor, frame)  # e_aᵀ I e_a, joint axes
         candidates.append(np.concatenate([moments, [mass] * 3]))
     lighter = np.minimum(*candidates)
@@ -632,9 +652,10 @@ def set_automatic_stiffness(bodies: list[Body], joints: list[Joint], indices=Non
                             frequency: float = DEFAULT_JOINT_FREQUENCY) -> None:
     """Give the joints at `indices` (default all) their `automatic_stiffness`, in place."""
     pairs = np.array([joint.bodies for joint in joints], dtype=np.int64).reshape(-1, 2)
+    inertias = body_inertias(bodies)
     for index in range(len(joints)) if indices is None else indices:
         joints[index].stiffness = automatic_stiffness(
-            joints[index], bodies, frequency, _sides(len(bodies), pairs, index))
+            joints[index], bodies, frequency, _sides(len(bodies), pairs, index), inertias)
 
 
 def _sides(n_bodies: int, pairs: np.ndarray, index: int):

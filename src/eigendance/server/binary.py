@@ -93,16 +93,16 @@ def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
                        "band_edges": np.asarray(spectrogram.band_edges)})
 
 
-def packed_modes(per_vertex: np.ndarray) -> np.ndarray:
-    """(n, nm, 3) per-vertex, per-mode vectors → (n, G, 3, 4), G = ⌈nm/4⌉: texel (i, g, d)
-    holds coordinate d of modes 4g … 4g+3 (zero padded), so that a shader adds
-    dot(c[4g:4g+4], texel) to coordinate d of vertex i (four modes per RGBA texel, like the
-    harmonics)."""
-    n, nm, _ = per_vertex.shape
+def packed_modes(per_mode: np.ndarray, n: int) -> np.ndarray:
+    """(nm, 3n) per-mode rows of per-vertex vectors (`ModalSkin.displacement`, `.rotation`) →
+    (n, G, 3, 4), G = ⌈nm/4⌉: texel (i, g, d) holds coordinate d of modes 4g … 4g+3 (zero
+    padded), so that a shader adds dot(c[4g:4g+4], texel) to coordinate d of vertex i (four
+    modes per RGBA texel, like the harmonics)."""
+    nm = len(per_mode)
     groups = (nm + 3) // 4
-    padded = np.zeros((n, 4 * groups, 3), dtype=np.float32)
-    padded[:, :nm] = per_vertex
-    return np.ascontiguousarray(padded.reshape(n, groups, 4, 3).transpose(0, 1, 3, 2))
+    padded = np.zeros((4 * groups, n, 3), dtype=np.float32)
+    padded[:nm] = per_mode.reshape(nm, n, 3)
+    return np.ascontiguousarray(padded.reshape(groups, 4, n, 3).transpose(2, 0, 3, 1))
 
 
 def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.ndarray]:
@@ -147,8 +147,9 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
                         "free_rows": list(joint.free_rows),
                         "constrained_rows": list(CONSTRAINED_ROWS[joint.type]),
                         "stiffness": joint.stiffness.tolist(),
-                        "default_stiffness": skeleton.automatic_stiffness(index).tolist()}
-                       for index, joint in enumerate(skeleton.joints)],
+                        "default_stiffness": default.tolist()}
+                       for joint, default in zip(skeleton.joints,
+                                                 skeleton.automatic_stiffnesses(), strict=True)],
         "palette": None if palette is None else palette.to_settings().to_json(),
         "offset": 0.0,
     }
@@ -158,15 +159,13 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
     """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32."""
     skeleton, model, skin = rig.skeleton, rig.model, rig.skin
     n, nm = len(skin.vertices), model.n_modes
-    tau = skin.displacement.reshape(nm, n, 3).transpose(1, 0, 2)
-    rho = skin.rotation.reshape(nm, n, 3).transpose(1, 0, 2)
     joints, weights = top_weights(skeleton.weights)
     bones = rest_bone_matrices(model)
     column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
     twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
     return pack(rig_meta(rig, name, revision), {
         "vertices": skin.vertices, "faces": skeleton.faces.astype(np.uint32),
-        "tau": packed_modes(tau), "rho": packed_modes(rho),
+        "tau": packed_modes(skin.displacement, n), "rho": packed_modes(skin.rotation, n),
         "frequencies": model.frequencies,
         "amplitudes": single_mode_amplitudes(model), "reach": mode_reach(model),
         "phases": default_phases(np.arange(nm)),
