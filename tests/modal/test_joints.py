@@ -105,33 +105,38 @@ def subtree_rig(base_density=1000.0):
     return bodies, joints
 
 
-def test_default_stiffness_swings_the_lighter_side_at_one_hertz():
-    """The rule (docs/design.md#joints): k = (2π·1 Hz)² × the lighter side's moment of inertia
-    about the joint axis. At the shoulder of a heavy base the lighter side is the whole arm:
-    I = Σ_rods m(3r² + ℓ²)/12 + m d², d = 0.5 and 1.5 (parallel axes); at the elbow it is arm2
-    alone (d = 0.5) against base + arm1."""
+def test_default_stiffness_by_hand():
+    """The rule (docs/design.md#joints): k = min over the two sides of g/d_s · I_s, with one
+    gravity g = (2π·1 Hz)²·ℓ, ℓ = size/4 (size = 3, the extent of the body ends: ℓ = 0.75),
+    d_s the distance from the joint to side s's centre of mass and I_s its moment of inertia
+    about the joint axis. The base is heavy, so the arm's side gives the minimum. Shoulder: the
+    arm (arm1 + arm2, centre at x = 1: d = 1), I = Σ m(3r² + ℓ²)/12 + m·c², c = 0.5 and 1.5
+    (parallel axes). Elbow: arm2 alone (d = 0.5, c = 0.5) against base + arm1."""
     bodies, joints = subtree_rig(base_density=50_000.0)
     m = bodies[1].mass
     own = m * (3 * 0.05**2 + 1.0) / 12
-    omega2 = (2 * math.pi) ** 2
+    gravity = (2 * math.pi) ** 2 * 0.75
     shoulder = automatic_stiffness(joints[0], bodies, 1.0, ([0], [1, 2]))
     elbow = automatic_stiffness(joints[1], bodies, 1.0, ([0, 1], [2]))
-    assert shoulder[0] == pytest.approx(omega2 * (2 * own + m * (0.25 + 2.25)), rel=1e-12)
-    assert elbow[0] == pytest.approx(omega2 * (own + m * 0.25), rel=1e-12)
+    assert shoulder[0] == pytest.approx(gravity / 1.0 * (2 * own + m * (0.25 + 2.25)), rel=1e-12)
+    assert elbow[0] == pytest.approx(gravity / 0.5 * (own + m * 0.25), rel=1e-12)
     skeleton = Skeleton(bodies, joints)
     np.testing.assert_allclose(skeleton.automatic_stiffness(0), shoulder, rtol=1e-12)
     assert [side.tolist() for side in skeleton.joint_sides(0)] == [[0], [1, 2]]
+    for index, values in enumerate(skeleton.automatic_stiffnesses()):
+        np.testing.assert_allclose(values, skeleton.automatic_stiffness(index), rtol=1e-12)
 
 
-def test_default_stiffness_makes_an_arm_on_a_fixed_base_swing_at_one_hertz():
+def test_default_stiffness_swings_an_arm_like_a_pendulum():
     """Dynamics of the rule: with a base 10⁶ times denser (nearly fixed) and a stiff elbow
-    (the arm nearly rigid), the lowest mode is the arm swinging about the shoulder at 1 Hz."""
+    (the arm nearly rigid), the lowest mode is the arm swinging about the shoulder as a
+    pendulum of length d = 1 under g = (2π)²·0.75: ω² = g/d, i.e. √0.75 Hz."""
     bodies, joints = subtree_rig(base_density=1e9)
     skeleton = Skeleton(bodies, joints)
     stiff = skeleton.automatic_stiffness(1)[0] * 1e6
     skeleton = skeleton.with_stiffness({"shoulder": "auto", "elbow": stiff})
     model = ModalModel.from_skeleton(skeleton)
-    assert model.frequencies[0] == pytest.approx(1.0, rel=1e-4)
+    assert model.frequencies[0] == pytest.approx(math.sqrt(0.75), rel=1e-4)
 
 
 def test_a_joint_in_a_loop_takes_its_own_two_bodies():

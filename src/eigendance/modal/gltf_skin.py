@@ -62,10 +62,11 @@ def skeleton_from_gltf(path: str | os.PathLike,
       frequencies do not depend on it with the default stiffness).
     - Joints: one spherical joint (free ω, natural for characters) between each joint node
       and its parent joint node, at the child's position; stiffness per rotation row from
-      `skeleton.automatic_stiffness`: every joint alone would swing the lighter of the two
-      parts it joins (for a limb: the limb from that joint outward) rigidly at
-      `stiffness_frequency` Hz (1 Hz). Other choices: `Skeleton.with_stiffness`, or change
-      `joints` (type, stiffness) of the returned skeleton in code; the skin stays valid.
+      `skeleton.automatic_stiffness`: each of the two parts a joint joins (for a limb: the
+      limb from that joint outward, and the rest) swings about it like a pendulum of its own
+      length under one gravity, at `stiffness_frequency` Hz (1 Hz) when its centre lies a
+      quarter of the rig's size from the joint. Other choices: `Skeleton.with_stiffness`, or
+      change `joints` (type, stiffness) of the returned skeleton in code; the skin stays valid.
     - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
       skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
       (vertices with no weight go to the nearest body); seam vertices (same position)

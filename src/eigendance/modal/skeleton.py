@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from eigendance.errors import InputError
+from eigendance.errors import InputError, one_line
 from eigendance.modal.rotations import rotation_exp
 
 # Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
@@ -47,12 +47,13 @@ JOINT_TYPES = tuple(CONSTRAINED_ROWS)
 
 DEFAULT_DENSITY = 1000.0  # kg/m³, about that of water and of living tissue
 # Default joint stiffness (glTF rigs, built-in rigs, JSON joints with "stiffness": "auto"): each
-# free row of a joint gets the stiffness that makes the lighter of its two *sides* (the parts the
-# skeleton falls into without the joint; the joint's own two bodies when it closes a loop),
-# swinging (or sliding) rigidly about the joint while the other side is held still, vibrate at
-# this frequency (`automatic_stiffness`). Scale-free: a rig in centimetres moves like the same
-# rig in metres.
+# side of a joint (the parts the skeleton falls into without it; the joint's own two bodies when
+# it closes a loop) swings about the joint like a pendulum of its own length under one gravity:
+# a side whose centre of mass lies PENDULUM_LENGTH·size from the joint at this frequency, a
+# side 4 times closer twice as fast (`automatic_stiffness`). Scale-free: a rig in centimetres
+# moves like the same rig in metres.
 DEFAULT_JOINT_FREQUENCY = 1.0  # Hz
+PENDULUM_LENGTH = 0.25  # ℓ / size: a limb-sized length
 
 
 def unit(vector, name: str = "vector") -> np.ndarray:
@@ -413,18 +414,8 @@ class Skeleton:
     @classmethod
     def from_json(cls, path: str | os.PathLike, name: str | None = None) -> Skeleton:
         """Read a skeleton JSON file; messages call it `name` (default: the file's name)."""
-        path = os.fspath(path)
-        try:
-            with open(path, encoding="utf-8") as file:
-                document = json.load(file)
-        except FileNotFoundError:
-            raise InputError(f"{path}: no such file") from None
-        except (OSError, UnicodeDecodeError) as error:
-            raise InputError(f"{path}: cannot read ({error})") from None
-        except json.JSONDecodeError as error:
-            raise InputError(f"{path}: malformed JSON at line {error.lineno} "
-                                  f"column {error.colno} ({error.msg})") from None
-        return cls.from_dict(document, name=name or os.path.basename(path))
+        name = name or os.path.basename(os.fspath(path))
+        return cls.from_dict(read_json(path, name), name=name)
 
     @classmethod
     def from_dict(cls, document, name: str = "skeleton") -> Skeleton:
@@ -550,21 +541,28 @@ def is_skeleton_json(path: str | os.PathLike) -> bool:
     return isinstance(document, dict) and document.get("format") == "eigendance.skeleton"
 
 
-def read_joint_stiffness(path: str | os.PathLike) -> dict:
-    """A joint stiffness file: a JSON object {joint name: number | [one per free row] |
-    "auto"} (`Skeleton.with_stiffness` checks the values against the rig's joints)."""
+def read_json(path: str | os.PathLike, name: str) -> object:
+    """A parsed JSON file; InputError naming `name` (the path when it does not exist)."""
     path = os.fspath(path)
-    name = os.path.basename(path)
     try:
         with open(path, encoding="utf-8") as file:
-            values = json.load(file)
+            return json.load(file)
     except FileNotFoundError:
         raise InputError(f"{path}: no such file", status=404) from None
     except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"{path}: cannot read ({error})") from None
+        raise InputError(f"{name}: cannot read ({one_line(error)})") from None
     except json.JSONDecodeError as error:
         raise InputError(f"{name}: malformed JSON at line {error.lineno} column {error.colno} "
                          f"({error.msg})") from None
+    except RecursionError:
+        raise InputError(f"{name}: the JSON is nested too deeply") from None
+
+
+def read_joint_stiffness(path: str | os.PathLike) -> dict:
+    """A joint stiffness file: a JSON object {joint name: number | [one per free row] |
+    "auto"} (`Skeleton.with_stiffness` checks the values against the rig's joints)."""
+    name = os.path.basename(os.fspath(path))
+    values = read_json(path, name)
     if not isinstance(values, dict):
         raise InputError(f"{name}: expected a JSON object {{joint name: stiffness}}")
     return values
@@ -604,19 +602,24 @@ def joint_frame(joint: Joint, bodies: list[Body]) -> np.ndarray:
     return frame_from_xz(d_i, z)
 
 
-def body_inertias(bodies: list[Body]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """World inertia tensors about the centres (n, 3, 3), masses (n,) and centres (n, 3)."""
+def body_inertias(bodies: list[Body]) -> tuple:
+    """World inertia tensors about the centres (n, 3, 3), masses (n,), centres (n, 3) and the
+    skeleton's extent (the diagonal of the bounding box of the body ends)."""
     rotations = np.array([body.rotation for body in bodies])
     moments = np.array([body.inertia for body in bodies])
     tensors = np.einsum("bij,bj,bkj->bik", rotations, moments, rotations)  # R diag(J) Rᵀ
-    return tensors, np.array([body.mass for body in bodies]), np.array([b.center for b in bodies])
+    ends = np.array([[body.start, body.end] for body in bodies]).reshape(-1, 3)
+    return (tensors, np.array([body.mass for body in bodies]),
+            np.array([body.center for body in bodies]),
+            float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0))))
 
 
 def inertia_about(inertias, members, point) -> tuple[np.ndarray, float]:
     """World inertia tensor (3, 3) about `point` and total mass of the bodies `members`:
     Σ_b R_b diag(J_b) R_bᵀ + m_b (|d_b|² I − d_b d_bᵀ), d_b = c_b − point (parallel axes).
     `inertias` = `body_inertias(bodies)`."""
-    tensors, masses, centres = (array[np.asarray(members, dtype=np.int64)] for array in inertias)
+    members = np.asarray(members, dtype=np.int64)
+    tensors, masses, centres = (array[members] for array in inertias[:3])
     offsets = centres - point
     parallel = masses[:, None, None] * (np.einsum("bi,bi->b", offsets, offsets)[:, None, None]
                                         * np.eye(3) - np.einsum("bi,bj->bij", offsets, offsets))
@@ -628,24 +631,29 @@ def automatic_stiffness(joint: Joint, bodies: list[Body],
                         sides: tuple | None = None, inertias=None) -> np.ndarray:
     """The default stiffness of a joint, one value per free row (docs/design.md#joints).
 
-    k_row = (2πf)² · min(I_row(side i), I_row(side l)): for a rotation row (ωx, ωy, ωz) I_row is
-    the moment of inertia of a side about the joint frame's axis of that row through the joint
-    position P; for a translation row (vx, vy, vz) the side's mass. A side swinging rigidly
-    about the joint while the other is held then vibrates at f Hz (ω² = k/I). `sides`: the two
-    lists of bodies (`Skeleton.joint_sides`); None (a joint closing a loop) takes the joint's own
-    two bodies. `inertias`: `body_inertias(bodies)`, if already computed.
+    Each side of the joint swings like a pendulum of its own length under one gravity for the
+    whole rig: side s, held at the joint position P while the other side stays still, vibrates
+    at ω_s² = g/d_s with g = (2πf)²·ℓ, ℓ = PENDULUM_LENGTH·size, d_s the distance from P to the
+    side's centre of mass (at least 5% of ℓ). So k_row = min_s ω_s²·I_row(s), where I_row(s) is
+    the side's moment of inertia about the joint frame's axis of that row through P (rotation
+    rows ωx, ωy, ωz) or its mass (translation rows). A side whose centre lies ℓ from the joint
+    swings at f Hz, one 4 times closer at 2f: big limbs slower than fingers.
+    `sides`: the two lists of bodies (`Skeleton.joint_sides`); None (a joint closing a loop)
+    takes the joint's own two bodies. `inertias`: `body_inertias(bodies)`, if already computed.
     """
-    omega2 = (2 * math.pi * frequency) ** 2
     inertias = inertias if inertias is not None else body_inertias(bodies)
+    length = PENDULUM_LENGTH * inertias[3]
+    gravity = (2 * math.pi * frequency) ** 2 * length
     frame = joint_frame(joint, bodies)
     groups = sides if sides is not None else ([joint.bodies[0]], [joint.bodies[1]])
     candidates = []
     for members in groups:
         tensor, mass = inertia_about(inertias, members, joint.position)
         moments = np.einsum("ia,ij,ja->a", frame, tensor, frame)  # e_aᵀ I e_a, joint axes
-        candidates.append(np.concatenate([moments, [mass] * 3]))
-    lighter = np.minimum(*candidates)
-    return omega2 * lighter[list(joint.free_rows)]
+        centre = inertias[1][members] @ inertias[2][members] / mass
+        distance = max(float(np.linalg.norm(centre - joint.position)), 0.05 * length)
+        candidates.append(gravity / distance * np.concatenate([moments, [mass] * 3]))
+    return np.minimum(*candidates)[list(joint.free_rows)]
 
 
 def set_automatic_stiffness(bodies: list[Body], joints: list[Joint], indices=None,
