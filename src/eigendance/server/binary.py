@@ -37,10 +37,10 @@ def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) 
             dtype = "uint32"
         else:
             dtype = "float16" if name in half else "float32"
-        data = np.ascontiguousarray(array, dtype=DTYPES[dtype]).tobytes()
+        data = memoryview(np.ascontiguousarray(array, dtype=DTYPES[dtype]).reshape(-1)).cast("B")
         entries[name] = {"dtype": dtype, "shape": list(np.shape(array)), "offset": offset}
         padding = (-len(data)) % 4
-        blobs.append(data + b"\0" * padding)
+        blobs.extend((data, b"\0" * padding))  # joined once below: no copy per array
         offset += len(data) + padding
     header = json.dumps({"meta": meta, "arrays": entries}).encode()
     header += b" " * ((-len(header)) % 4)
