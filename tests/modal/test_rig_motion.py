@@ -139,11 +139,13 @@ def test_song_calibration_drives_the_loudest_frame_at_one(song):
     assert song_calibrated(base, silent, 4).amplification.tolist() == [2.0]
 
 
-def test_palette_errors_name_the_field(loop):
+def test_palette_errors_name_the_field(loop, song):
     with pytest.raises(EigendanceError, match="modes.selected names mode 99"):
         resolve_palette(loop.model, ModeSettings(selected=np.array([1, 99])))
     with pytest.raises(EigendanceError, match="modes.amplitudes has 1 values for 2"):
         resolve_palette(loop.model, ModeSettings(np.array([1, 2]), np.array([0.2])))
+    with pytest.raises(EigendanceError, match="the mapping has 8 bands, the song's spectrogram 16"):
+        rig_coefficients(loop.model, song, Mapping(np.full(8, 0.5), [1.0]), [0.0])
     rigid = Rig.from_skeleton(sample_rig("loop4").with_stiffness({}, scale=0.0)).model
     with pytest.raises(EigendanceError, match="no vibration mode"):
         rig_coefficients(rigid, None, None, [0.0])

@@ -187,6 +187,10 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
 
     b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
     """
+    if mapping.bands != spectrogram.bands:
+        raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands, the song's "
+                         f"spectrogram {spectrogram.bands}; analyse the song into "
+                         f"{mapping.bands} bands")
     values = spectrogram.smoothed(mapping.smoothing).at(np.asarray(times, dtype=float))
     return mapping.filter(values, n_modes, mapping.offset if offset is None else offset)
 
