@@ -165,9 +165,11 @@ def add_server_options(parser, k: int, k_help: str) -> None:
 
 
 def add_serve(parser):
-    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING",
-                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC) "
-                             "and mapping JSON files to put in the library")
+    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING|RIG",
+                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC), "
+                             "mapping JSON and skeleton JSON files to put in the library (a "
+                             "glTF with a skin is a rig too; the built-in rigs are always "
+                             "there)")
     add_server_options(parser, 150, "harmonics per mesh basis")
 
 
