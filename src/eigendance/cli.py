@@ -14,6 +14,7 @@ import sys
 import tempfile
 import time
 import warnings
+from dataclasses import replace
 
 import numpy as np
 from tqdm import tqdm
@@ -31,11 +32,15 @@ from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     animate_rig,
     band_mapping,
-    mode_drive,
+    default_mapping,
+    mapping_palette,
     parse_modes,
+    rig_coefficients,
     save_animation,
 )
+from eigendance.modal.palette import default_palette, resolve_palette
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
+from eigendance.modal.skeleton import read_joint_stiffness
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
     CALIBRATIONS,
@@ -44,7 +49,7 @@ from eigendance.music.gallery import (
     initial_gallery,
     strongest_item,
 )
-from eigendance.music.mapping import Mapping
+from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, frame_times, save_picture
 from eigendance.server.app import create_app
 from eigendance.server.library import Library
@@ -171,9 +176,11 @@ def add_server_options(parser, k: int, k_help: str) -> None:
 
 
 def add_serve(parser):
-    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING",
-                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC) "
-                             "and mapping JSON files to put in the library")
+    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING|RIG",
+                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC), "
+                             "mapping JSON and skeleton JSON files to put in the library (a "
+                             "glTF with a skin is a rig too; the built-in rigs are always "
+                             "there)")
     add_server_options(parser, 150, "harmonics per mesh basis")
 
 
@@ -306,11 +313,30 @@ def run_animate(args) -> None:
 STIFFNESS = number(0, 1e12, above=True)
 
 
-def add_modes(parser):
-    parser.add_argument("rig", help=RIG_HELP)
+def add_rig_options(parser) -> None:
+    """The rig and its joints' stiffness, shared by `modes` and `animate-rig`."""
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1; frequencies scale "
                              "with its square root)")
+    parser.add_argument("--joints", metavar="JSON",
+                        help="per-joint stiffness: a JSON object {joint name: number, list (one "
+                             "per free row) or \"auto\"} applied before --stiffness")
+
+
+def rig_from(args):
+    """The rig of `args.rig` with the stiffness options applied, and its modal model."""
+    skeleton = load_rig(args.rig)
+    for note in skeleton.notes:
+        print(f"{skeleton.name}: {note}", file=sys.stderr)
+    values = read_joint_stiffness(args.joints) if args.joints else {}
+    if values or args.stiffness != 1.0:
+        skeleton = skeleton.with_stiffness(values, scale=args.stiffness)
+    return skeleton, ModalModel.from_skeleton(skeleton)
+
+
+def add_modes(parser):
+    parser.add_argument("rig", help=RIG_HELP)
+    add_rig_options(parser)
     parser.add_argument("--show", type=number(0, integer=True), default=30,
                         help="modes listed (default 30)")
     add_output(parser, "modal file to write (.npz)")
@@ -333,12 +359,15 @@ def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> lis
 def run_modes(args) -> None:
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
-    skeleton = load_rig(args.rig)
-    for note in skeleton.notes:
-        print(f"{skeleton.name}: {note}", file=sys.stderr)
-    model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
+    skeleton, model = rig_from(args)
     model.save(args.output)
     print("\n".join(mode_table(model, limit=args.show)))
+    if model.n_modes:
+        palette = default_palette(model)
+        played = model.frequencies[palette.selected] * palette.time_scale
+        print(f"default palette: modes {', '.join(str(m) for m in palette.selected)}, time "
+              f"scale {palette.time_scale:.3g} (they play at "
+              f"{', '.join(f'{f:.2f}' for f in played)} Hz)")
     print(f"{args.output}: {skeleton.n_bodies} bodies, {len(skeleton.joints)} joints, "
           f"{model.constraint_rows} constraint rows (rank {model.constraint_rank}), "
           f"{model.nullspace_dim} admissible motions = {model.rigid_modes} rigid + "
@@ -349,46 +378,67 @@ def add_animate_rig(parser):
     parser.add_argument("rig", help=RIG_HELP)
     parser.add_argument("audio", nargs="?", help="audio file (any format `spectrum` reads) or "
                         "spectrogram file (.npz) whose bands drive the modes; without it every "
-                        "chosen mode moves steadily")
-    parser.add_argument("--mapping", help="mapping JSON from bands to the chosen modes "
-                                          "(default: bands in order, low sounds to low modes)")
-    parser.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the 8 lowest)")
+                        "chosen mode moves steadily (music off)")
+    parser.add_argument("--mapping", help="mapping JSON: bands to modes, gain, smoothing, offset "
+                                          "and palette (default: bands in order over the "
+                                          "palette's modes, low sounds to low modes, "
+                                          "calibrated to the song)")
+    parser.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the mapping's "
+                                        "palette, else the default rule)")
+    parser.add_argument("--amplitude", type=number(0, math.pi), default=None,
+                        help="largest body rotation of each chosen mode at full drive, radians "
+                             "(default: the mapping's, else the default rule)")
+    parser.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
+                        help="multiply the natural frequencies (default: the mapping's, else "
+                             "the default rule)")
+    parser.add_argument("--offset", type=number(-1e6, 1e6), default=None,
+                        help="the filter's offset b: 0 keeps silence still, 1 sways idly "
+                             "(default: the mapping's, else 0)")
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
                         help="seconds (default: the audio's length, or 4 s without audio)")
-    parser.add_argument("--amplitude", type=number(0, math.pi), default=0.3,
-                        help="largest body rotation of each mode at full drive, radians "
-                             "(default 0.3)")
-    parser.add_argument("--time-scale", type=number(0, 1000, above=True), default=1.0,
-                        help="multiply the natural frequencies (default 1)")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
-                        help="bands of the audio's spectrogram (default 64)")
+                        help="bands of the audio's spectrogram without a mapping (default 64)")
     parser.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
                         help="modal (default, first-order, as live) or lbs (exact body "
                              "transforms, linear blend)")
-    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
-                        help="multiply every joint stiffness (default 1)")
+    add_rig_options(parser)
+    parser.add_argument("--save-mapping", metavar="JSON",
+                        help="also write the mapping that made the motion, every setting "
+                             "explicit (the page and the exports play it the same)")
     add_output(parser, "animation file to write (.npz)")
 
 
 def run_animate_rig(args) -> None:
     refuse_overwrite(args.output, args.force)
+    if args.save_mapping:
+        refuse_overwrite(args.save_mapping, args.force)
     start = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    skeleton = load_rig(args.rig)
-    model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
+    skeleton, model = rig_from(args)
     if model.n_modes == 0:
         raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
                          "nothing to animate")
+    settings = mapping.modes if mapping is not None and mapping.modes is not None \
+        else ModeSettings()
     modes = parse_modes(args.modes, model.n_modes)
-    drive = None
+    if modes is not None:  # a new selection: its amplitudes and phases by the rule
+        settings = ModeSettings(modes, None, None, settings.time_scale)
+    if args.amplitude is not None:
+        count = len(mapping_palette(model, None).selected) if settings.selected is None \
+            else len(settings.selected)
+        settings = replace(settings, amplitudes=np.full(count, args.amplitude))
+    if args.time_scale is not None:
+        settings = replace(settings, time_scale=args.time_scale)
+    palette = resolve_palette(model, settings)
+    spectrogram = None
     if args.audio:
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands)
         times = frame_times(args.duration or spectrogram.duration, args.fps)
-        mapping = mapping or band_mapping(spectrogram.bands, len(modes))
-        drive = mode_drive(mapping, spectrogram, times, len(modes))
+        mapping = mapping or default_mapping(spectrogram, len(palette.selected))
     else:
         times = frame_times(args.duration or 4.0, args.fps)
+        mapping = mapping or band_mapping(args.bands, len(palette.selected))
     # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
     # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
     # mode); half again for the intermediates.
@@ -396,17 +446,23 @@ def run_animate_rig(args) -> None:
     what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
     check_memory(per_frame * len(times), what)
     check_disk(args.output, per_frame * len(times), what)
+    mapping = replace(mapping, modes=palette.to_settings(),
+                      offset=mapping.offset if args.offset is None else args.offset)
+    coefficients = rig_coefficients(model, spectrogram, mapping, times)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
-        arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
-                             drive, args.skinning, progress=update)
+        arrays = animate_rig(skeleton, model, times, coefficients, palette, args.skinning,
+                             progress=update)
     save_animation(args.output, arrays)
+    if args.save_mapping:
+        mapping.save(args.save_mapping)
+    scaled = model.frequencies[palette.selected] * palette.time_scale
     print(f"{args.output}: {len(times)} frames at {args.fps:g} fps, "
           f"{len(skeleton.vertices)} vertices, {skeleton.n_bodies} bodies, modes "
-          f"{', '.join(str(m) for m in modes)} "
-          f"({', '.join(f'{model.frequencies[m]:.3g}' for m in modes)} Hz), "
-          f"{'audio drive' if drive is not None else 'steady drive'}, "
-          f"{time.perf_counter() - start:.1f} s")
+          f"{', '.join(str(m) for m in palette.selected)} playing at "
+          f"{', '.join(f'{f:.2f}' for f in scaled)} Hz (time scale "
+          f"{palette.time_scale:.3g}), {'music' if spectrogram is not None else 'steady'} "
+          f"drive, {time.perf_counter() - start:.1f} s")
 
 
 COMMANDS = {

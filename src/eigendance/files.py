@@ -240,14 +240,15 @@ def finite_number(value) -> bool:
         return False
 
 
-def read_json(path: str | os.PathLike):
+def read_json(path: str | os.PathLike, name: str | None = None):
     """The parsed JSON document of a file; InputError naming the file for anything unreadable.
 
     Refused: a missing file, text that is not UTF-8 or not JSON, nesting deeper than Python's
-    recursion limit, integers of more than JSON_INTEGER_DIGITS digits.
+    recursion limit, integers of more than JSON_INTEGER_DIGITS digits. Messages call the file
+    `name` (default: its base name; an upload's own name rather than where it is stored).
     """
     path = os.fspath(path)
-    name = os.path.basename(path)
+    name = name or os.path.basename(path)
     try:
         with open(path, encoding="utf-8") as file:
             return json.load(file, parse_int=_json_integer)
