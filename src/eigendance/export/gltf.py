@@ -131,11 +131,10 @@ def _morph_targets(dance: HarmonicDance, times, builder, mesh, primitive, sample
     for target in morphs.targets:
         primitive.targets.append(pygltflib.Attributes(POSITION=builder.accessor(
             target.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, bounds=True)))
-    count = len(morphs.harmonics)
-    mesh.weights = [0.0] * count
+    if len(morphs.harmonics) == 0:
+        return  # a still mapping: no target, nothing to animate
+    mesh.weights = [0.0] * len(morphs.harmonics)
     mesh.extras = {"targetNames": [f"harmonic {int(nu)}" for nu in morphs.harmonics]}
-    if count == 0:
-        return  # a still mapping: nothing to animate
     output = builder.accessor(morphs.weights.astype("<f4").ravel(), 1)
     builder.gltf.animations.append(pygltflib.Animation(
         name="dance",

