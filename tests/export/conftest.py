@@ -2,20 +2,22 @@
 
 from __future__ import annotations
 
-import numpy as np
-import pytest
-from helpers import bumpy_sphere, fixture_path
+import os
+import sys
 
-from eigendance.export.dance import HarmonicDance, rig_dance
+import pytest
+from export_helpers import SONG, rig
+
+from eigendance.export.dance import HarmonicDance
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
-from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import band_mapping, mode_drive
-from eigendance.modal.sample_rigs import load_rig
-from eigendance.music.gallery import initial_gallery
+from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.spectrogram import Spectrogram
+from helpers import bumpy_sphere, fixture_path
 
-SONG = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")  # 4 s
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "web"))
+
+from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
 
 
 @pytest.fixture(scope="session")
@@ -25,7 +27,7 @@ def song():
 
 @pytest.fixture(scope="session")
 def basis():
-    # Moved 3 units off the origin and scaled: exports are in the file's coordinates.
+    # Moved off the origin and scaled: exports are in the file's coordinates.
     mesh = bumpy_sphere(2)
     moved = Mesh.from_arrays(mesh.original_vertices * 2.5 + [3.0, -1.0, 0.5], mesh.faces)
     return HarmonicBasis.from_mesh(moved, 40, cache=False)
@@ -37,20 +39,10 @@ def mappings(basis, song):
 
 
 @pytest.fixture(scope="session")
-def harmonic(basis, song, mappings):
-    mapping = mappings[1]
+def harmonic(basis, song):
+    mapping = strongest_item(basis, song)
     mapping.gain, mapping.smoothing = 1.5, 0.05  # both must reach the exports
     return HarmonicDance(basis, song, mapping, audio=SONG, name="sphere")
-
-
-def rig(name: str, skinning: str, song, mode_count: int = 4):
-    skeleton = load_rig(name)
-    model = ModalModel.from_skeleton(skeleton)
-    modes = np.arange(min(mode_count, model.n_modes))
-    mapping = band_mapping(song.bands, len(modes))
-    return rig_dance(skeleton, model, modes, song.duration,
-                     lambda times: mode_drive(mapping, song, times, len(modes)), 0.3, 1.0,
-                     skinning, SONG, f"{skinning}-rig")
 
 
 @pytest.fixture(scope="session")
@@ -63,10 +55,13 @@ def figure_modal(song):
     return rig(fixture_path("rigged", "RiggedFigure.glb"), "modal", song)
 
 
-def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions"):
-    """Every frame and vertex within tolerance·diagonal."""
-    found, expected = np.asarray(found), np.asarray(expected)
-    assert found.shape == expected.shape, (found.shape, expected.shape)
-    error = np.linalg.norm(found - expected, axis=-1).max(axis=-1) / diagonal
-    assert np.all(error <= tolerance), f"{what}: relative errors per frame {error}"
-    return error
+@pytest.fixture(scope="session")
+def chromium():
+    if not os.path.exists(CHROMIUM):
+        pytest.skip("Chromium is not installed at /usr/bin/chromium")
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()

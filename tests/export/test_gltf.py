@@ -12,7 +12,7 @@ import os
 import numpy as np
 import pygltflib
 import pytest
-from conftest import SONG, check_positions
+from export_helpers import SONG, check_positions
 from scipy.spatial.transform import Rotation
 
 from eigendance.export.dance import HarmonicDance, sample_times
