@@ -56,6 +56,11 @@ def figure_modal(song):
 
 
 @pytest.fixture(scope="session")
+def fox_lbs(song):
+    return rig(fixture_path("rigged", "Fox.glb"), "lbs", song)
+
+
+@pytest.fixture(scope="session")
 def chromium():
     if not os.path.exists(CHROMIUM):
         pytest.skip("Chromium is not installed at /usr/bin/chromium")

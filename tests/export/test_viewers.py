@@ -17,11 +17,10 @@ import threading
 
 import numpy as np
 import pytest
-from export_helpers import check_positions, required, rig
+from export_helpers import check_positions, required
 
 from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance
-from helpers import fixture_path
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 WEB_MODULES = os.path.join(ROOT, "web", "node_modules")
@@ -30,12 +29,11 @@ INSTALL = "scripts/web.sh install"
 
 
 @pytest.fixture(scope="module")
-def glbs(tmp_path_factory, harmonic, chain_lbs, figure_modal, song):
+def glbs(tmp_path_factory, harmonic, chain_lbs, figure_modal, fox_lbs):
     """Every kind of glb the exporter writes: morph targets, and skins of built-in and glTF
     rigs (linear blend and modal skinning)."""
     folder = tmp_path_factory.mktemp("glbs")
-    fox = rig(fixture_path("rigged", "Fox.glb"), "lbs", song)
-    dances = {"sphere": harmonic, "chain": chain_lbs, "figure": figure_modal, "fox": fox}
+    dances = {"sphere": harmonic, "chain": chain_lbs, "figure": figure_modal, "fox": fox_lbs}
     for name, dance in dances.items():
         export_dance(dance, folder / f"{name}.glb", fps=15)
     return folder, dances
