@@ -60,7 +60,7 @@ def fox_lbs(song):
     return rig(fixture_path("rigged", "Fox.glb"), "lbs", song)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")  # one Playwright at a time: tests/web starts its own
 def chromium():
     if not os.path.exists(CHROMIUM):
         pytest.skip("Chromium is not installed at /usr/bin/chromium")

@@ -142,3 +142,43 @@ def test_ctrl_c_while_rendering_leaves_no_file(tmp_path):
     assert process.returncode == 130, errors
     assert "interrupted" in errors
     assert os.listdir(output.parent) == []
+
+
+def test_render_workers_draw_the_same_frames_in_order(tmp_path):
+    """Two forked workers drawing frames in turn give the frames one process draws, in order
+    (in a fresh interpreter: a process that has drawn never forks renderers)."""
+    script = (
+        "import numpy as np, sys, trimesh\n"
+        "from eigendance.export.dance import HarmonicDance\n"
+        "from eigendance.export.renderer import Look\n"
+        "from eigendance.export.video import frames_in_turn, render_frames\n"
+        "from eigendance.harmonic.basis import HarmonicBasis\n"
+        "from eigendance.harmonic.mesh import Mesh\n"
+        "from eigendance.music.gallery import strongest_item\n"
+        "from eigendance.music.spectrogram import Spectrogram\n"
+        "s = trimesh.creation.icosphere(2)\n"
+        "basis = HarmonicBasis.from_mesh(Mesh.from_arrays(s.vertices * [1.4, 1, 0.8], s.faces),"
+        " 20, cache=False)\n"
+        "song = Spectrogram.from_file(sys.argv[1])\n"
+        "dance = HarmonicDance(basis, song, strongest_item(basis, song))\n"
+        "times = np.arange(12) / 3.0\n"
+        "turns = list(frames_in_turn([dance], [Look()], times, 64, 48, workers=2))\n"
+        "alone = list(render_frames([dance], [Look()], times, 64, 48))\n"
+        "print(len(turns), turns == alone, len(set(alone)))\n")
+    run = subprocess.run([sys.executable, "-c", script, SONG], capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == ["12", "True", "12"]
+
+
+def test_an_error_in_a_render_worker_is_one_line_and_leaves_nothing(tmp_path):
+    output = tmp_path / "out" / "tiny.mp4"
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
+    run = subprocess.run([sys.executable, "-m", "eigendance.cli", "render",
+                          os.path.join(os.path.dirname(SONG), "..", "meshes", "teapot.obj"),
+                          SONG, "-k", "8", "--gallery", "4", "--size", "32x16", "-o",
+                          str(output)], env=env, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 1, run.stderr
+    assert run.stderr.strip().endswith("32×16 pixels is too small for a gallery of 4 tiles")
+    assert run.stderr.count("\n") == 1
+    assert not output.parent.exists() or os.listdir(output.parent) == []

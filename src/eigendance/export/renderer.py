@@ -147,8 +147,19 @@ def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, i
     return cells
 
 
+_started = {"gl": False}  # set once this process has started OpenGL
+
+
+def gl_started() -> bool:
+    """Whether this process has created an OpenGL context. llvmpipe keeps its threads in a
+    process-wide screen: a process forked after that inherits the state without the threads and
+    hangs at its first draw, so only a process that never drew may fork renderers."""
+    return _started["gl"]
+
+
 def create_context() -> moderngl.Context:
     """A headless OpenGL 3.3 context (EGL; Mesa's llvmpipe without a GPU)."""
+    _started["gl"] = True
     try:
         return moderngl.create_standalone_context(backend="egl", libgl="libGL.so.1",
                                                   libegl="libEGL.so.1")

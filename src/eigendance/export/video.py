@@ -12,9 +12,13 @@ or an encoder failure leaves nothing behind.
 
 from __future__ import annotations
 
+import ctypes
 import math
+import multiprocessing
 import os
+import signal
 import subprocess
+import sys
 import tempfile
 from fractions import Fraction
 
@@ -24,10 +28,14 @@ import numpy as np
 from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs
-from eigendance.export.renderer import Camera, Look, Renderer, gallery_cells
+from eigendance.export.renderer import Camera, Look, Renderer, gallery_cells, gl_started
 from eigendance.music.decode import open_audio
 
 MAX_SIDE = 7680  # pixels (8K)
+# Processes drawing frames in turn. llvmpipe transforms and sets up triangles on one thread, which
+# bounds a fine mesh (the bunny: 25 of its 60 ms of CPU per frame); two single-threaded renderers
+# keep both cores busy (measured in benchmarks/bench_render.py).
+WORKERS = 2
 PRESET, CRF, AUDIO_BITRATE = "veryfast", 18, "192k"  # x264 speed/quality, AAC bit rate
 
 
@@ -110,6 +118,69 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
         renderer.release()
 
 
+def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, height: int,
+                   workers: int = WORKERS):
+    """`render_frames`, drawn by `workers` forked processes in turn (frame i by worker i mod
+    workers, each with its own single-threaded llvmpipe context): yields the frames in order.
+
+    Forking is safe here: a worker only draws (numpy, its own GL context) and writes to its pipe;
+    it imports nothing and takes no lock another thread of the caller may hold. A caller that has
+    drawn before (`renderer.gl_started`) draws itself instead: a fork would inherit llvmpipe's
+    state without its threads. Workers ignore Ctrl-C (the caller handles it and kills them) and
+    die with the caller.
+    """
+    times = np.asarray(times, dtype=np.float64)
+    if workers <= 1 or len(times) < 2 * workers or gl_started() or \
+            "fork" not in multiprocessing.get_all_start_methods():
+        yield from render_frames(dances, looks, times, width, height)
+        return
+    context = multiprocessing.get_context("fork")
+    pipes, processes = [], []
+    try:
+        for worker in range(workers):
+            receive, send = context.Pipe(duplex=False)
+            process = context.Process(target=_draw_in_turn, daemon=True, args=(
+                send, dances, looks, times[worker::workers], width, height))
+            process.start()
+            send.close()
+            pipes.append(receive)
+            processes.append(process)
+        size = width * height * 4
+        for index in range(len(times)):
+            try:
+                frame = pipes[index % workers].recv_bytes()
+            except EOFError:
+                raise InternalError("a render worker stopped without a word") from None
+            if len(frame) != size:  # a worker's error: "kind<TAB>message"
+                kind, _, message = frame.decode(errors="replace").partition("\t")
+                raise (InputError if kind == "InputError" else InternalError)(message)
+            yield frame
+    finally:
+        for process in processes:
+            if process.is_alive():
+                process.kill()
+            process.join()
+        for pipe in pipes:
+            pipe.close()
+
+
+def _draw_in_turn(send, dances, looks, times, width, height) -> None:
+    """In a render worker: draw `times` and send each frame (or one error line) to the caller."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if sys.platform.startswith("linux"):  # the kernel kills us when the caller dies
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    os.environ["LP_NUM_THREADS"] = "1"  # read when llvmpipe starts: one thread per worker
+    try:
+        for frame in render_frames(dances, looks, times, width, height):
+            send.send_bytes(frame)
+    except BrokenPipeError:
+        pass  # the caller stopped reading
+    except BaseException as error:  # noqa: BLE001 - everything goes back to the caller
+        send.send_bytes(f"{type(error).__name__}\t{one_line(error)}".encode())
+    finally:
+        send.close()
+
+
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
                  audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
                  force: bool = False, progress=None) -> dict:
@@ -145,8 +216,8 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
                                    stderr=log)
         try:
             try:
-                for index, frame in enumerate(render_frames(dances, looks, times, width,
-                                                            height)):
+                for index, frame in enumerate(frames_in_turn(dances, looks, times, width,
+                                                             height)):
                     encoder.stdin.write(frame)
                     if progress is not None:
                         progress(index + 1, len(times))
