@@ -21,7 +21,7 @@ from eigendance import __version__
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
-from eigendance.export.files import export_dance, format_of
+from eigendance.export.files import companion_paths, export_dance, format_of
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.files import refuse_overwrite, suffix_of
@@ -475,7 +475,9 @@ def run_export(args) -> None:
     format = format_of(args.output, args.format)
     start = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    refuse_overwrite(args.output, args.force)
+    for path in companion_paths(args.output, format, song_of(args)).values():
+        if path is not None:  # before any work: the export would stop at the end
+            refuse_overwrite(path, args.force)
     dance = dance_from(args, mapping)
     bar, update = progress_bar(None, "frames", unit="frame")
     with bar:
