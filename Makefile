@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: setup system web demo test test-web lint bench
+.PHONY: setup system web demo test test-web lint bench blender
 
 system:
 	bash scripts/install-system.sh
@@ -20,6 +20,17 @@ web: system
 	bash scripts/web.sh build
 
 setup: system web $(VENV)/.installed
+
+# Blender as a Python module (the `blender` extra, bpy, about 1 GB) for the tests that open
+# exports in Blender, in a virtual environment of its own (bpy pins its own numpy); installed once
+# per machine. Without it those tests are skipped, except under CI (.ci/run installs it).
+BLENDER_VENV := .venv-blender
+blender: $(BLENDER_VENV)/.installed
+
+$(BLENDER_VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(BLENDER_VENV)
+	$(BLENDER_VENV)/bin/pip install -q $$($(PYTHON) -c 'import tomllib; print(*tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]["blender"])')
+	touch $@
 
 demo: setup
 	$(BIN)/eigendance demo
