@@ -23,7 +23,7 @@ setup: system web $(VENV)/.installed
 
 # Blender as a Python module (the `blender` extra, bpy, about 1 GB) for the tests that open
 # exports in Blender, in a virtual environment of its own (bpy pins its own numpy); installed once
-# per machine. Without it those tests are skipped, except under CI (.ci/run installs it).
+# per machine by `make test`.
 BLENDER_VENV := .venv-blender
 blender: $(BLENDER_VENV)/.installed
 
@@ -38,7 +38,7 @@ demo: setup
 lint: setup
 	$(BIN)/ruff check src tests benchmarks
 
-test: lint
+test: lint blender
 	bash scripts/web.sh test
 	$(BIN)/pytest -q
 

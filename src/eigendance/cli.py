@@ -14,7 +14,6 @@ import sys
 import tempfile
 import time
 import warnings
-from dataclasses import replace
 
 import numpy as np
 from tqdm import tqdm
@@ -36,14 +35,13 @@ from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     animate_rig,
-    band_mapping,
-    default_mapping,
     mapping_palette,
     parse_modes,
     rig_coefficients,
+    rig_mapping,
     save_animation,
 )
-from eigendance.modal.palette import default_palette, resolve_palette
+from eigendance.modal.palette import default_palette
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
 from eigendance.modal.skeleton import read_joint_stiffness
 from eigendance.music.breeding import breed
@@ -54,7 +52,7 @@ from eigendance.music.gallery import (
     initial_gallery,
     strongest_item,
 )
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, frame_times, save_picture
 from eigendance.server.app import create_app
 from eigendance.server.library import Library
@@ -318,6 +316,23 @@ def run_animate(args) -> None:
 STIFFNESS = number(0, 1e12, above=True)
 
 
+def add_palette_options(parser) -> None:
+    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`."""
+    group = parser.add_argument_group("rigs: the palette (default: the mapping's, else the "
+                                      "default rule that makes any rig dance)")
+    group.add_argument("--modes", help="mode indices that move, e.g. 0,2,5-8")
+    group.add_argument("--amplitude", type=number(0, math.pi), default=None,
+                       help="largest body rotation of each chosen mode at full drive, radians")
+    group.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
+                       help="multiply the natural frequencies")
+    group.add_argument("--offset", type=number(-1e6, 1e6), default=None,
+                       help="the filter's offset b: 0 keeps silence still, 1 sways idly "
+                            "(default: the mapping's, else 0)")
+    group.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
+                       help="modal (default, first-order, as live) or lbs (exact body "
+                            "transforms, linear blend: what a glTF skin plays exactly)")
+
+
 def add_rig_options(parser) -> None:
     """The rig and its joints' stiffness, shared by `modes` and `animate-rig`."""
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
@@ -388,25 +403,12 @@ def add_animate_rig(parser):
                                           "and palette (default: bands in order over the "
                                           "palette's modes, low sounds to low modes, "
                                           "calibrated to the song)")
-    parser.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the mapping's "
-                                        "palette, else the default rule)")
-    parser.add_argument("--amplitude", type=number(0, math.pi), default=None,
-                        help="largest body rotation of each chosen mode at full drive, radians "
-                             "(default: the mapping's, else the default rule)")
-    parser.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
-                        help="multiply the natural frequencies (default: the mapping's, else "
-                             "the default rule)")
-    parser.add_argument("--offset", type=number(-1e6, 1e6), default=None,
-                        help="the filter's offset b: 0 keeps silence still, 1 sways idly "
-                             "(default: the mapping's, else 0)")
+    add_palette_options(parser)
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
                         help="seconds (default: the audio's length, or 4 s without audio)")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
                         help="bands of the audio's spectrogram without a mapping (default 64)")
-    parser.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
-                        help="modal (default, first-order, as live) or lbs (exact body "
-                             "transforms, linear blend)")
     add_rig_options(parser)
     parser.add_argument("--save-mapping", metavar="JSON",
                         help="also write the mapping that made the motion, every setting "
@@ -424,26 +426,13 @@ def run_animate_rig(args) -> None:
     if model.n_modes == 0:
         raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
                          "nothing to animate")
-    settings = mapping.modes if mapping is not None and mapping.modes is not None \
-        else ModeSettings()
-    modes = parse_modes(args.modes, model.n_modes)
-    if modes is not None:  # a new selection: its amplitudes and phases by the rule
-        settings = ModeSettings(modes, None, None, settings.time_scale)
-    if args.amplitude is not None:
-        count = len(mapping_palette(model, None).selected) if settings.selected is None \
-            else len(settings.selected)
-        settings = replace(settings, amplitudes=np.full(count, args.amplitude))
-    if args.time_scale is not None:
-        settings = replace(settings, time_scale=args.time_scale)
-    palette = resolve_palette(model, settings)
-    spectrogram = None
+    spectrogram, times = None, frame_times(args.duration or 4.0, args.fps)
     if args.audio:
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands)
         times = frame_times(args.duration or spectrogram.duration, args.fps)
-        mapping = mapping or default_mapping(spectrogram, len(palette.selected))
-    else:
-        times = frame_times(args.duration or 4.0, args.fps)
-        mapping = mapping or band_mapping(args.bands, len(palette.selected))
+    mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
+                          args.amplitude, args.time_scale, args.offset, args.bands)
+    palette = mapping_palette(model, mapping)
     # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
     # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
     # mode); half again for the intermediates.
@@ -451,8 +440,6 @@ def run_animate_rig(args) -> None:
     what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
     check_memory(per_frame * len(times), what)
     check_disk(args.output, per_frame * len(times), what)
-    mapping = replace(mapping, modes=palette.to_settings(),
-                      offset=mapping.offset if args.offset is None else args.offset)
     coefficients = rig_coefficients(model, spectrogram, mapping, times)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
@@ -486,18 +473,9 @@ def add_dance_inputs(parser, audio_help: str) -> None:
                         help="harmonics when MODEL is a mesh file (default 300)")
     parser.add_argument("--fps", type=number(0, 240, above=True), default=30.0,
                         help="frames per second (default 30)")
-    rig = parser.add_argument_group("rigs (as animate-rig)")
-    rig.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the 8 lowest)")
-    rig.add_argument("--amplitude", type=number(0, math.pi), default=0.3,
-                     help="largest body rotation of each mode at full drive, radians "
-                          "(default 0.3)")
-    rig.add_argument("--time-scale", type=number(0, 1000, above=True), default=1.0,
-                     help="multiply the natural frequencies (default 1)")
-    rig.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
-                     help="modal (default, as live) or lbs (linear blend, what a glTF skin "
-                          "plays exactly)")
-    rig.add_argument("--stiffness", type=STIFFNESS, default=1.0,
-                     help="multiply every joint stiffness (default 1)")
+    add_palette_options(parser)
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
+                        help="multiply every joint stiffness of a rig (default 1)")
 
 
 def is_rig(args) -> bool:
@@ -518,12 +496,12 @@ def dance_from(args, mapping: Mapping | None):
         if model.n_modes == 0:
             raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
                              "joint); nothing to move")
-        modes = parse_modes(args.modes, model.n_modes)
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
-        mapping = mapping or band_mapping(spectrogram.bands, len(modes))
-        return rig_dance(skeleton, model, modes, spectrogram.duration,
-                         lambda times: mode_drive(mapping, spectrogram, times, len(modes)),
-                         args.amplitude, args.time_scale, args.skinning, song_of(args), name)
+        mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
+                              args.amplitude, args.time_scale, args.offset)
+        return rig_dance(skeleton, model, spectrogram.duration,
+                         lambda times: rig_coefficients(model, spectrogram, mapping, times),
+                         args.skinning, song_of(args), name)
     basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
     mapping = mapping or strongest_item(basis, spectrogram)
     return HarmonicDance(basis, spectrogram, mapping, song_of(args), name)

@@ -9,7 +9,7 @@ import pytest
 
 from eigendance.export.dance import rig_dance
 from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import band_mapping, mode_drive
+from eigendance.modal.motion import band_mapping, rig_coefficients, rig_mapping
 from eigendance.modal.sample_rigs import load_rig
 from helpers import fixture_path
 
@@ -29,9 +29,9 @@ def rig(name: str, skinning: str, song, mode_count: int = 4):
     skeleton = load_rig(name)
     model = ModalModel.from_skeleton(skeleton)
     modes = np.arange(min(mode_count, model.n_modes))
-    mapping = band_mapping(song.bands, len(modes))
-    return rig_dance(skeleton, model, modes, song.duration,
-                     lambda times: mode_drive(mapping, song, times, len(modes)), 0.3, 1.0,
+    mapping = rig_mapping(model, song, band_mapping(song.bands, len(modes)), modes, 0.3, 1.0)
+    return rig_dance(skeleton, model, song.duration,
+                     lambda times: rig_coefficients(model, song, mapping, times),
                      skinning, SONG, f"{skinning}-rig")
 
 

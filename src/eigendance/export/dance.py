@@ -30,7 +30,7 @@ from eigendance.geometry import bounding_box_diagonal
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import iter_positions
 from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import body_transforms, default_amplitudes, mode_coefficients
+from eigendance.modal.motion import body_transforms
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
 from eigendance.music.mapping import Mapping
@@ -231,44 +231,39 @@ class RigDance(Dance):
         return linear_blend_skinning(self.rest, self.weights, transforms)
 
 
-def rig_dance(skeleton: Skeleton, model: ModalModel, modes, duration: float,
-              drive: Callable | None = None, amplitude: float = 0.3, time_scale: float = 1.0,
-              skinning: str = "modal", audio=None, name: str = "dance") -> RigDance:
+def rig_dance(skeleton: Skeleton, model: ModalModel, duration: float,
+              coefficients: Callable, skinning: str = "modal", audio=None,
+              name: str = "dance") -> RigDance:
     """A rig moving in its vibration modes, as `eigendance animate-rig` moves it.
 
     Parameters
     ----------
     skeleton : the rig with its skin; model : its modes (`ModalModel.from_skeleton`).
-    modes : indices of the modes that move.
     duration : seconds.
-    drive : times (T,) → φ (T, len(modes)), the mapping's filter of the song; None: φ ≡ 1.
-    amplitude : the largest body rotation of each mode at φ = 1 (radians).
-    time_scale : multiplies the natural frequencies.
+    coefficients : times (T,) → c (T, nm), e.g. `modal.motion.rig_coefficients` of a song and
+        the mapping `modal.motion.rig_mapping` resolved (docs/design.md#modal-motion).
     skinning : "modal" or "lbs".
     audio, name : the song's file (or None) and how files call the dance.
 
     Returns
     -------
-    RigDance whose `pose(times)` gives c_κ(t) (docs/design.md#modal-motion) and the body
-    transforms (`modal.motion.body_transforms`).
+    RigDance whose `pose(times)` gives the body transforms (`modal.motion.body_transforms`)
+    and c_κ(t).
     """
     if skinning not in ("modal", "lbs"):
         raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
-    modes = np.asarray(modes, dtype=np.int64)
-    amplitudes = default_amplitudes(model, amplitude, size=skeleton.size)
-    phases = np.linspace(0, math.pi, model.n_modes, endpoint=False)
 
     def pose(times):
-        phi = None if drive is None else drive(times)
-        coefficients = mode_coefficients(model, times, amplitudes, phases, time_scale, phi, modes)
-        return body_transforms(model, coefficients), coefficients
+        moving = coefficients(np.asarray(times, dtype=float))
+        return body_transforms(model, moving), moving
 
+    moving_modes = np.flatnonzero(np.abs(coefficients(np.linspace(0, duration, 64))).max(axis=0))
     frames = np.zeros((model.n_bodies, 4, 4))
     frames[:, :3, :3] = model.body_rotations
     frames[:, :3, 3] = model.body_centers
     frames[:, 3, 3] = 1
     modal = ModalSkin(model, skeleton.vertices, skeleton.weights) if skinning == "modal" else None
-    info = {"modes": [int(m) for m in modes],
-            "frequencies_hz": [float(model.frequencies[m]) for m in modes]}
+    info = {"modes": [int(m) for m in moving_modes],
+            "frequencies_hz": [float(model.frequencies[m]) for m in moving_modes]}
     return RigDance(skeleton.vertices, skeleton.faces, skeleton.weights, pose, frames,
                     model.body_names, duration, modal, audio, name, info)

@@ -16,6 +16,7 @@ frame moves it exactly: rotation exp([θ]×) about its centre of mass, then tran
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -31,7 +32,7 @@ from eigendance.modal.palette import (
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
-from eigendance.music.mapping import Mapping
+from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 
 FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
@@ -179,6 +180,46 @@ def default_mapping(spectrogram: Spectrogram, n_modes: int) -> Mapping:
     """`band_mapping` calibrated to the song (`song_calibrated`): what plays when no mapping
     is given."""
     return song_calibrated(band_mapping(spectrogram.bands, n_modes), spectrogram, n_modes)
+
+
+def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
+                mapping: Mapping | None = None, selected=None, amplitude: float | None = None,
+                time_scale: float | None = None, offset: float | None = None,
+                bands: int = 64) -> Mapping:
+    """The complete mapping a rig plays, its palette resolved, with a person's overrides.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    spectrogram : the song (None: no song; then the mapping's filter has `bands` bands).
+    mapping : what to play; None is the default mapping for the song (`default_mapping`).
+    selected : mode indices that move instead of the mapping's (their amplitudes and phases
+        then follow the default rule).
+    amplitude : every selected mode's largest body rotation at φ = 1, radians.
+    time_scale : s.
+    offset : b.
+
+    Returns
+    -------
+    Mapping whose `modes` holds the resolved palette (`resolve_palette`), ready for
+    `rig_coefficients`; the command line, the exports and the page play the same.
+    """
+    settings = mapping.modes if mapping is not None and mapping.modes is not None \
+        else ModeSettings()
+    if selected is not None:
+        settings = ModeSettings(np.asarray(selected, dtype=np.int64), None, None,
+                                settings.time_scale)
+    if amplitude is not None:
+        count = len(resolve_palette(model, settings).selected)
+        settings = replace(settings, amplitudes=np.full(count, float(amplitude)))
+    if time_scale is not None:
+        settings = replace(settings, time_scale=float(time_scale))
+    palette = resolve_palette(model, settings)
+    if mapping is None:
+        mapping = band_mapping(bands, len(palette.selected)) if spectrogram is None else \
+            default_mapping(spectrogram, len(palette.selected))
+    return replace(mapping, modes=palette.to_settings(),
+                   offset=mapping.offset if offset is None else float(offset))
 
 
 def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
