@@ -8,10 +8,12 @@ BIN := $(VENV)/bin
 system:
 	bash scripts/install-system.sh
 
-$(VENV)/.installed: pyproject.toml
+# constraints.txt pins every package to the versions the tests last passed with (pyproject.toml
+# keeps the ranges the library supports); refresh it with `pip freeze --exclude-editable`.
+$(VENV)/.installed: pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -e '.[dev]'
+	$(BIN)/pip install -q -c constraints.txt -e '.[dev]'
 	touch $@
 
 # The front end (web/, TypeScript + three.js + Vite) is built into src/eigendance/static/.
