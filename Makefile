@@ -3,15 +3,17 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: setup system web demo test test-web lint bench
+.PHONY: setup system web demo test test-web lint bench blender
 
 system:
 	bash scripts/install-system.sh
 
-$(VENV)/.installed: pyproject.toml
+# constraints.txt pins every package to the versions the tests last passed with (pyproject.toml
+# keeps the ranges the library supports); refresh it with `pip freeze --exclude-editable`.
+$(VENV)/.installed: pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -e '.[dev]'
+	$(BIN)/pip install -q -c constraints.txt -e '.[dev]'
 	touch $@
 
 # The front end (web/, TypeScript + three.js + Vite) is built into src/eigendance/static/.
@@ -21,13 +23,24 @@ web: system
 
 setup: system web $(VENV)/.installed
 
+# Blender as a Python module (the `blender` extra, bpy, about 1 GB) for the tests that open
+# exports in Blender, in a virtual environment of its own (bpy pins its own numpy); installed once
+# per machine by `make test`.
+BLENDER_VENV := .venv-blender
+blender: $(BLENDER_VENV)/.installed
+
+$(BLENDER_VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(BLENDER_VENV)
+	$(BLENDER_VENV)/bin/pip install -q $$($(PYTHON) -c 'import tomllib; print(*tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]["blender"])')
+	touch $@
+
 demo: setup
 	$(BIN)/eigendance demo
 
 lint: setup
 	$(BIN)/ruff check src tests benchmarks
 
-test: lint
+test: lint blender
 	bash scripts/web.sh test
 	$(BIN)/pytest -q
 

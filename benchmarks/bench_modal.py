@@ -8,6 +8,10 @@
 2. Skinning a 50k-vertex mesh with 30 modes: frames per second of `ModalSkin.positions`
    (float32) against a bare numpy product of the same shapes, (T, 30) @ (30, 150k) + x; linear
    blend skinning of the exact body transforms for scale.
+3. Equilibrium pose editing of 100-body skeletons with a tube skin (target ≤ 1 s, thesis
+   §4.5.6): turn a joint (`Skeleton.rotate_joint`), recompute the modes and the modal skin
+   (`Rig.from_skeleton`) and pack the rig bundle the server answers, against the same edit with
+   the baseline modal analysis of 1.
 """
 
 from __future__ import annotations
@@ -21,9 +25,11 @@ from threadpoolctl import threadpool_limits
 
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_transforms, mode_coefficients
+from eigendance.modal.rig import Rig
 from eigendance.modal.rotations import skew
 from eigendance.modal.sample_rigs import add_tube_skin, open_chain, planar_loop
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
+from eigendance.server.binary import rig_bundle
 
 
 def best_of(function, repeats=3):
@@ -108,6 +114,31 @@ def bench_skinning(frames=60):
     print(f"   linear blend skinning (exact transforms, float64) {frames / blend:.0f} frames/s")
 
 
+TURN = [0.0, 0.0, 0.4]  # the pose edit: a rotation vector, radians
+
+
+def bench_pose_edit():
+    print("3. equilibrium pose edit of a 100-body skeleton with its skin (target <= 1 s)")
+    for label, skeleton, joint in (("chain of 100, spherical", open_chain(100), "j49"),
+                                   ("chain of 100, revolute", open_chain(100, "revolute"),
+                                    "j10")):
+        def modes(s=skeleton, j=joint):
+            ModalModel.from_skeleton(s.rotate_joint(j, TURN))
+
+        def answer(s=skeleton, j=joint):
+            rig_bundle(Rig.from_skeleton(s.rotate_joint(j, TURN)))
+
+        def baseline(s=skeleton, j=joint):
+            baseline_modal(s.rotate_joint(j, TURN))
+
+        edit, full, base = best_of(modes), best_of(answer), best_of(baseline)
+        size = len(rig_bundle(Rig.from_skeleton(skeleton))) / 2**20
+        print(f"   {label}: edit + modes {edit:.3f} s (baseline modal analysis {base:.3f} s, "
+              f"ratio {base / edit:.1f}x); the server's whole answer (+ modal skin of "
+              f"{len(skeleton.vertices)} vertices + {size:.0f} MiB bundle) {full:.3f} s")
+
+
 if __name__ == "__main__":
     bench_modal()
     bench_skinning()
+    bench_pose_edit()

@@ -8,7 +8,11 @@ import soundfile
 
 from eigendance.cli import main
 from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import parse_modes
+from eigendance.modal.motion import parse_modes, rig_coefficients
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import load_rig
+from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 
 
@@ -74,7 +78,57 @@ def test_animate_rig_with_audio_drive(tmp_path, capsys):
 
 def test_mode_selection():
     assert parse_modes("0,2-4", 6).tolist() == [0, 2, 3, 4]
-    assert parse_modes(None, 3).tolist() == [0, 1, 2]
+    assert parse_modes(None, 3) is None  # the palette's default selection
     with pytest.raises(Exception, match="mode 9 does not exist"):
         parse_modes("9", 5)
 
+
+
+def test_animate_rig_plays_the_mapping_as_the_python_api_does(tmp_path):
+    """`animate-rig --mapping` and `rig_coefficients` give the same motion; so does the mapping
+    it saves (every setting explicit), and the positions are the modal skin of it."""
+    audio = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")
+    palette = ModeSettings(np.array([0, 3, 5]), None, np.array([0.0, 1.0, 2.0]), 1.5)
+    mapping = Mapping(np.linspace(0, 1, 32), [0.4, -0.2], gain=0.8, smoothing=0.1, offset=0.5,
+                      modes=palette)
+    mapping.save(tmp_path / "m.json")
+    output, saved = tmp_path / "anim.npz", tmp_path / "saved.json"
+    assert main(["animate-rig", "hand", audio, "--mapping", str(tmp_path / "m.json"),
+                 "--fps", "24", "--save-mapping", str(saved), "-o", str(output)]) == 0
+    rig = Rig.from_skeleton(load_rig("hand"))
+    spectrogram = Spectrogram.from_file(audio, bands=32)
+    with np.load(output) as data:
+        times, coefficients = data["times"], data["coefficients"]
+        expected = rig_coefficients(rig.model, spectrogram, mapping, times)
+        np.testing.assert_allclose(coefficients, expected, rtol=1e-12, atol=0)
+        again = rig_coefficients(rig.model, spectrogram, Mapping.load(saved), times)
+        np.testing.assert_allclose(again, expected, rtol=1e-12, atol=0)
+        assert data["modes"].tolist() == [0, 3, 5] and float(data["time_scale"]) == 1.5
+        positions = rig.skin.positions(coefficients)
+        scale = np.abs(data["rest_vertices"]).max()
+        np.testing.assert_allclose(data["positions"], positions, atol=1e-5 * scale)
+
+
+def test_animate_rig_flags_override_the_palette_and_joints_file(tmp_path, capsys):
+    joints = tmp_path / "joints.json"
+    joints.write_text(json.dumps({"j0": 50.0, "j1": "auto"}))
+    output = tmp_path / "a.npz"
+    assert main(["animate-rig", "chain", "--joints", str(joints), "--modes", "1-2",
+                 "--amplitude", "0.2", "--time-scale", "0.5", "--duration", "1",
+                 "-o", str(output)]) == 0
+    skeleton = load_rig("chain").with_stiffness({"j0": 50.0})
+    model = ModalModel.from_skeleton(skeleton)
+    with np.load(output) as data:
+        np.testing.assert_allclose(data["frequencies"], model.frequencies, rtol=1e-12)
+        assert data["modes"].tolist() == [1, 2] and float(data["time_scale"]) == 0.5
+        np.testing.assert_allclose(data["amplitudes"], 0.2)
+    joints.write_text(json.dumps({"elbow": 1.0}))
+    assert main(["animate-rig", "chain", "--joints", str(joints), "-o", str(output),
+                 "--force"]) == 1
+    assert "no joint named 'elbow'" in capsys.readouterr().err
+
+
+def test_modes_prints_the_default_palette(tmp_path, capsys):
+    assert main(["modes", "loop16", "-o", str(tmp_path / "m.npz")]) == 0
+    printed = capsys.readouterr().out
+    assert "default palette: modes 0, 1, 2, 3" in printed and "time scale" in printed

@@ -10,6 +10,8 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.harmonic.motion import positions_at
 from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import rig_coefficients
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
@@ -20,7 +22,7 @@ from eigendance.music.spectrogram import Spectrogram
 
 __all__ = [
     "EigendanceError", "HarmonicBasis", "InputError", "InternalError", "Mapping", "Mesh",
-    "ModalModel", "ModalSkin", "Skeleton", "Spectrogram", "breed", "initial_gallery",
-    "linear_blend_skinning", "load_mesh", "load_rig", "positions_at",
+    "ModalModel", "ModalSkin", "Rig", "Skeleton", "Spectrogram", "breed", "initial_gallery",
+    "linear_blend_skinning", "load_mesh", "load_rig", "positions_at", "rig_coefficients",
 ]
 __version__ = "0.2.0"

@@ -13,27 +13,37 @@ import os
 import sys
 import tempfile
 import time
+import warnings
 
 import numpy as np
 from tqdm import tqdm
 
 from eigendance import __version__
 from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.files import refuse_overwrite
+from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.files import FORMATS as EXPORT_FORMATS
+from eigendance.export.files import companion_paths, export_dance, format_of
+from eigendance.export.renderer import Look
+from eigendance.export.video import parse_size, render_video
+from eigendance.files import refuse_overwrite, suffix_of
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
+from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     animate_rig,
-    band_mapping,
-    mode_drive,
+    mapping_palette,
     parse_modes,
+    rig_coefficients,
+    rig_mapping,
     save_animation,
 )
+from eigendance.modal.palette import default_palette
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
+from eigendance.modal.skeleton import read_joint_stiffness
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
@@ -52,6 +62,7 @@ from eigendance.server.serve import (
     DEFAULT_PORT,
     DEMO_K,
     demo_paths,
+    listen,
     run,
     terminal_progress,
 )
@@ -61,6 +72,13 @@ RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
 
 
 # --- argument types: a bad value is an argparse error naming the flag ------------------------
+
+class Parser(argparse.ArgumentParser):
+    """argparse with the project's errors: one line, exit status 1 (bad input)."""
+
+    def error(self, message):
+        self.exit(1, f"eigendance: error: {one_line(message)} (see {self.prog} --help)\n")
+
 
 def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
            above: bool = False):
@@ -77,6 +95,7 @@ def number(low: float = -math.inf, high: float = math.inf, integer: bool = False
             raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
                                              f"{text!r}")
         return value
+    parse.bounds = (low, high)  # for the tests that try every flag with absurd values
     return parse
 
 
@@ -154,26 +173,29 @@ def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--host", default=DEFAULT_HOST,
                         help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
     parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
-                        help=f"port (default {DEFAULT_PORT})")
+                        help=f"port (default {DEFAULT_PORT}; 0: any free port)")
     parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
     parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
                         help="largest file a page may upload, MiB (default 64)")
 
 
 def add_serve(parser):
-    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING",
-                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC) "
-                             "and mapping JSON files to put in the library")
+    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING|RIG",
+                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC), "
+                             "mapping JSON and skeleton JSON files to put in the library (a "
+                             "glTF with a skin is a rig too; the built-in rigs are always "
+                             "there)")
     add_server_options(parser, 150, "harmonics per mesh basis")
 
 
 def run_serve(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     for path in args.files:
         library.add_path(path)
     terminal_progress(library)
-    run(create_app(library), args.host, args.port,
-        announce=f"eigendance: serving on {url(args.host, args.port)}")
+    run(create_app(library), listening,
+        announce=lambda port: f"eigendance: serving on {url(args.host, port)}")
 
 
 def add_demo(parser):
@@ -181,12 +203,13 @@ def add_demo(parser):
 
 
 def run_demo(args) -> None:
+    listening = listen(args.host, args.port)
     library = new_library(args)
     terminal_progress(library)
     for path in demo_paths():
         library.add_path(path)
-    run(create_app(library), args.host, args.port,
-        announce=f"eigendance demo: open {url(args.host, args.port)} in a browser")
+    run(create_app(library), listening,
+        announce=lambda port: f"eigendance demo: open {url(args.host, port)} in a browser")
 
 
 def new_library(args) -> Library:
@@ -325,11 +348,47 @@ def run_animate(args) -> None:
 STIFFNESS = number(0, 1e12, above=True)
 
 
-def add_modes(parser):
-    parser.add_argument("rig", help=RIG_HELP)
+def add_palette_options(parser) -> None:
+    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`."""
+    group = parser.add_argument_group("rigs: the palette (default: the mapping's, else the "
+                                      "default rule that makes any rig dance)")
+    group.add_argument("--modes", help="mode indices that move, e.g. 0,2,5-8")
+    group.add_argument("--amplitude", type=number(0, math.pi), default=None,
+                       help="largest body rotation of each chosen mode at full drive, radians")
+    group.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
+                       help="multiply the natural frequencies")
+    group.add_argument("--offset", type=number(-1e6, 1e6), default=None,
+                       help="the filter's offset b: 0 keeps silence still, 1 sways idly "
+                            "(default: the mapping's, else 0)")
+    group.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
+                       help="modal (default, first-order, as live) or lbs (exact body "
+                            "transforms, linear blend: what a glTF skin plays exactly)")
+
+
+def add_rig_options(parser) -> None:
+    """The rig and its joints' stiffness, shared by `modes` and `animate-rig`."""
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1; frequencies scale "
                              "with its square root)")
+    parser.add_argument("--joints", metavar="JSON",
+                        help="per-joint stiffness: a JSON object {joint name: number, list (one "
+                             "per free row) or \"auto\"} applied before --stiffness")
+
+
+def rig_from(args):
+    """The rig of `args.rig` with the stiffness options applied, and its modal model."""
+    skeleton = load_rig(args.rig)
+    for note in skeleton.notes:
+        print(f"{skeleton.name}: {note}", file=sys.stderr)
+    values = read_joint_stiffness(args.joints) if args.joints else {}
+    if values or args.stiffness != 1.0:
+        skeleton = skeleton.with_stiffness(values, scale=args.stiffness)
+    return skeleton, ModalModel.from_skeleton(skeleton)
+
+
+def add_modes(parser):
+    parser.add_argument("rig", help=RIG_HELP)
+    add_rig_options(parser)
     parser.add_argument("--show", type=number(0, integer=True), default=30,
                         help="modes listed (default 30)")
     add_output(parser, "modal file to write (.npz)")
@@ -352,12 +411,15 @@ def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> lis
 def run_modes(args) -> None:
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
-    skeleton = load_rig(args.rig)
-    for note in skeleton.notes:
-        print(f"{skeleton.name}: {note}", file=sys.stderr)
-    model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
+    skeleton, model = rig_from(args)
     model.save(args.output)
     print("\n".join(mode_table(model, limit=args.show)))
+    if model.n_modes:
+        palette = default_palette(model)
+        played = model.frequencies[palette.selected] * palette.time_scale
+        print(f"default palette: modes {', '.join(str(m) for m in palette.selected)}, time "
+              f"scale {palette.time_scale:.3g} (they play at "
+              f"{', '.join(f'{f:.2f}' for f in played)} Hz)")
     print(f"{args.output}: {skeleton.n_bodies} bodies, {len(skeleton.joints)} joints, "
           f"{model.constraint_rows} constraint rows (rank {model.constraint_rank}), "
           f"{model.nullspace_dim} admissible motions = {model.rigid_modes} rigid + "
@@ -368,57 +430,223 @@ def add_animate_rig(parser):
     parser.add_argument("rig", help=RIG_HELP)
     parser.add_argument("audio", nargs="?", help="audio file (any format `spectrum` reads) or "
                         "spectrogram file (.npz) whose bands drive the modes; without it every "
-                        "chosen mode moves steadily")
-    parser.add_argument("--mapping", help="mapping JSON from bands to the chosen modes "
-                                          "(default: bands in order, low sounds to low modes)")
-    parser.add_argument("--modes", help="mode indices, e.g. 0,2,5-8 (default: the 8 lowest)")
+                        "chosen mode moves steadily (music off)")
+    parser.add_argument("--mapping", help="mapping JSON: bands to modes, gain, smoothing, offset "
+                                          "and palette (default: bands in order over the "
+                                          "palette's modes, low sounds to low modes, "
+                                          "calibrated to the song)")
+    add_palette_options(parser)
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
                         help="seconds (default: the audio's length, or 4 s without audio)")
-    parser.add_argument("--amplitude", type=number(0, math.pi), default=0.3,
-                        help="largest body rotation of each mode at full drive, radians "
-                             "(default 0.3)")
-    parser.add_argument("--time-scale", type=number(0, 1000, above=True), default=1.0,
-                        help="multiply the natural frequencies (default 1)")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
-                        help="bands of the audio's spectrogram (default 64)")
-    parser.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
-                        help="modal (default, first-order, as live) or lbs (exact body "
-                             "transforms, linear blend)")
-    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
-                        help="multiply every joint stiffness (default 1)")
+                        help="bands of the audio's spectrogram without a mapping (default 64)")
+    add_rig_options(parser)
+    parser.add_argument("--save-mapping", metavar="JSON",
+                        help="also write the mapping that made the motion, every setting "
+                             "explicit (the page and the exports play it the same)")
     add_output(parser, "animation file to write (.npz)")
 
 
 def run_animate_rig(args) -> None:
     refuse_overwrite(args.output, args.force)
+    if args.save_mapping:
+        refuse_overwrite(args.save_mapping, args.force)
     start = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    skeleton = load_rig(args.rig)
-    model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
+    skeleton, model = rig_from(args)
     if model.n_modes == 0:
         raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
                          "nothing to animate")
-    modes = parse_modes(args.modes, model.n_modes)
-    drive = None
+    spectrogram, times = None, frame_times(args.duration or 4.0, args.fps)
     if args.audio:
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands)
         times = frame_times(args.duration or spectrogram.duration, args.fps)
-        mapping = mapping or band_mapping(spectrogram.bands, len(modes))
-        drive = mode_drive(mapping, spectrogram, times, len(modes))
-    else:
-        times = frame_times(args.duration or 4.0, args.fps)
+    mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
+                          args.amplitude, args.time_scale, args.offset, args.bands)
+    palette = mapping_palette(model, mapping)
+    # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
+    # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
+    # mode); half again for the intermediates.
+    per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies + 8 * model.n_modes)
+    what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
+    check_memory(per_frame * len(times), what)
+    check_disk(args.output, per_frame * len(times), what)
+    coefficients = rig_coefficients(model, spectrogram, mapping, times)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
-        arrays = animate_rig(skeleton, model, times, modes, args.amplitude, args.time_scale,
-                             drive, args.skinning, progress=update)
+        arrays = animate_rig(skeleton, model, times, coefficients, palette, args.skinning,
+                             progress=update)
     save_animation(args.output, arrays)
+    if args.save_mapping:
+        mapping.save(args.save_mapping)
+    scaled = model.frequencies[palette.selected] * palette.time_scale
     print(f"{args.output}: {len(times)} frames at {args.fps:g} fps, "
           f"{len(skeleton.vertices)} vertices, {skeleton.n_bodies} bodies, modes "
-          f"{', '.join(str(m) for m in modes)} "
-          f"({', '.join(f'{model.frequencies[m]:.3g}' for m in modes)} Hz), "
-          f"{'audio drive' if drive is not None else 'steady drive'}, "
-          f"{time.perf_counter() - start:.1f} s")
+          f"{', '.join(str(m) for m in palette.selected)} playing at "
+          f"{', '.join(f'{f:.2f}' for f in scaled)} Hz (time scale "
+          f"{palette.time_scale:.3g}), {'music' if spectrogram is not None else 'steady'} "
+          f"drive, {time.perf_counter() - start:.1f} s")
+
+
+# --- exports: files for other tools, and video (docs/design.md#exports) ----------------------
+
+def add_dance_inputs(parser, audio_help: str) -> None:
+    """The inputs of `export` and `render`: a mesh (+ mapping) or a rig, and the song."""
+    parser.add_argument("model", help="mesh file (OBJ, PLY, OFF, STL, glTF) or basis file "
+                        "(.npz); with --rig, or a .json or built-in name: " + RIG_HELP)
+    parser.add_argument("audio", help=audio_help)
+    parser.add_argument("--mapping", help="mapping JSON (default: for a mesh, the initial-"
+                        "gallery item of 8 that moves it most; for a rig, bands in order)")
+    parser.add_argument("--rig", action="store_true",
+                        help="MODEL is a rig moved in its vibration modes (needed for a glTF "
+                             "skin; a .json or built-in rig is one anyway)")
+    parser.add_argument("-k", type=HARMONICS, default=300,
+                        help="harmonics when MODEL is a mesh file (default 300)")
+    parser.add_argument("--fps", type=number(0, 240, above=True), default=30.0,
+                        help="frames per second (default 30)")
+    add_palette_options(parser)
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
+                        help="multiply every joint stiffness of a rig (default 1)")
+
+
+def is_rig(args) -> bool:
+    return args.rig or args.model in SAMPLE_RIGS or args.model.lower().endswith(".json")
+
+
+def song_of(args) -> str | None:
+    """The song's audio file, or None when AUDIO is a spectrogram file."""
+    return None if args.audio.lower().endswith(".npz") else args.audio
+
+
+def dance_from(args, mapping: Mapping | None):
+    """The dance `export` and `render` write: a mesh by its harmonics or a rig by its modes."""
+    name = os.path.splitext(os.path.basename(args.output))[0]
+    if is_rig(args):
+        skeleton = load_rig(args.model)
+        model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
+        if model.n_modes == 0:
+            raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
+                             "joint); nothing to move")
+        spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
+        mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
+                              args.amplitude, args.time_scale, args.offset)
+        return rig_dance(skeleton, model, spectrogram.duration,
+                         lambda times: rig_coefficients(model, spectrogram, mapping, times),
+                         args.skinning, song_of(args), name)
+    basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
+    mapping = mapping or strongest_item(basis, spectrogram)
+    return HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
+
+
+def harmonic_inputs(args, bands: int):
+    """The mesh's basis (solved with a progress bar, or read) and the song's spectrogram."""
+    bar, update = progress_bar(args.k, "eigenpairs")
+    with bar:
+        basis = basis_from(args.model, args.k, progress=update)
+    return basis, spectrogram_from(args.audio, bands)
+
+
+def add_export(parser):
+    add_dance_inputs(parser, "the song: audio file (copied beside the export), or "
+                             "spectrogram file (.npz)")
+    parser.add_argument("--format", choices=tuple(EXPORT_FORMATS),
+                        help="glb (glTF 2.0: morph targets, or a skin), pc2 (+ the rest mesh "
+                             "as OBJ, for Blender's Mesh Cache), usd (time-sampled points); "
+                             "default: by the output's suffix")
+    add_output(parser, "file to write: .glb, .pc2 or .usd/.usdc/.usda")
+
+
+def run_export(args) -> None:
+    format = format_of(args.output, args.format)
+    start = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    for path in companion_paths(args.output, format, song_of(args)).values():
+        if path is not None:  # before any work: the export would stop at the end
+            refuse_overwrite(path, args.force)
+    dance = dance_from(args, mapping)
+    bar, update = progress_bar(None, "frames", unit="frame")
+    with bar:
+        def step(done, total):
+            bar.total = total
+            update(done)
+        report = export_dance(dance, args.output, format, args.fps, args.force, step)
+    size, cache = report["bytes"], report["point_cache_bytes"]
+    compared = "" if format == "pc2" else \
+        f" (as a point cache: {cache / 1e6:.2f} MB, {cache / size:.1f}× the size)"
+    print(f"{args.output}: {report['frames']} frames of {dance.n} vertices at {args.fps:g} "
+          f"fps, {size / 1e6:.2f} MB{compared}, {time.perf_counter() - start:.1f} s")
+    if report["skinning_difference"] is not None:
+        print(f"{args.output}: the skin plays linear blend skinning; modal skinning differs "
+              f"by at most {report['skinning_difference']:.4g} "
+              f"({report['skinning_difference'] / report['diagonal']:.2%} of the diagonal)")
+    for path in report["files"][1:]:
+        print(f"{path}: written beside it")
+
+
+def add_render(parser):
+    add_dance_inputs(parser, "the song (audio file), muxed into the video as AAC")
+    parser.add_argument("--size", type=video_size, default=(1280, 720),
+                        help="WIDTHxHEIGHT in pixels, even (default 1280x720)")
+    parser.add_argument("--gallery", type=int, metavar="N",
+                        help="render a gallery of N tiles as the page's grid: the initial "
+                             "gallery, or N children of the --breed parents")
+    parser.add_argument("--breed", nargs="+", metavar="MAPPING",
+                        help="with --gallery: breed the tiles from these mapping files")
+    parser.add_argument("--seed", type=number(0, 2**32 - 1, integer=True), default=0,
+                        help="breeding seed (default 0)")
+    add_output(parser, "video to write (.mp4)")
+
+
+def video_size(text: str) -> tuple[int, int]:
+    try:
+        return parse_size(text)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+def run_render(args) -> None:
+    if suffix_of(args.output) != ".mp4":
+        raise InputError(f"{args.output}: the video is an MP4; name it .mp4")
+    if song_of(args) is None:
+        raise InputError(f"{args.audio}: a video needs the song itself, not its spectrogram")
+    refuse_overwrite(args.output, args.force)
+    if args.breed and args.gallery is None:
+        raise InputError("breeding parents were given without a gallery size",
+                         remedy={"gallery": DEFAULT_GALLERY})
+    start = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    if args.gallery is not None:
+        size = check_gallery_size(args.gallery)
+        if is_rig(args):
+            raise InputError(f"{args.model}: a gallery breeds mappings of a mesh's harmonics; "
+                             "render a rig on its own")
+        if mapping is not None:
+            raise InputError(f"{args.mapping}: a gallery makes its own mappings; breed from it "
+                             "instead", remedy={"breed": args.mapping})
+        items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
+            if args.breed else None
+        basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
+        items = items or initial_gallery(basis, spectrogram, size)
+        name = os.path.splitext(os.path.basename(args.output))[0]
+        dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name) for item in items]
+        looks = [Look(item.shading, item.deformed_normal_weight, index)
+                 for index, item in enumerate(items)]
+    else:
+        dances = [dance_from(args, mapping)]
+        looks = [Look(mapping.shading, mapping.deformed_normal_weight) if mapping else Look()]
+    bar, update = progress_bar(None, "frames", unit="frame")
+    with bar:
+        def step(done, total):
+            bar.total = total
+            update(done)
+        report = render_video(args.output, dances, looks, args.audio, args.fps, args.size,
+                              args.force, step)
+    seconds = time.perf_counter() - start
+    print(f"{args.output}: {report['frames']} frames, {args.size[0]}x{args.size[1]} at "
+          f"{args.fps:g} fps, {report['duration']:.2f} s of video with the song, "
+          f"{len(dances)} {'tiles' if len(dances) > 1 else 'dancer'}, {seconds:.1f} s "
+          f"({report['duration'] / seconds:.2f}× real time)")
 
 
 COMMANDS = {
@@ -431,12 +659,14 @@ COMMANDS = {
     "modes": (add_modes, run_modes, "modal analysis of a rig: natural vibration modes"),
     "animate-rig": (add_animate_rig, run_animate_rig,
                     "move a rig in its vibration modes (driven by audio) and skin its mesh"),
+    "export": (add_export, run_export,
+               "write the dance for other tools: glTF (.glb), point cache (.pc2 + .obj), USD"),
+    "render": (add_render, run_render, "render the dance with its song into a video (.mp4)"),
 }
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="eigendance", description="Make 3D models dance to music.")
+    parser = Parser(prog="eigendance", description="Make 3D models dance to music.")
     parser.add_argument("--version", action="version", version=f"eigendance {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (add, run_command, summary) in COMMANDS.items():
@@ -463,7 +693,13 @@ def main(argv=None) -> int:
     """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
     try:
-        args.run(args)
+        with warnings.catch_warnings():
+            if not os.environ.get("EIGENDANCE_DEBUG"):
+                # Library warnings (numpy's floating-point ones, pygltflib's about odd files)
+                # would only add lines around the one line a command ends with; outputs are
+                # checked finite instead (files.check_finite).
+                warnings.simplefilter("ignore")
+            args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)
         return 1

@@ -1,14 +1,20 @@
-"""Files: kinds by suffix, atomic writes, checked reads of .npz (docs/design.md#files).
+"""Files: kinds by suffix, atomic writes, checked reads of .npz and JSON (docs/design.md#files).
 
 One table says which suffixes are meshes, audio, rigs and mappings; the CLI, the server and the
 loaders all ask `kind_of`. Every output is written to a temporary file beside its destination
 and renamed over it, so a reader never sees half a file and a failure leaves nothing behind.
+The writer holds a lock on its temporary file; a temporary file nobody holds was left by a
+killed process, and the next write into that folder removes it.
 """
 
 from __future__ import annotations
 
+import fcntl
+import json
+import math
 import os
 import tempfile
+import time
 import zipfile
 
 import numpy as np
@@ -60,12 +66,51 @@ def check_readable(path: str | os.PathLike) -> str:
     return path
 
 
+# Temporary files of `atomic_write`: ours alone, so sweeping them never touches another
+# program's files. An empty one younger than FRESH_SECONDS may belong to a writer that has not
+# taken its lock yet.
+TEMPORARY_PREFIX, TEMPORARY_SUFFIX = ".eigendance-", ".part"
+FRESH_SECONDS = 60.0
+
+
+def sweep_temporary_files(folder: str | os.PathLike) -> int:
+    """Remove the temporary files that killed writers left in `folder`; returns how many.
+
+    A writer holds an exclusive lock on its temporary file until it renames or removes it, and
+    the system drops the lock when the process dies, however it dies. So a temporary file whose
+    lock can be taken is debris (unless it is empty and fresh: its writer may be about to lock it).
+    """
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return 0
+    removed = 0
+    now = time.time()
+    for entry in entries:
+        if not (entry.name.startswith(TEMPORARY_PREFIX) and entry.name.endswith(TEMPORARY_SUFFIX)
+                and entry.is_file(follow_symlinks=False)):
+            continue
+        try:
+            with open(entry.path, "rb") as file:
+                fcntl.flock(file, fcntl.LOCK_EX | fcntl.LOCK_NB)  # OSError while a writer holds it
+                status = os.fstat(file.fileno())
+                if status.st_size == 0 and now - status.st_mtime < FRESH_SECONDS:
+                    continue
+                os.unlink(entry.path)
+                removed += 1
+        except OSError:
+            continue
+    return removed
+
+
 def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
     """Call write(file) on a temporary file beside `path`, then rename it over `path`.
 
-    Readers never see a half-written file, and a failed write leaves no debris. sync=False skips
-    the fsync (for large files that are cheap to recompute). An output that cannot be written
-    (a folder in the way, no permission, a full disk) is an InputError naming the path.
+    Readers never see a half-written file, and a failed write leaves no debris; the temporary
+    files of killed writers in the same folder are removed first (`sweep_temporary_files`).
+    sync=False skips the fsync (for large files that are cheap to recompute). An output that
+    cannot be written (a folder in the way, no permission, a full disk) is an InputError naming
+    the path.
     """
     path = os.fspath(path)
     if os.path.isdir(path):
@@ -73,20 +118,27 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
     folder = os.path.dirname(os.path.abspath(path))
     try:
         os.makedirs(folder, exist_ok=True)
-        handle, temporary = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=".part")
+        sweep_temporary_files(folder)
+        handle, temporary = tempfile.mkstemp(dir=folder, prefix=TEMPORARY_PREFIX,
+                                             suffix=TEMPORARY_SUFFIX)
     except OSError as error:
         raise InputError(f"{path}: cannot write ({error.strerror or one_line(error)})") from None
     try:
+        # The lock is held until the file is renamed (the rename happens while it is open).
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            pass  # a file system without locks: the file is still ours, only the sweep skips it
         with os.fdopen(handle, "wb") as file:
             write(file)
+            file.flush()
             if sync:
-                file.flush()
                 os.fsync(file.fileno())
-        # mkstemp creates 0600; give the file the permissions a plain open() would.
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(temporary, 0o666 & ~umask)
-        os.replace(temporary, path)
+            # mkstemp creates 0600; give the file the permissions a plain open() would.
+            umask = os.umask(0)
+            os.umask(umask)
+            os.fchmod(file.fileno(), 0o666 & ~umask)
+            os.replace(temporary, path)
     except BaseException as error:
         if os.path.exists(temporary):
             os.unlink(temporary)
@@ -97,8 +149,25 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
 
 
 def atomic_save_npz(path, **arrays) -> None:
-    """np.savez (uncompressed: the eigenvectors are incompressible floats) written atomically."""
+    """np.savez (uncompressed: the eigenvectors are incompressible floats) written atomically.
+
+    Every array of numbers must be finite: a result with NaN or infinite values is an InputError
+    (its inputs were out of range) and no file is written.
+    """
+    for name, array in arrays.items():
+        check_finite(array, f"{os.fspath(path)}: not written: {name}", OUT_OF_RANGE)
     atomic_write(path, lambda file: np.savez(file, **arrays))
+
+
+OUT_OF_RANGE = "an input value is too large or too small for the result"
+
+
+def check_finite(array, label: str, why: str = "") -> None:
+    """InputError "{label} holds NaN or infinite values ({why})" unless every number in `array`
+    is finite. Arrays of anything but floats (integers, strings) pass."""
+    array = np.asarray(array)
+    if array.dtype.kind in "fc" and not np.isfinite(array).all():
+        raise InputError(f"{label} holds NaN or infinite values" + (f" ({why})" if why else ""))
 
 
 def load_npz(path, required: tuple[str, ...]) -> dict:
@@ -114,6 +183,90 @@ def load_npz(path, required: tuple[str, ...]) -> dict:
         raise InputError(f"{path}: missing {', '.join(missing)} (not an eigendance file "
                          "of this kind)")
     return arrays
+
+
+def checked_array(arrays: dict, name: str, path, kind: str = "float",
+                  shape: tuple = ()) -> np.ndarray:
+    """arrays[name] from a file, checked: InputError naming the file and the field otherwise.
+
+    kind: "float" (real numbers, all finite; returned as float64), "int" (integers; int64) or
+    "str" (one string; returned as str). shape: the expected shape, None for any length.
+    """
+    array = arrays[name]
+    label = f"{os.fspath(path)}: {name}"
+    if kind == "str":
+        if array.dtype.kind != "U" or array.shape != ():
+            raise InputError(f"{label} must be a string, not {array.dtype} {array.shape}")
+        return str(array)
+    numbers = "iu" if kind == "int" else "iuf"
+    if array.dtype.kind not in numbers:
+        raise InputError(f"{label} must hold {'integers' if kind == 'int' else 'real numbers'}, "
+                         f"not {array.dtype}")
+    if array.ndim != len(shape) or any(want is not None and want != got for want, got
+                                       in zip(shape, array.shape, strict=False)):
+        expected = "(" + ", ".join("any" if d is None else str(d) for d in shape) + \
+            ("," if len(shape) == 1 else "") + ")"
+        raise InputError(f"{label} has shape {array.shape}; expected {expected}")
+    if kind == "int":
+        if array.dtype.kind == "u" and array.size and array.max() > np.iinfo(np.int64).max:
+            raise InputError(f"{label} holds integers beyond 2⁶³")
+        return array.astype(np.int64)
+    array = array.astype(np.float64)
+    check_finite(array, label)
+    return array
+
+
+# Integers in a JSON document longer than this are refused before Python converts them (which
+# takes time quadratic in the length, and a float of them overflows).
+JSON_INTEGER_DIGITS = 40
+
+
+class _LongInteger(ValueError):
+    pass
+
+
+def _json_integer(text: str) -> int:
+    if len(text) > JSON_INTEGER_DIGITS:
+        raise _LongInteger(f"an integer of {len(text.lstrip('-'))} digits")
+    return int(text)
+
+
+def finite_number(value) -> bool:
+    """Whether a number from a JSON document is finite as a float (an int too large for a float
+    is not: math.isfinite would raise OverflowError)."""
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
+
+
+def read_json(path: str | os.PathLike, name: str | None = None):
+    """The parsed JSON document of a file; InputError naming the file for anything unreadable.
+
+    Refused: a missing file, text that is not UTF-8 or not JSON, nesting deeper than Python's
+    recursion limit, integers of more than JSON_INTEGER_DIGITS digits. Messages call the file
+    `name` (default: its base name; an upload's own name rather than where it is stored).
+    """
+    path = os.fspath(path)
+    name = name or os.path.basename(path)
+    try:
+        with open(path, encoding="utf-8") as file:
+            return json.load(file, parse_int=_json_integer)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file", status=404) from None
+    except IsADirectoryError:
+        raise InputError(f"{path}: is a folder, not a JSON file") from None
+    except json.JSONDecodeError as error:
+        raise InputError(f"{name}: malformed JSON at line {error.lineno} column {error.colno} "
+                         f"({error.msg})") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{name}: not a JSON file (the text is not UTF-8)") from None
+    except _LongInteger as error:
+        raise InputError(f"{name}: {error} is out of range") from None
+    except RecursionError:
+        raise InputError(f"{name}: the JSON is nested too deeply") from None
+    except OSError as error:
+        raise InputError(f"{path}: cannot read ({error.strerror or one_line(error)})") from None
 
 
 def refuse_overwrite(path, force: bool) -> None:

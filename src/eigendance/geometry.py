@@ -4,6 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
+# Largest coordinate magnitude a model may have, in any unit. Outputs hold positions as float32
+# (largest value ≈ 3.4·10³⁸): this leaves 23 decades for the motion, and squares of
+# coordinates (areas, lengths) stay far from overflow in float64.
+MAX_COORDINATE = 1e15
+
 
 def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """Merge coincident vertices, keeping the order of their first occurrence.

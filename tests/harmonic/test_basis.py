@@ -6,7 +6,7 @@ import pytest
 import eigendance.harmonic.basis as basis_module
 from eigendance.errors import EigendanceError
 from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
-from eigendance.harmonic.mesh import load_mesh
+from eigendance.harmonic.mesh import Mesh, load_mesh
 from helpers import fixture_path, sphere
 
 
@@ -101,3 +101,63 @@ def test_saved_file_has_ordinary_permissions(tmp_path, knight):
     umask = os.umask(0)
     os.umask(umask)
     assert os.stat(path).st_mode & 0o777 == 0o666 & ~umask
+
+
+def wrong_entries(mesh, k):
+    """Entries that are intact (right key, right checksum) but not this solve's eigenpairs."""
+    right = HarmonicBasis.from_mesh(mesh, k, cache=False)
+    fewer = HarmonicBasis.from_mesh(mesh, k // 2, cache=False)
+    other = HarmonicBasis.from_mesh(sphere(2), k, cache=False)  # 162 vertices as well
+    shifted = np.roll(right.eigenvectors, 1, axis=0)  # the same rows, given to other vertices
+    pairs = {"eigenvalues": right.eigenvalues, "eigenvectors": right.eigenvectors,
+             "mass": right.mass}
+    return right, {
+        "half the harmonics": {"eigenvalues": fewer.eigenvalues,
+                               "eigenvectors": fewer.eigenvectors, "mass": fewer.mass},
+        "another mesh's basis": {"eigenvalues": other.eigenvalues,
+                                 "eigenvectors": other.eigenvectors, "mass": other.mass},
+        "eigenvalues doubled": {**pairs, "eigenvalues": 2 * right.eigenvalues},
+        "eigenvectors zeroed": {**pairs, "eigenvectors": np.zeros_like(right.eigenvectors)},
+        "vertices shifted": {**pairs, "eigenvectors": shifted},
+        "mass doubled": {**pairs, "mass": 2 * right.mass},
+        "one pair twice": {**pairs, "eigenvectors": right.eigenvectors[:, [0, 1, 1, *range(3, k)]],
+                           "eigenvalues": right.eigenvalues[[0, 1, 1, *range(3, k)]]},
+        "integers": {**pairs, "eigenvalues": right.eigenvalues.astype(np.int64)},
+    }
+
+
+def test_a_cache_entry_that_is_intact_but_wrong_is_solved_again(monkeypatch):
+    """The cache's checksum guards against damage; the solve's own test against an entry that
+    was written wrong: each of these is refused, solved again and replaced."""
+    mesh = sphere(2)
+    bumped = Mesh.from_arrays(mesh.vertices * [1, 1, 1.2], mesh.faces, name="bumped")
+    right, entries = wrong_entries(bumped, 12)
+    key = basis_key(bumped, 12, "cotan")
+    calls = []
+    original = basis_module.solve
+    monkeypatch.setattr(basis_module, "solve", lambda *a, **kw: calls.append(1) or
+                        original(*a, **kw))
+    for name, arrays in entries.items():
+        basis_cache().store(key, arrays)
+        solved = HarmonicBasis.from_mesh(bumped, 12)
+        assert len(calls) == 1, name
+        calls.clear()
+        np.testing.assert_allclose(solved.eigenvalues, right.eigenvalues, rtol=1e-8, atol=1e-10)
+        again = HarmonicBasis.from_mesh(bumped, 12)  # the entry was replaced by a right one
+        assert calls == [] and np.array_equal(again.eigenvectors, solved.eigenvectors), name
+    os.remove(basis_cache().path(key))
+    os.mkdir(basis_cache().path(key))  # a folder where the entry should be
+    assert HarmonicBasis.from_mesh(bumped, 12).k == 12 and calls == [1]
+    assert os.path.isfile(basis_cache().path(key))
+
+
+def test_load_refuses_a_basis_whose_coefficients_do_not_follow(tmp_path, knight):
+    path = tmp_path / "b.npz"
+    knight.save(path)
+    arrays = dict(np.load(path))
+    np.savez(path, **{**arrays, "residual": arrays["residual"] + 0.1})
+    with pytest.raises(EigendanceError, match="residual do not follow"):
+        HarmonicBasis.load(path)
+    np.savez(path, **{**arrays, "laplacian": np.array("spectral")})
+    with pytest.raises(EigendanceError, match="laplacian must be one of cotan, robust"):
+        HarmonicBasis.load(path)

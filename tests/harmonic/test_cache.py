@@ -86,13 +86,22 @@ def test_an_unwritable_folder_only_costs_the_speed_up(tmp_path):
     assert calls == [1, 1]
 
 
-def test_stale_temporary_files_are_swept(cache):
+def test_temporary_files_of_killed_writers_are_swept(cache):
+    """A writer holds a lock on its temporary file; one nobody holds is debris (tests/test_files.py
+    covers the rule, this the cache's use of it)."""
     os.makedirs(cache.folder)
-    stale = os.path.join(cache.folder, ".tmp-abc.part")
-    fresh = os.path.join(cache.folder, ".tmp-def.part")
-    for path in (stale, fresh):
-        with open(path, "w") as file:
-            file.write("half an entry")
-    os.utime(stale, (0, 0))
+    left = os.path.join(cache.folder, ".eigendance-abc.part")
+    with open(left, "w") as file:
+        file.write("half an entry")
     cache.get("key", lambda: {"values": np.ones(1)})
-    assert not os.path.exists(stale) and os.path.exists(fresh)
+    assert not os.path.exists(left)
+    assert [name for name in os.listdir(cache.folder) if name.endswith(".part")] == []
+
+
+def test_the_clients_check_of_the_content_rebuilds_a_refused_entry(cache):
+    fetch, calls = counted({"values": np.arange(3.0)})
+    cache.get("key", fetch)
+    assert cache.get("key", fetch, valid=lambda found: True)["values"].tolist() == [0, 1, 2]
+    assert calls == [1]
+    cache.get("key", fetch, valid=lambda found: False)
+    assert calls == [1, 1] and os.path.exists(cache.path("key"))

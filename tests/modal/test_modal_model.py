@@ -168,6 +168,7 @@ class Bands:
 
     def __init__(self, values):
         self.values = np.asarray(values, dtype=float)
+        self.bands = self.values.shape[-1]
 
     def at(self, times):
         return np.broadcast_to(self.values, (*np.shape(times), self.values.shape[-1]))

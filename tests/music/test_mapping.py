@@ -102,9 +102,9 @@ def test_validation_errors_name_the_field(tmp_path, change, message):
 
 
 @pytest.mark.parametrize("text, message", [
-    ("{\"format\": ", "not valid JSON"),
+    ("{\"format\": ", "malformed JSON at line 1"),
     ("[1, 2]", "must be a JSON object"),
-    ("", "not valid JSON"),
+    ("", "malformed JSON"),
 ])
 def test_malformed_json_is_one_line_error(tmp_path, text, message):
     path = tmp_path / "bad.json"

@@ -255,7 +255,11 @@ def test_one_sample_and_empty_audio(tmp_path):
     spectrogram = Spectrogram.from_file(tmp_path / "one.wav")
     assert spectrogram.values.shape == (1, 64)
     assert 0 <= spectrogram.values.min() <= spectrogram.values.max() <= 1
-    assert Spectrogram.from_samples(np.zeros(0), SR).values.shape == (1, 64)
+    soundfile.write(tmp_path / "none.wav", np.zeros(0), SR)
+    with pytest.raises(EigendanceError, match="none.wav: holds no audio samples"):
+        Spectrogram.from_file(tmp_path / "none.wav")
+    with pytest.raises(EigendanceError, match="no audio samples"):
+        Spectrogram.from_samples(np.zeros(0), SR)
 
 
 def one_line_error(call):

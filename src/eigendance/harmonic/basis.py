@@ -14,16 +14,25 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, load_npz
-from eigendance.geometry import bounding_box_diagonal
+from eigendance.files import atomic_save_npz, checked_array, load_npz
+from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.deform import Deformer
-from eigendance.harmonic.eigensolver import SOLVER_VERSION, solve
+from eigendance.harmonic.eigensolver import RESIDUAL_TOLERANCE, SOLVER_VERSION, residuals, solve
+from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.laplacian import laplacian as build_laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.limits import check_memory, memory_budget
 
 FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
                "coefficients", "residual", "laplacian")
+# A cached solve is used only if its pairs pass the solver's own test with this slack
+# (‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, and Uᵀ M U = I within tol).
+CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
+# Bytes a solve of k harmonics on n vertices holds at its peak, per eigenvector value: the
+# eigenvectors, the solver's band blocks and their copies while stitching. Measured peaks: 18
+# (armadillo, k = 2376) to 21 (bunny, k = 1070); README's performance table.
+SOLVE_BYTES_PER_VALUE = 24
 
 
 @dataclass
@@ -105,24 +114,33 @@ class HarmonicBasis:
             raise InputError(f"{mesh.name}: {count} non-manifold edges (shared by more than two "
                              "triangles); the cotangent Laplacian needs a manifold mesh",
                              remedy={"laplacian": "robust"})
+        per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
+        fits = int(memory_budget() // per_harmonic)
+        check_memory(per_harmonic * k, f"{mesh.name}: {k} harmonics of {mesh.n} vertices",
+                     remedy={"k": fits} if 1 <= fits < k else None)
         timing = {"seconds": 0.0}
+        operators = {}
+
+        def stiffness_and_mass():
+            if not operators:
+                operators["L, M"] = build_laplacian(mesh.vertices, mesh.faces, laplacian)
+            return operators["L, M"]
 
         def solved() -> dict[str, np.ndarray]:
-            stiffness, mass = build_laplacian(mesh.vertices, mesh.faces, laplacian)
+            stiffness, mass = stiffness_and_mass()
             start = time.perf_counter()
             eigenvalues, eigenvectors = solve(stiffness, mass, k, solver, progress)
             timing["seconds"] = time.perf_counter() - start
             return {"eigenvalues": eigenvalues, "eigenvectors": eigenvectors, "mass": mass}
 
         if cache:
-            arrays = basis_cache().get(basis_key(mesh, k, laplacian, solver), solved)
+            arrays = basis_cache().get(basis_key(mesh, k, laplacian, solver), solved,
+                                       lambda found: eigenpairs_fit(*stiffness_and_mass(), k,
+                                                                    found))
         else:
             arrays = solved()
         eigenvalues, eigenvectors, mass = (arrays[name] for name in
                                            ("eigenvalues", "eigenvectors", "mass"))
-        if eigenvectors.shape != (mesh.n, k) or eigenvalues.shape != (k,) or \
-                mass.shape != (mesh.n,):
-            raise InputError(f"{mesh.name}: a cached basis does not fit the mesh")
         if progress is not None:
             progress(k)
         return cls.from_arrays(mesh, eigenvalues, eigenvectors, mass, laplacian,
@@ -178,16 +196,73 @@ class HarmonicBasis:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> HarmonicBasis:
-        """Read a basis file; a missing key or inconsistent shape raises InputError."""
+        """Read a basis file, checked: InputError naming the field for anything that is not a
+        basis (a missing field, a wrong type or shape, NaN, faces past the vertices, a
+        coefficient or remainder that does not follow from the vertices and eigenvectors)."""
+        path = os.fspath(path)
         data = load_npz(path, FORMAT_KEYS)
-        basis = cls(**{name: data[name] for name in FORMAT_KEYS})
-        basis.scale = float(basis.scale)
-        basis.laplacian = str(basis.laplacian)
-        n, k = basis.eigenvectors.shape
-        if (basis.vertices.shape != (n, 3) or basis.eigenvalues.shape != (k,)
-                or basis.coefficients.shape != (k, 3) or basis.mass.shape != (n,)):
-            raise InputError(f"{os.fspath(path)}: inconsistent array shapes in basis file")
+        fields = {"vertices": checked_array(data, "vertices", path, shape=(None, 3)),
+                  "eigenvalues": checked_array(data, "eigenvalues", path, shape=(None,))}
+        n, k = len(fields["vertices"]), len(fields["eigenvalues"])
+        if n < 3 or k < 1:
+            raise InputError(f"{path}: a basis needs at least 3 vertices and 1 harmonic, "
+                             f"has {n} and {k}")
+        for name, shape in (("center", (3,)), ("scale", ()), ("mass", (n,)),
+                            ("eigenvectors", (n, k)), ("coefficients", (k, 3)),
+                            ("residual", (n, 3))):
+            fields[name] = checked_array(data, name, path, shape=shape)
+        fields["faces"] = faces = checked_array(data, "faces", path, "int", (None, 3))
+        fields["laplacian"] = checked_array(data, "laplacian", path, "str")
+        fields["scale"] = float(fields["scale"])
+        if len(faces) == 0 or faces.min() < 0 or faces.max() >= n:
+            raise InputError(f"{path}: faces must be triangles of vertex indices 0 … {n - 1}")
+        if fields["laplacian"] not in LAPLACIANS:
+            raise InputError(f"{path}: laplacian must be one of {', '.join(LAPLACIANS)}")
+        if not fields["scale"] > 0 or not np.all(fields["mass"] > 0):
+            raise InputError(f"{path}: scale and mass must be positive")
+        basis = cls(**fields)
+        if not np.abs(basis.to_original(basis.vertices)).max() <= MAX_COORDINATE:
+            raise InputError(f"{path}: original coordinates (vertices·scale + center) beyond "
+                             f"±{MAX_COORDINATE:.0e}")
+        coefficients = basis.eigenvectors.T @ (basis.mass[:, None] * basis.vertices)
+        residual = basis.vertices - basis.eigenvectors @ coefficients
+        for name, expected in (("coefficients", coefficients), ("residual", residual)):
+            stored = getattr(basis, name)
+            if not np.abs(stored - expected).max() <= 1e-8 * (1 + np.abs(expected).max()):
+                raise InputError(f"{path}: {name} do not follow from the vertices, mass and "
+                                 "eigenvectors (not a basis file written by eigendance)")
         return basis
+
+
+def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
+    """Whether stored arrays are k M-orthonormal eigenpairs of L u = λ M u for these L, M.
+
+    Shapes, finite values, the same mass, ascending eigenvalues, uᵀ M u = 1 and every residual
+    within CACHE_TOLERANCE, and Uᵀ M U = I probed with one fixed random vector w: ‖Uᵀ M U w − w‖
+    is zero for the identity and, for any other matrix, almost surely not. O(nnz(L)·k).
+    """
+    eigenvalues, eigenvectors, stored_mass = (arrays.get(name) for name in
+                                              ("eigenvalues", "eigenvectors", "mass"))
+    n = len(mass)
+    if any(not isinstance(array, np.ndarray) or array.dtype != np.float64 for array in
+           (eigenvalues, eigenvectors, stored_mass)):
+        return False
+    if eigenvalues.shape != (k,) or eigenvectors.shape != (n, k) or stored_mass.shape != (n,):
+        return False
+    if not (np.isfinite(eigenvalues).all() and np.isfinite(eigenvectors).all()
+            and np.allclose(stored_mass, mass, rtol=1e-12, atol=0)):
+        return False
+    scale = max(1.0, float(np.abs(eigenvalues).max()))
+    if np.any(np.diff(eigenvalues) < -CACHE_TOLERANCE * scale):
+        return False
+    norms = np.einsum("ij,i,ij->j", eigenvectors, mass, eigenvectors)  # uᵀ M u
+    if not np.all(np.abs(norms - 1) <= CACHE_TOLERANCE):
+        return False
+    if not residuals(stiffness, mass, eigenvalues, eigenvectors).max() <= CACHE_TOLERANCE:
+        return False
+    probe = np.random.default_rng(0).standard_normal(k)
+    gram_probe = eigenvectors.T @ (mass * (eigenvectors @ probe))
+    return bool(np.linalg.norm(gram_probe - probe) <= CACHE_TOLERANCE * np.linalg.norm(probe))
 
 
 def basis_cache() -> DiskCache:

@@ -4,8 +4,10 @@
 `fetch()` and stores them (the shape of trimesh's `DiskCache.get`). The cache knows nothing of
 its clients: a key is any string that names everything the arrays depend on, and an entry is an
 .npz file holding the arrays, the key itself and a SHA-256 checksum of the arrays. An entry that
-cannot be read, that was stored under another key, or whose arrays do not match its checksum is
-discarded and computed again; a cache folder that cannot be written only costs the speed-up.
+cannot be read, that was stored under another key, whose arrays do not match its checksum, or
+that the client's own check of its content refuses, is discarded and computed again; a cache
+folder that cannot be written only costs the speed-up. Temporary files of killed writers are
+swept by `files.atomic_write`.
 
 Folder: $EIGENDANCE_CACHE_DIR, else the platform's user cache folder.
 """
@@ -15,7 +17,6 @@ from __future__ import annotations
 import hashlib
 import os
 import shutil
-import time
 import zipfile
 from collections.abc import Callable
 
@@ -26,7 +27,6 @@ from eigendance.errors import InputError
 from eigendance.files import atomic_save_npz
 
 KEY, CHECKSUM = "__key__", "__checksum__"
-STALE_SECONDS = 3600  # temporary files older than this were left by a killed process
 
 
 def cache_folder() -> str:
@@ -57,11 +57,18 @@ class DiskCache:
     def __contains__(self, key: str) -> bool:
         return self.load(key) is not None
 
-    def get(self, key: str, fetch: Callable[[], dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-        """The arrays stored under `key`, or `fetch()`'s, stored for the next call."""
+    def get(self, key: str, fetch: Callable[[], dict[str, np.ndarray]],
+            valid: Callable[[dict[str, np.ndarray]], bool] | None = None) -> dict[str, np.ndarray]:
+        """The arrays stored under `key`, or `fetch()`'s, stored for the next call.
+
+        valid: the client's check of a stored entry's content (an entry it refuses is computed
+        again), for entries that are intact but wrong: written by a bug or by hand.
+        """
         found = self.load(key)
         if found is not None:
-            return found
+            if valid is None or valid(found):
+                return found
+            self._discard(self.path(key))
         arrays = fetch()
         self.store(key, arrays)
         return arrays
@@ -84,7 +91,6 @@ class DiskCache:
 
     def store(self, key: str, arrays: dict[str, np.ndarray]) -> None:
         """Write an entry atomically; an unwritable cache folder is ignored."""
-        self._sweep()
         try:
             atomic_save_npz(self.path(key), **arrays, **{KEY: np.array(key),
                                                          CHECKSUM: np.array(checksum(arrays))})
@@ -99,19 +105,3 @@ class DiskCache:
                 os.unlink(path)
         except OSError:
             pass
-
-    def _sweep(self) -> None:
-        """Remove temporary files that a killed process left behind."""
-        try:
-            names = os.listdir(self.folder)
-        except OSError:
-            return
-        now = time.time()
-        for name in names:
-            if name.startswith(".tmp-") and name.endswith(".part"):
-                path = os.path.join(self.folder, name)
-                try:
-                    if now - os.path.getmtime(path) > STALE_SECONDS:
-                        os.unlink(path)
-                except OSError:
-                    pass

@@ -10,6 +10,7 @@ repaired raises `InputError` with a one-line message.
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -17,10 +18,16 @@ import scipy.sparse as sp
 
 from eigendance.errors import InputError, one_line
 from eigendance.files import check_readable, check_suffix
-from eigendance.geometry import bounding_box_diagonal, face_normals, weld
+from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal, face_normals, weld
 
 # A triangle whose area is below this fraction of the squared bounding-box diagonal is degenerate.
 ZERO_AREA = 1e-14
+# Smallest extent (largest side of the bounding box) of a model, in its own unit: positions are
+# written as float32, whose normal numbers end near 1e-38.
+MIN_EXTENT = 1e-30
+# An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
+# last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
+OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n]|$)", re.M)
 
 
 @dataclass
@@ -125,14 +132,44 @@ def load_mesh(path: str | os.PathLike) -> Mesh:
     check_suffix(path, "mesh")
     path = check_readable(path)
     name = os.path.basename(path)
+    if path.lower().endswith(".obj"):
+        _check_obj_indices(path, name)
     try:
         loaded = trimesh.load(path, force="mesh", process=False)
     except Exception as error:  # trimesh raises many types for malformed files
         raise InputError(f"{name}: cannot read the mesh ({one_line(error, 200)})") from None
     faces = getattr(loaded, "faces", None)
     if faces is None or len(faces) == 0:
+        if path.lower().endswith(".stl"):
+            _check_stl_length(path, name)
         raise InputError(f"{name}: the file holds no triangles (a point cloud or empty mesh)")
     return Mesh.from_arrays(loaded.vertices, faces, name=name)
+
+
+def _check_obj_indices(path: str, name: str) -> None:
+    """InputError for a face corner with vertex index 0, which OBJ does not have."""
+    try:
+        with open(path, "rb") as file:
+            found = OBJ_ZERO_INDEX.search(file.read())
+    except OSError as error:
+        raise InputError(f"{name}: cannot read ({error.strerror})") from None
+    if found:
+        line = found.string.count(b"\n", 0, found.start()) + 1
+        raise InputError(f"{name}: line {line}: a face uses vertex index 0 (OBJ counts vertices "
+                         "from 1)")
+
+
+def _check_stl_length(path: str, name: str) -> None:
+    """InputError for a binary STL shorter than the triangle count of its header says."""
+    size = os.path.getsize(path)
+    with open(path, "rb") as file:
+        head = file.read(84)
+    if len(head) < 84 or head.lstrip().startswith(b"solid") and b"facet" in head:
+        return
+    count = int.from_bytes(head[80:84], "little")
+    if 84 + 50 * count > size:
+        raise InputError(f"{name}: truncated binary STL: the header announces {count} "
+                         f"triangles, the file holds {(size - 84) // 50}")
 
 
 def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
@@ -151,6 +188,10 @@ def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
     if len(bad):
         raise InputError(f"{name}: {len(bad)} vertices have NaN or infinite coordinates "
                               f"(first: vertex {bad[0]})")
+    largest = float(np.abs(vertices).max())
+    if largest > MAX_COORDINATE:
+        raise InputError(f"{name}: coordinates reach {largest:.3g}; models must lie within "
+                         f"±{MAX_COORDINATE:.0e} (rescale it)")
     out = np.flatnonzero(((faces < 0) | (faces >= len(vertices))).any(axis=1))
     if len(out):
         raise InputError(f"{name}: {len(out)} triangles use vertex indices outside "
@@ -166,8 +207,14 @@ def _cleaned(vertices, faces, name):
     faces = first_to_unique[faces]
     duplicate_vertices = n_input - len(unique)
 
-    doubled_area = np.linalg.norm(face_normals(unique, faces), axis=1)
-    diagonal = bounding_box_diagonal(unique)
+    lower = unique.min(axis=0)
+    extent = float((unique.max(axis=0) - lower).max())
+    if not extent >= MIN_EXTENT:
+        raise InputError(f"{name}: the model spans {extent:.3g}, less than {MIN_EXTENT:.0e} "
+                         "(all vertices (nearly) coincide)")
+    scaled = (unique - lower) / extent  # areas relative to the diagonal do not depend on units
+    doubled_area = np.linalg.norm(face_normals(scaled, faces), axis=1)
+    diagonal = bounding_box_diagonal(scaled)
     repeated_index = (faces[:, 0] == faces[:, 1]) | (faces[:, 1] == faces[:, 2]) | (
         faces[:, 2] == faces[:, 0])
     degenerate = repeated_index | (doubled_area <= 2 * ZERO_AREA * diagonal**2)

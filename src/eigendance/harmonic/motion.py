@@ -19,8 +19,9 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from eigendance.files import atomic_write, load_npz
+from eigendance.files import OUT_OF_RANGE, atomic_write, check_finite, load_npz
 from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.limits import check_disk
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 
@@ -88,9 +89,13 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
 
     Frames are computed chunk by chunk and streamed into the .npy member of the zip, so neither
     the positions nor the file are ever held in memory; a writer thread stores (CRC + write) one
-    chunk while the next is computed. progress: optional callable(done frames).
+    chunk while the next is computed. progress: optional callable(done frames). A chunk that is
+    not finite (an amplification or a model too large for float32) ends the write with an
+    InputError, and no file is left.
     """
     times = frame_times(spectrogram.duration, fps)
+    check_disk(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
+               f"{len(times)} frames of {basis.n} vertices")
     header = {"descr": np.lib.format.dtype_to_descr(np.dtype("<f4")), "fortran_order": False,
               "shape": (len(times), basis.n, 3)}
 
@@ -105,6 +110,8 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
                 job = None
                 for first, positions in iter_positions(basis, spectrogram, mapping, times,
                                                        np.dtype("<f4")):
+                    check_finite(positions, f"{os.fspath(path)}: not written: positions",
+                                 OUT_OF_RANGE)
                     if job is not None:
                         job.result()  # frees the buffer the generator fills next
                     job = writer.submit(member.write, memoryview(positions).cast("B"))

@@ -21,7 +21,7 @@ from eigendance.modal.skeleton import (
     Body,
     Joint,
     Skeleton,
-    automatic_stiffness,
+    set_automatic_stiffness,
 )
 
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
@@ -46,8 +46,10 @@ class SkinnedRig:
 
 
 def skeleton_from_gltf(path: str | os.PathLike,
-                       stiffness_frequency: float = DEFAULT_JOINT_FREQUENCY) -> Skeleton:
-    """Read the skins of a glTF 2.0 file (.glb, .gltf) as a skeleton with a skinned mesh.
+                       stiffness_frequency: float = DEFAULT_JOINT_FREQUENCY,
+                       name: str | None = None) -> Skeleton:
+    """Read the skins of a glTF 2.0 file (.glb, .gltf) as a skeleton with a skinned mesh; messages
+    call it `name` (default: the file's name).
 
     - Rest pose: the file's node pose. Joint j sits at the origin of its world matrix W_j;
       skinned vertices are placed at Σ_j w_j W_j·IBM_j·x (the bind pose, x itself when the
@@ -60,9 +62,11 @@ def skeleton_from_gltf(path: str | os.PathLike,
       frequencies do not depend on it with the default stiffness).
     - Joints: one spherical joint (free ω, natural for characters) between each joint node
       and its parent joint node, at the child's position; stiffness per rotation row from
-      `automatic_stiffness`, i.e. every joint alone would swing its lighter body at
-      `stiffness_frequency` Hz (1 Hz). Other choices: change `joints` (type,
-      stiffness) of the returned skeleton in code; the skin stays valid.
+      `skeleton.automatic_stiffness`: each of the two parts a joint joins (for a limb: the
+      limb from that joint outward, and the rest) swings about it like a pendulum of its own
+      length under one gravity, at `stiffness_frequency` Hz (1 Hz) when its centre lies a
+      quarter of the rig's size from the joint. Other choices: `Skeleton.with_stiffness`, or
+      change `joints` (type, stiffness) of the returned skeleton in code; the skin stays valid.
     - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
       skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
       (vertices with no weight go to the nearest body); seam vertices (same position)
@@ -70,6 +74,15 @@ def skeleton_from_gltf(path: str | os.PathLike,
     """
     rig = read_skins(path)
     return _skeleton_from_rig(rig, os.path.basename(os.fspath(path)), stiffness_frequency)
+
+
+def has_skin(path: str | os.PathLike) -> bool:
+    """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable."""
+    try:
+        document = pygltflib.GLTF2().load(os.fspath(path))
+    except Exception:  # noqa: BLE001 - pygltflib raises many kinds; the mesh reader says why
+        return False
+    return bool(document is not None and document.skins)
 
 
 def read_skins(path: str | os.PathLike) -> SkinnedRig:
@@ -358,12 +371,10 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     for child, parent in enumerate(rig.parents):
         if parent < 0:
             continue
-        joint = Joint(f"{rig.names[parent]}-{rig.names[child]}", "spherical", (parent, child),
-                      positions[child].copy(), np.zeros(3))
-        joint.stiffness = automatic_stiffness(joint, bodies, stiffness_frequency)
-        joints.append(joint)
-    attached = _attach_separate_trees(bodies, joints, rig, descendants, weights,
-                                      stiffness_frequency)
+        joints.append(Joint(f"{rig.names[parent]}-{rig.names[child]}", "spherical",
+                            (parent, child), positions[child].copy(), np.zeros(3)))
+    attached = _attach_separate_trees(bodies, joints, rig, descendants, weights)
+    set_automatic_stiffness(bodies, joints, frequency=stiffness_frequency)
     notes = list(rig.notes)
     if attached:
         notes.append(f"attached {attached} separate joint trees to their nearest body")
@@ -381,7 +392,7 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     return skeleton
 
 
-def _attach_separate_trees(bodies, joints, rig, descendants, weights, frequency) -> int:
+def _attach_separate_trees(bodies, joints, rig, descendants, weights) -> int:
     """Join the roots of separate joint trees (IK targets, flat hierarchies such as the WebXR
     hand) into one tree, Prim-style: repeatedly attach the free root nearest to a body already
     in the tree with a spherical joint at the root's position. Returns how many were attached."""
@@ -407,10 +418,8 @@ def _attach_separate_trees(bodies, joints, rig, descendants, weights, frequency)
             if best is None or distance[nearest] < best[0]:
                 best = (distance[nearest], root, int(members[nearest]))
         _, root, host = best
-        joint = Joint(f"{bodies[host].name}-{bodies[root].name}", "spherical", (host, root),
-                      bodies[root].start.copy(), np.zeros(3))
-        joint.stiffness = automatic_stiffness(joint, bodies, frequency)
-        joints.append(joint)
+        joints.append(Joint(f"{bodies[host].name}-{bodies[root].name}", "spherical",
+                            (host, root), bodies[root].start.copy(), np.zeros(3)))
         waiting.remove(root)
         in_tree.update(_preorder(children, [0 if j != root else -1
                                             for j in range(len(bodies))]))

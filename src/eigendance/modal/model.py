@@ -98,7 +98,10 @@ class ModalModel:
 
     frequencies: (nm,) Hz ascending, vibration modes only. modes: (6·n_b, nm), M-orthonormal,
     body b's twist [θ; x] (body frame) in rows 6b … 6b+5. body_centers (n_b, 3) and
-    body_rotations (n_b, 3, 3): the rest pose, needed to move bodies and skin.
+    body_rotations (n_b, 3, 3): the rest pose, needed to move bodies and skin. joint_bodies
+    (n_j, 2) and joint_positions (n_j, 3): the two bodies of every joint and where it is;
+    size: the skeleton's extent (`Skeleton.size`), the length that turns translations into
+    angles (docs/design.md#modal-motion).
 
     Example
     -------
@@ -118,6 +121,21 @@ class ModalModel:
     body_centers: np.ndarray
     body_rotations: np.ndarray
     mass: np.ndarray | None = None  # diagonal of M, (6·n_b,)
+    joint_bodies: np.ndarray | None = None  # (n_j, 2) int64
+    joint_positions: np.ndarray | None = None  # (n_j, 3)
+    size: float | None = None
+
+    def __post_init__(self):
+        if self.joint_bodies is None:
+            self.joint_bodies = np.zeros((0, 2), dtype=np.int64)
+        self.joint_bodies = np.asarray(self.joint_bodies, dtype=np.int64).reshape(-1, 2)
+        if self.joint_positions is None:  # a modal file without them: between the centres
+            self.joint_positions = self.body_centers[self.joint_bodies].mean(axis=1)
+        self.joint_positions = np.asarray(self.joint_positions, dtype=float).reshape(-1, 3)
+        if self.size is None:
+            extent = self.body_centers.max(axis=0) - self.body_centers.min(axis=0)
+            self.size = float(np.linalg.norm(extent)) or 1.0
+        self.size = float(self.size)
 
     @property
     def n_modes(self) -> int:
@@ -171,7 +189,10 @@ class ModalModel:
         modes = basis @ vectors[:, rigid:]
         frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
         model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
-                    skeleton.body_names, skeleton.centers, skeleton.rotations, mass)
+                    skeleton.body_names, skeleton.centers, skeleton.rotations, mass,
+                    skeleton.joint_pairs,
+                    np.array([joint.position for joint in skeleton.joints]).reshape(-1, 3),
+                    skeleton.size)
         if keep_matrices:
             model.matrices = {"G": constraints, "N": basis, "R": deflection, "K": stiffnesses,
                               "rigid": basis @ vectors[:, :rigid]}
@@ -194,7 +215,9 @@ class ModalModel:
             constraint_rank=np.int64(self.constraint_rank),
             body_names=np.array(self.body_names, dtype=str), body_centers=self.body_centers,
             body_rotations=self.body_rotations,
-            mass=self.mass if self.mass is not None else np.ones(self.modes.shape[0]))
+            mass=self.mass if self.mass is not None else np.ones(self.modes.shape[0]),
+            joint_bodies=self.joint_bodies, joint_positions=self.joint_positions,
+            size=np.float64(self.size))
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> ModalModel:
@@ -209,6 +232,13 @@ class ModalModel:
                 modes.shape[1] != len(data["frequencies"]):
             raise InputError(f"{os.fspath(path)}: modes and frequencies do not match "
                              f"{n_bodies} bodies")
+        joint_bodies = data.get("joint_bodies")
+        if joint_bodies is not None and (joint_bodies.size and (
+                joint_bodies.min() < 0 or joint_bodies.max() >= n_bodies)):
+            raise InputError(f"{os.fspath(path)}: joint_bodies names a body out of range")
+        size = data.get("size")
         return cls(np.asarray(data["frequencies"], dtype=float), modes, int(data["rigid_modes"]),
                    int(data["nullspace_dim"]), int(data["constraint_rows"]),
-                   int(data["constraint_rank"]), names, centers, rotations, data.get("mass"))
+                   int(data["constraint_rank"]), names, centers, rotations, data.get("mass"),
+                   joint_bodies, data.get("joint_positions"),
+                   None if size is None else float(size))

@@ -3,53 +3,49 @@
 
 The coefficient of vibration mode κ at time t (thesis 6-2 with a time scale s and an offset b):
 
-    c_κ(t) = φ_κ(t) · μ_κ · sin(2π ν_κ s t + γ_κ),   φ_κ(t) = a(κ) · Σ_{ξ: κ(ξ)=κ} g̃(ξ, t) + b,
+    c_κ(t) = φ_κ(t) · μ_κ · sin(2π ν_κ s t + γ_κ),   φ_κ(t) = gain·a(κ) · Σ_{ξ: κ(ξ)=κ} g̃(ξ, t) + b,
 
-where φ is the same filter as the harmonics' (`Mapping.filter` over the selected modes instead
-of harmonics, from the same `Spectrogram`). b = 0 makes silence the rest pose. Body b's twist
-p̂_b = Σ_κ c_κ η_κ^b = [θ; x] in its body frame moves it exactly: rotation exp([θ]×) about its
-centre of mass, then translation x.
+where φ is the same filter as the harmonics' (`Mapping.filter`, from the same `Spectrogram`)
+over the palette's selected modes instead of harmonics, and μ, γ, s come from the palette
+(`eigendance.modal.palette`). b = 0 (the default) makes silence the rest pose. Modes outside
+the palette have c = 0. `rig_coefficients` is the one definition that the command line, the
+web page and the exports reproduce. Body b's twist p̂_b = Σ_κ c_κ η_κ^b = [θ; x] in its body
+frame moves it exactly: rotation exp([θ]×) about its centre of mass, then translation x.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import atomic_save_npz
 from eigendance.modal.model import ModalModel
+from eigendance.modal.palette import (
+    Palette,
+    mode_reach,
+    resolve_palette,
+    single_mode_amplitudes,
+)
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
-from eigendance.music.mapping import Mapping
+from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 
 FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
-DEFAULT_MODES = 8  # modes that move when none are chosen: the lowest ones
-
-
-def default_amplitudes(model: ModalModel, angle: float = 0.3,
-                       size: float | None = None) -> np.ndarray:
-    """μ per mode so that its largest body rotation is at most `angle` radians and its
-    largest body translation at most angle·size (size: the rest pose's extent)."""
-    twists = model.modes.reshape(model.n_bodies, 6, -1)
-    rotation = np.linalg.norm(twists[:, :3], axis=1).max(axis=0)
-    translation = np.linalg.norm(twists[:, 3:], axis=1).max(axis=0)
-    if size is None:
-        extent = model.body_centers.max(axis=0) - model.body_centers.min(axis=0)
-        size = float(np.linalg.norm(extent)) or 1.0
-    reference = np.maximum(rotation, translation / size)
-    return angle / np.where(reference > 0, reference, 1)
 
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
                       time_scale: float = 1.0, drive=None, modes=None) -> np.ndarray:
-    """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ), shape (T, nm).
+    """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ), shape (T, nm): the kernel of the motion.
 
-    modes: indices of the modes that move (others get c = 0); default all. drive: φ,
-    shape (T, nm) (or (T, len(modes)) when `modes` is given), default 1.
+    amplitudes: μ per mode (nm,) in coefficient units, default each mode alone at its default
+    bend (`palette.single_mode_amplitudes`); phases: γ (nm,), default 0. modes: indices of the
+    modes that move (others get c = 0); default all. drive: φ, shape (T, nm) (or
+    (T, len(modes)) when `modes` is given), default 1.
     """
     times = np.asarray(times, dtype=float).reshape(-1)
     count = model.n_modes
@@ -57,7 +53,7 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
     if selected.size and (selected.min() < 0 or selected.max() >= count):
         raise InputError(f"mode index out of range: the model has {count} vibration modes "
                          f"(0 … {count - 1})")
-    amplitudes = default_amplitudes(model) if amplitudes is None else \
+    amplitudes = single_mode_amplitudes(model) / mode_reach(model) if amplitudes is None else \
         np.broadcast_to(np.asarray(amplitudes, dtype=float), (count,))
     phases = np.zeros(count) if phases is None else \
         np.broadcast_to(np.asarray(phases, dtype=float), (count,))
@@ -75,6 +71,53 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
         values = values * drive
     result[:, selected] = values
     return result
+
+
+def mapping_palette(model: ModalModel, mapping: Mapping | None) -> Palette:
+    """The palette a mapping plays on this model: its `modes`, completed by the default rule."""
+    return resolve_palette(model, mapping.modes if mapping is not None else None)
+
+
+def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
+                     mapping: Mapping | None, times) -> np.ndarray:
+    """Mode coefficients (T, nm) of a rig dancing to a song (docs/design.md#modal-motion).
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    spectrogram : the song's g̃, or None for steady motion (φ ≡ 1: music off).
+    mapping : transfer, amplification, gain, smoothing, offset b and palette (`modes`); None
+        is `default_mapping(spectrogram, k)` with the default palette.
+    times : (T,) seconds.
+
+    Returns
+    -------
+    c (T, nm): for the palette's selected modes κ_0 < κ_1 < … < κ_{k−1} (the mapping's k
+    targets), c_{κ_ν}(t) = φ_ν(t)·μ_ν·sin(2π ν_{κ_ν} s t + γ_ν) with φ = `mode_drive`; 0 for
+    the other modes.
+
+    Example
+    -------
+    >>> from eigendance.modal.sample_rigs import sample_rig
+    >>> model = ModalModel.from_skeleton(sample_rig("loop8"))
+    >>> c = rig_coefficients(model, None, None, np.linspace(0, 1, 5))
+    >>> c.shape, bool(np.all(c[0] == 0))          # sin(γ) with γ_0 = 0 … and the others not 0
+    ((5, 5), False)
+    """
+    times = np.asarray(times, dtype=float).reshape(-1)
+    palette = mapping_palette(model, mapping)
+    k = len(palette.selected)
+    if spectrogram is None:
+        drive = np.ones((times.size, k))
+    else:
+        mapping = mapping if mapping is not None else default_mapping(spectrogram, k)
+        drive = mode_drive(mapping, spectrogram, times, k)
+    amplitudes = np.zeros(model.n_modes)
+    phases = np.zeros(model.n_modes)
+    amplitudes[palette.selected] = palette.coefficient_amplitudes(model)
+    phases[palette.selected] = palette.phases
+    return mode_coefficients(model, times, amplitudes, phases, palette.time_scale, drive,
+                             palette.selected)
 
 
 def twists(model: ModalModel, coefficients) -> np.ndarray:
@@ -118,20 +161,85 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
     return Mapping(transfer, np.array([n_modes / bands]), name="bands in order")
 
 
+def song_calibrated(mapping: Mapping, spectrogram: Spectrogram, n_modes: int) -> Mapping:
+    """The mapping with its amplification scaled so that the song's loudest frame drives the
+    most driven of n_modes targets at |φ − b| = 1 (docs/design.md#modal-motion).
+
+    Unchanged when the song never reaches any target (silence, or a transfer and an
+    amplification that never meet).
+    """
+    music = mode_drive(mapping, spectrogram, spectrogram.times, n_modes, offset=0.0)
+    loudest = float(np.abs(music).max(initial=0.0))
+    if not loudest > 1e-12:
+        return mapping
+    return mapping.with_genes(mapping.transfer, mapping.amplification / loudest, mapping.seed,
+                              mapping.name)
+
+
+def default_mapping(spectrogram: Spectrogram, n_modes: int) -> Mapping:
+    """`band_mapping` calibrated to the song (`song_calibrated`): what plays when no mapping
+    is given."""
+    return song_calibrated(band_mapping(spectrogram.bands, n_modes), spectrogram, n_modes)
+
+
+def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
+                mapping: Mapping | None = None, selected=None, amplitude: float | None = None,
+                time_scale: float | None = None, offset: float | None = None,
+                bands: int = 64) -> Mapping:
+    """The complete mapping a rig plays, its palette resolved, with a person's overrides.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    spectrogram : the song (None: no song; then the mapping's filter has `bands` bands).
+    mapping : what to play; None is the default mapping for the song (`default_mapping`).
+    selected : mode indices that move instead of the mapping's (their amplitudes and phases
+        then follow the default rule).
+    amplitude : every selected mode's largest body rotation at φ = 1, radians.
+    time_scale : s.
+    offset : b.
+
+    Returns
+    -------
+    Mapping whose `modes` holds the resolved palette (`resolve_palette`), ready for
+    `rig_coefficients`; the command line, the exports and the page play the same.
+    """
+    settings = mapping.modes if mapping is not None and mapping.modes is not None \
+        else ModeSettings()
+    if selected is not None:
+        settings = ModeSettings(np.asarray(selected, dtype=np.int64), None, None,
+                                settings.time_scale)
+    if amplitude is not None:
+        count = len(resolve_palette(model, settings).selected)
+        settings = replace(settings, amplitudes=np.full(count, float(amplitude)))
+    if time_scale is not None:
+        settings = replace(settings, time_scale=float(time_scale))
+    palette = resolve_palette(model, settings)
+    if mapping is None:
+        mapping = band_mapping(bands, len(palette.selected)) if spectrogram is None else \
+            default_mapping(spectrogram, len(palette.selected))
+    return replace(mapping, modes=palette.to_settings(),
+                   offset=mapping.offset if offset is None else float(offset))
+
+
 def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
                offset: float | None = None) -> np.ndarray:
     """φ (T, n_modes) = gain·a·Σ g̃ + b: the mapping's filter over the modes at `times`.
 
     b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
     """
+    if mapping.bands != spectrogram.bands:
+        raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands, the song's "
+                         f"spectrogram {spectrogram.bands}; analyse the song into "
+                         f"{mapping.bands} bands")
     values = spectrogram.smoothed(mapping.smoothing).at(np.asarray(times, dtype=float))
     return mapping.filter(values, n_modes, mapping.offset if offset is None else offset)
 
 
-def parse_modes(text: str | None, n_modes: int) -> np.ndarray:
-    """'0,2,5-8' → indices; None → the lowest min(DEFAULT_MODES, n_modes) modes."""
+def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:
+    """'0,2,5-8' → sorted indices; None → None (the palette's default selection)."""
     if text is None:
-        return np.arange(min(DEFAULT_MODES, n_modes))
+        return None
     indices = []
     try:
         for part in text.split(","):
@@ -144,6 +252,8 @@ def parse_modes(text: str | None, n_modes: int) -> np.ndarray:
                 indices.extend(range(low, high + 1))
             elif part:
                 indices.append(int(part))
+    except InputError:
+        raise
     except ValueError:
         raise InputError(f"modes {text!r}: expected indices like 0,2,5-8") from None
     bad = [i for i in indices if not 0 <= i < n_modes]
@@ -155,18 +265,17 @@ def parse_modes(text: str | None, n_modes: int) -> np.ndarray:
     return np.array(sorted(set(indices)))
 
 
-def animate_rig(skeleton: Skeleton, model: ModalModel, times, modes, amplitude: float = 0.3,
-                time_scale: float = 1.0, drive=None, skinning: str = "modal",
-                progress=None) -> dict:
+def animate_rig(skeleton: Skeleton, model: ModalModel, times, coefficients,
+                palette: Palette, skinning: str = "modal", progress=None) -> dict:
     """Arrays of the rig animation file (docs/design.md#animation-file).
 
-    times, faces, float32 positions (T, n, 3), body rotations/centres/transforms per frame,
-    the coefficients and the modes used. drive: φ (T, len(modes)) or None (φ ≡ 1).
+    times (T,), faces, float32 positions (T, n, 3) skinned by `skinning` ("modal": ModalSkin,
+    first order, as the page; "lbs": linear blend skinning of the exact body transforms), body
+    rotations/centres/transforms per frame, the coefficients (T, nm) (`rig_coefficients`), the
+    frequencies and the palette that made them.
     """
     times = np.asarray(times, dtype=float)
-    amplitudes = default_amplitudes(model, amplitude, size=skeleton.size)
-    phases = np.linspace(0, math.pi, model.n_modes, endpoint=False)
-    coefficients = mode_coefficients(model, times, amplitudes, phases, time_scale, drive, modes)
+    coefficients = np.asarray(coefficients, dtype=float)
     rotations, centers = body_poses(model, coefficients)
     transforms = body_transforms(model, poses=(rotations, centers))
     positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
@@ -186,7 +295,8 @@ def animate_rig(skeleton: Skeleton, model: ModalModel, times, modes, amplitude: 
             "body_names": np.array(model.body_names, dtype=str),
             "body_rotations": rotations, "body_centers": centers,
             "body_transforms": transforms.astype(np.float32), "coefficients": coefficients,
-            "modes": np.asarray(modes, dtype=np.int64),
+            "modes": palette.selected.astype(np.int64), "amplitudes": palette.amplitudes,
+            "phases": palette.phases, "time_scale": np.float64(palette.time_scale),
             "frequencies": model.frequencies, "skinning": np.array(skinning)}
 
 

@@ -1,24 +1,27 @@
-"""Rigs by name or file: built-in rigs made by code, skeleton JSON and glTF skins
-(docs/design.md#skeleton).
+"""Rigs by name or file: built-in rigs, skeleton JSON and glTF skins (docs/design.md#skeleton).
 
-The built-in rigs are the thesis's planar loops ("laços", Fig. 4.10) and a small chain. Every
-rig carries a tube skin mesh (rings of vertices around each body) with skin weights that blend
-into the neighbouring body near each joint, so it can be animated and skinned directly.
+The built-in rigs are the thesis's planar loops ("laços", Fig. 4.10: symmetric loops of 4 and
+16 bodies, the non-symmetric loop of 8), a small chain, all made by code with a tube skin mesh
+(rings of vertices around each body, weights blending into the neighbouring body near each
+joint), and a hand (the WebXR generic left hand, a glTF skin in the package's data folder,
+MIT licence).
 """
 
 from __future__ import annotations
 
 import math
 import os
+from importlib import resources
 
 import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import check_readable, suffix_of
 from eigendance.modal.gltf_skin import skeleton_from_gltf
-from eigendance.modal.skeleton import Body, Joint, Skeleton, automatic_stiffness
+from eigendance.modal.skeleton import Body, Joint, Skeleton, set_automatic_stiffness
 
-SAMPLE_RIGS = ("loop4", "loop8", "loop16", "chain")
+SAMPLE_RIGS = ("loop4", "loop8", "loop16", "chain", "hand")
+HAND_FILE = "generic-hand_left.glb"  # in the package's data folder
 
 
 def loop_points(n_bodies: int, symmetric: bool = True) -> np.ndarray:
@@ -43,10 +46,10 @@ def planar_loop(n_bodies: int, symmetric: bool = True, radius: float = 0.05,
     joints = []
     for index in range(n_bodies):
         i, l = index, (index + 1) % n_bodies
-        joint = Joint(f"j{index}", "revolute", (i, l), corners[l].copy(), np.zeros(1))
-        joint.stiffness = automatic_stiffness(joint, bodies) if stiffness is None \
-            else np.array([float(stiffness)])
-        joints.append(joint)
+        joints.append(Joint(f"j{index}", "revolute", (i, l), corners[l].copy(),
+                            np.array([float(stiffness or 0.0)])))
+    if stiffness is None:
+        set_automatic_stiffness(bodies, joints)
     name = f"loop{n_bodies}" + ("" if symmetric else "-asymmetric")
     skeleton = Skeleton(bodies, joints, name=name)
     if skin:
@@ -68,10 +71,10 @@ def open_chain(n_bodies: int = 3, joint_type: str = "spherical", radius: float =
     for index in range(n_bodies - 1):
         joint = Joint(f"j{index}", joint_type, (index, index + 1), points[index + 1].copy(),
                       np.zeros(0))
-        free = len(joint.free_rows)
-        joint.stiffness = automatic_stiffness(joint, bodies) if stiffness is None \
-            else np.full(free, float(stiffness))
+        joint.stiffness = np.full(len(joint.free_rows), float(stiffness or 0.0))
         joints.append(joint)
+    if stiffness is None:
+        set_automatic_stiffness(bodies, joints)
     skeleton = Skeleton(bodies, joints, name=f"chain{n_bodies}")
     if skin:
         add_tube_skin(skeleton)
@@ -88,6 +91,9 @@ def sample_rig(name: str) -> Skeleton:
         return planar_loop(16)
     if name == "chain":
         return open_chain(3)
+    if name == "hand":
+        with resources.as_file(resources.files("eigendance") / "data" / HAND_FILE) as path:
+            return skeleton_from_gltf(path, name="hand")
     raise InputError(f"unknown sample rig {name!r} (use {', '.join(SAMPLE_RIGS)})")
 
 
@@ -135,13 +141,14 @@ def add_tube_skin(skeleton: Skeleton, rings: int = 8, around: int = 12,
     skeleton.weights = np.concatenate(weights)
 
 
-def load_rig(rig: str | os.PathLike) -> Skeleton:
+def load_rig(rig: str | os.PathLike, name: str | None = None) -> Skeleton:
     """A rig with its skin, from a file or by name.
 
     Parameters
     ----------
     rig : a skeleton JSON (.json), a glTF 2.0 skin (.glb, .gltf), or the name of a built-in
         rig (SAMPLE_RIGS), unless a file of that name exists.
+    name : what messages and the skeleton call a file (default: the file's name).
 
     Returns
     -------
@@ -161,8 +168,8 @@ def load_rig(rig: str | os.PathLike) -> Skeleton:
         raise InputError(f"{rig}: unknown rig format {suffix!r} (use .json, .glb or .gltf, or "
                          f"a built-in rig: {', '.join(SAMPLE_RIGS)})")
     check_readable(rig)
-    skeleton = skeleton_from_gltf(rig) if suffix in (".glb", ".gltf") else \
-        Skeleton.from_json(rig)
+    skeleton = skeleton_from_gltf(rig, name=name) if suffix in (".glb", ".gltf") else \
+        Skeleton.from_json(rig, name)
     if skeleton.vertices is None:
         add_tube_skin(skeleton)
     return skeleton

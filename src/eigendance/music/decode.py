@@ -1,7 +1,10 @@
 """Decode music to mono PCM in bounded memory (docs/design.md#decoding).
 
-WAV, FLAC, OGG (Vorbis/Opus), MP3 and AIFF go through soundfile (libsndfile) first; anything
-else (M4A/AAC, Opus in WebM/MKV, …), and any file libsndfile refuses, through PyAV (FFmpeg).
+WAV, FLAC, OGG (Vorbis/Opus) and AIFF go through soundfile (libsndfile) first; anything else
+(MP3, M4A/AAC, Opus in WebM/MKV, …), and any file libsndfile refuses, through PyAV (FFmpeg).
+MP3 skips libsndfile, and so does a file whose first bytes are not those of the containers
+libsndfile is used for (an MP3 named .wav): libsndfile's MP3 decoder (libmpg123) prints notes
+about damaged streams straight onto the terminal, where PyAV decodes the same samples silently.
 Channels are mixed to mono by their mean (PyAV's mono resampler would sum them at −3 dB
 instead); the file's sample rate is kept. Files are read in chunks, so a one-hour track needs
 no more memory than a short one.
@@ -19,7 +22,9 @@ from eigendance.errors import InputError, one_line
 from eigendance.files import check_readable, suffix_of
 
 # Read by libsndfile first; the rest go straight to PyAV.
-SOUNDFILE_SUFFIXES = (".wav", ".wave", ".flac", ".ogg", ".oga", ".mp3", ".aif", ".aiff")
+SOUNDFILE_SUFFIXES = (".wav", ".wave", ".flac", ".ogg", ".oga", ".aif", ".aiff")
+# The first four bytes of those containers: RIFF/RIFX/RF64/BW64 WAV, FLAC, Ogg, AIFF.
+SOUNDFILE_MAGIC = (b"RIFF", b"RIFX", b"RF64", b"BW64", b"fLaC", b"OggS", b"FORM")
 CHUNK_SAMPLES = 1 << 18  # samples per decoded chunk (per channel): ≈ 6 s at 44.1 kHz
 _INTEGER_SCALE = {"u8": 128.0, "s16": 32768.0, "s32": 2147483648.0, "s64": 9223372036854775808.0}
 
@@ -66,6 +71,9 @@ def mono(samples) -> np.ndarray:
 
 def _open_soundfile(path: str):
     try:
+        with open(path, "rb") as head:
+            if head.read(4) not in SOUNDFILE_MAGIC:
+                return None  # not a container libsndfile is used for: PyAV decides
         file = soundfile.SoundFile(path)
     except Exception:  # libsndfile refuses it: let FFmpeg try
         return None

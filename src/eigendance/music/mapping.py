@@ -19,8 +19,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from eigendance.errors import InputError, one_line
-from eigendance.files import atomic_write
+from eigendance.errors import InputError
+from eigendance.files import atomic_write, finite_number, read_json
 
 FORMAT = "eigendance.mapping"
 VERSION = 2  # written; version 1 (transfer, amplification, seed) is still read
@@ -227,20 +227,7 @@ class Mapping:
     @classmethod
     def load(cls, path: str | os.PathLike) -> Mapping:
         """Read a mapping file (any readable version)."""
-        path = os.fspath(path)
-        name = os.path.basename(path)
-        try:
-            with open(path, encoding="utf-8") as file:
-                data = json.load(file)
-        except FileNotFoundError:
-            raise InputError(f"{path}: no such file", status=404) from None
-        except (UnicodeDecodeError, json.JSONDecodeError) as error:
-            raise InputError(f"{name}: not valid JSON ({one_line(error)})") from None
-        except RecursionError:
-            raise InputError(f"{name}: the JSON is nested too deeply") from None
-        except OSError as error:
-            raise InputError(f"{path}: cannot read ({error.strerror})") from None
-        return cls.from_json(data, name)
+        return cls.from_json(read_json(path), os.path.basename(os.fspath(path)))
 
 
 def _listed(array, kind=float) -> list | None:
@@ -259,8 +246,7 @@ def _shown(value) -> str:
 def _number(value, key: str, name: str, optional: bool = False) -> float | None:
     if value is None and optional:
         return None
-    if isinstance(value, bool) or not isinstance(value, int | float) or \
-            not np.isfinite(float(value)):
+    if isinstance(value, bool) or not isinstance(value, int | float) or not finite_number(value):
         raise InputError(f"{name}: {key} must be a finite number, got {_shown(value)}")
     return float(value)
 
@@ -271,7 +257,7 @@ def _number_list(value, field_name: str, name: str) -> list:
     for index, x in enumerate(value):
         if not isinstance(x, int | float) or isinstance(x, bool):
             raise InputError(f"{name}: {field_name}[{index}] is not a number ({_shown(x)})")
-        if not np.isfinite(float(x)):
+        if not finite_number(x):
             raise InputError(f"{name}: {field_name}[{index}] is not finite ({_shown(x)})")
     return value
 

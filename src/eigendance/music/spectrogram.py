@@ -27,7 +27,7 @@ import numpy as np
 from scipy.fft import rfft
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, atomic_write, load_npz
+from eigendance.files import atomic_save_npz, atomic_write, checked_array, load_npz
 from eigendance.music.decode import CHUNK_SAMPLES, mono, open_audio
 
 FORMAT_KEYS = ("times", "band_edges", "values", "rate", "sample_rate", "duration")
@@ -35,6 +35,15 @@ FRAME_BATCH = 1024  # analysis frames per batched FFT
 # Defaults of docs/design.md#spectrogram: frames per second, bands, band range (Hz), loudness
 # floor (dB) and smoothing time constant (s).
 RATE, BANDS, FMIN, FMAX, FLOOR_DB, SMOOTHING = 100.0, 64, 20.0, 16000.0, -80.0, 0.08
+# Bounds that keep every allocation proportional to the audio, not to a header or an option:
+# the window grows with the sample rate, the result with frames × bands, frame times with
+# duration × frames per second.
+MAX_SAMPLE_RATE = 1_000_000  # Hz
+MAX_VALUES = 1 << 28  # T × B float32 values: 1 GiB (an hour at 100 frames/s × 64 bands: 23 M)
+MAX_FRAMES = 10_000_000  # animation frames: 46 hours at 60 frames/s
+# Samples beyond ±MAX_SAMPLE (full scale is ±1: +120 dB) are clipped there, so float32 frames
+# and their spectra cannot overflow; loudness saturates at full scale long before.
+MAX_SAMPLE = 1e6
 
 
 def window_length(sample_rate: float) -> int:
@@ -94,18 +103,21 @@ class _Analyser:
     """Streaming spectrogram: feed mono chunks, get smoothed band values chunk by chunk."""
 
     def __init__(self, sample_rate, rate=RATE, bands=BANDS, fmin=FMIN, fmax=FMAX,
-                 floor_db=FLOOR_DB, smoothing=SMOOTHING):
-        if not (isinstance(sample_rate, int | np.integer) and sample_rate > 0):
-            raise InputError(f"sample rate must be a positive integer, got {sample_rate}")
+                 floor_db=FLOOR_DB, smoothing=SMOOTHING, name="audio"):
+        self.name = name
+        if not (isinstance(sample_rate, int | np.integer) and 0 < sample_rate <= MAX_SAMPLE_RATE):
+            raise InputError(f"{name}: the sample rate must be an integer from 1 to "
+                             f"{MAX_SAMPLE_RATE} Hz, got {sample_rate}")
         if not (np.isfinite(rate) and rate > 0):
             raise InputError(f"the frame rate must be a positive number of frames per second, "
                              f"got {rate}")
         if not (isinstance(bands, int | np.integer) and bands >= 1):
             raise InputError(f"the number of bands must be a positive integer, got {bands}")
-        top = min(fmax, sample_rate / 2)
-        if not (0 < fmin < top):
-            raise InputError(f"the band range {fmin:g}–{top:g} Hz is empty at a sample "
-                             f"rate of {sample_rate} Hz")
+        if not (np.isfinite(fmin) and np.isfinite(fmax) and 0 < fmin < fmax):
+            raise InputError(f"the band range {fmin:g}–{fmax:g} Hz is empty")
+        if not fmin < sample_rate / 2:
+            raise InputError(f"{name}: a sample rate of {sample_rate} Hz holds no frequency "
+                             f"above {sample_rate / 2:g} Hz, below the lowest band ({fmin:g} Hz)")
         if not floor_db < 0:
             raise InputError(f"the loudness floor must be negative (dB), got {floor_db}")
         if not smoothing >= 0:
@@ -139,12 +151,20 @@ class _Analyser:
     def feed(self, chunk: np.ndarray) -> None:
         chunk = np.asarray(chunk).ravel()
         if not np.all(np.isfinite(chunk)):
-            raise InputError("the audio holds NaN or infinite samples")
+            raise InputError(f"{self.name}: the audio holds NaN or infinite samples")
+        chunk = np.clip(chunk, -MAX_SAMPLE, MAX_SAMPLE)
         self.total += len(chunk)
+        frames = frame_count(self.total, self.sample_rate, self.rate)
+        if frames * (len(self.edges) - 1) > MAX_VALUES:
+            raise InputError(f"{self.name}: the spectrogram would hold more than {MAX_VALUES} "
+                             f"values ({frames} frames × {len(self.edges) - 1} bands so far); "
+                             "analyse it with a lower frame rate or fewer bands")
         self.buffer = np.concatenate([self.buffer, chunk.astype(np.float32)])
         self._process(final=False)
 
     def finish(self) -> np.ndarray:
+        if self.total == 0:
+            raise InputError(f"{self.name}: holds no audio samples")
         self.buffer = np.concatenate([self.buffer, np.zeros(self.N + 1, dtype=np.float32)])
         self._process(final=True)
         return np.concatenate(self.outputs) if self.outputs else np.zeros((0, len(self.edges) - 1),
@@ -230,7 +250,10 @@ class Spectrogram:
 
     @classmethod
     def from_chunks(cls, chunks, sample_rate: int, **options) -> Spectrogram:
-        """Analyse an iterable of mono float chunks (the streaming core of the other builders)."""
+        """Analyse an iterable of mono float chunks (the streaming core of the other builders).
+
+        options: those of the class docstring, and name (how messages call the audio).
+        """
         analyser = _Analyser(sample_rate, **options)
         for chunk in chunks:
             analyser.feed(chunk)
@@ -259,7 +282,8 @@ class Spectrogram:
         Spectrogram with T = ⌊duration·rate⌋ + 1 frames of B bands.
         """
         sample_rate, chunks = open_audio(path)
-        return cls.from_chunks(chunks, sample_rate, **options)
+        return cls.from_chunks(chunks, sample_rate, name=os.path.basename(os.fspath(path)),
+                               **options)
 
     def at(self, times) -> np.ndarray:
         """Values at arbitrary times (…,) s → (…, B) float64, linear between frames, clamped."""
@@ -296,16 +320,31 @@ class Spectrogram:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> Spectrogram:
-        """Read a spectrogram file; a missing key or inconsistent shape raises InputError."""
+        """Read a spectrogram file, checked: InputError naming the field for anything that
+        breaks docs/design.md#spectrogram-file (a missing field, a wrong type or shape, NaN,
+        values outside [0, 1], frame times that do not follow from the rate and duration)."""
+        path = os.fspath(path)
         data = load_npz(path, FORMAT_KEYS)
-        spectrogram = cls(data["times"], data["band_edges"], data["values"],
-                          float(data["rate"]), int(data["sample_rate"]), float(data["duration"]))
-        values = spectrogram.values
-        if (values.ndim != 2 or spectrogram.times.shape != (len(values),)
-                or spectrogram.band_edges.shape != (values.shape[1] + 1,)):
-            raise InputError(f"{os.fspath(path)}: inconsistent array shapes in "
-                             "spectrogram file")
-        return spectrogram
+        values = checked_array(data, "values", path, shape=(None, None))
+        count, bands = values.shape
+        if count < 1 or bands < 1:
+            raise InputError(f"{path}: the spectrogram has no frames or no bands")
+        times = checked_array(data, "times", path, shape=(count,))
+        edges = checked_array(data, "band_edges", path, shape=(bands + 1,))
+        rate, duration = (float(checked_array(data, name, path)) for name in ("rate", "duration"))
+        sample_rate = int(checked_array(data, "sample_rate", path, "int"))
+        if not (np.all((values >= 0) & (values <= 1))):
+            raise InputError(f"{path}: values must lie in [0, 1]")
+        if not (np.all(edges > 0) and np.all(np.diff(edges) > 0)):
+            raise InputError(f"{path}: band_edges must be positive and increasing")
+        if not (rate > 0 and duration >= 0 and 0 < sample_rate <= MAX_SAMPLE_RATE):
+            raise InputError(f"{path}: rate must be positive, duration ≥ 0 and sample_rate from "
+                             f"1 to {MAX_SAMPLE_RATE} Hz")
+        if abs(math.floor(duration * rate) + 1 - count) > 1 or not np.allclose(
+                times, np.arange(count) / rate, rtol=1e-9, atol=1e-9):
+            raise InputError(f"{path}: {count} frames do not fit a duration of {duration:g} s "
+                             f"at {rate:g} frames per second (times[j] = j / rate)")
+        return cls(times, edges, values.astype(np.float32), rate, sample_rate, duration)
 
 
 def frame_times(duration: float, fps: float) -> np.ndarray:
@@ -314,7 +353,11 @@ def frame_times(duration: float, fps: float) -> np.ndarray:
         raise InputError(f"frames per second must be a positive number, got {fps}")
     if not (np.isfinite(duration) and duration >= 0):
         raise InputError(f"the duration must be a finite number of seconds ≥ 0, got {duration}")
-    return np.arange(int(math.floor(duration * fps + 1e-9)) + 1) / float(fps)
+    count = math.floor(duration * fps + 1e-9) + 1
+    if count > MAX_FRAMES:
+        raise InputError(f"{duration:g} s at {fps:g} frames per second make {count} frames; "
+                         f"at most {MAX_FRAMES} are made at once (use fewer frames per second)")
+    return np.arange(count) / float(fps)
 
 
 PICTURE_FORMATS = ("png", "svg", "pdf", "jpg", "jpeg")

@@ -12,5 +12,8 @@ failure of ours):
 - ``POST /api/gallery`` ``{mesh, song, size}`` and ``POST /api/breed`` ``{parents, size, seed}``
   — mappings from `eigendance.music` (the one implementation).
 - ``GET /api/mappings/{id}``, ``POST /api/mappings?name=`` — saved mappings.
+- ``GET /api/rigs/{id}`` (description), ``/rig.bin`` (`binary.rig_bundle`), ``/skeleton.json``;
+  ``POST /api/rigs/{id}/stiffness``, ``/pose``, ``/reset`` (edits answering a new bundle);
+  ``POST /api/rig-gallery`` ``{rig, song, size}`` — the initial gallery of mode mappings.
 - ``/`` — the built front end (package folder ``static/``, built from ``web/`` by ``make``).
 """

@@ -28,6 +28,8 @@ from starlette.staticfiles import StaticFiles
 
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import kind_of, suffix_of
+from eigendance.modal.motion import default_mapping
+from eigendance.modal.rig import rig_gallery
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
@@ -37,8 +39,8 @@ from eigendance.music.gallery import (
     initial_gallery,
 )
 from eigendance.music.mapping import Mapping
-from eigendance.server.binary import basis_bundle
-from eigendance.server.library import Library
+from eigendance.server.binary import basis_bundle, rig_meta
+from eigendance.server.library import Library, RigItem
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
                ".oga": "audio/ogg", ".opus": "audio/ogg", ".flac": "audio/flac",
@@ -219,9 +221,13 @@ async def upload(request: Request):
     if (why := sniff(name, data[:4096])) is not None:
         raise HTTPException(415, f"{name}: {why}")
     item = await asyncio.to_thread(library.add_upload, data, name, kind)
+    if isinstance(item, RigItem):  # a skeleton JSON
+        kind = "rig"
     answer = {"kind": "song" if kind == "audio" else kind, "item": item.as_json()}
     if kind == "mesh":
         answer["job"] = item.job.as_json()
+        if item.rig is not None:  # a glTF with a skin is a rig too
+            answer["rig"] = library.rigs[item.rig].as_json()
     return JSONResponse(answer, status_code=201)
 
 
@@ -268,6 +274,109 @@ async def save_mapping(request: Request):
     return JSONResponse(item.as_json(), status_code=201)
 
 
+# --- rigs (docs/web.md#rig-api) -----------------------------------------------------------------
+
+def rig_of(request: Request) -> RigItem:
+    item = library_of(request).rigs.get(request.path_params["id"])
+    if item is None:
+        raise HTTPException(404, f"no rig with id '{request.path_params['id']}'")
+    return item
+
+
+def bundle_response(bundle: bytes) -> Response:
+    return Response(bundle, media_type="application/octet-stream",
+                    headers={"Cache-Control": "no-cache"})
+
+
+async def ready_rig(request: Request) -> RigItem:
+    """The rig of the path's id, analysed (built-in rigs are analysed on first use)."""
+    return await asyncio.to_thread(library_of(request).ready_rig, rig_of(request))
+
+
+async def get_rig(request: Request):
+    """The rig's description: the rig bundle's `meta` and the item's state."""
+    item = await ready_rig(request)
+    return JSONResponse({**item.as_json(), **rig_meta(item.rig, item.name, item.revision)})
+
+
+async def get_rig_bundle(request: Request):
+    return bundle_response((await ready_rig(request)).bundle)
+
+
+async def get_rig_skeleton(request: Request):
+    """The current skeleton as a skeleton JSON document (the edits included)."""
+    item = await ready_rig(request)
+    return JSONResponse(item.rig.skeleton.to_dict())
+
+
+async def rig_stiffness(request: Request):
+    """{joints: {name: number | [per free row] | "auto"}, scale?} → the new rig bundle."""
+    rig_of(request)
+    body = await json_body(request)
+    if not isinstance(body, dict) or not isinstance(body.get("joints", {}), dict):
+        raise HTTPException(400, "expected a JSON object {joints: {joint name: stiffness}, "
+                                 "scale}")
+    scale = body.get("scale", 1.0)
+    if isinstance(scale, bool) or not isinstance(scale, int | float):
+        raise HTTPException(400, "scale must be a number ≥ 0")
+    item = await ready_rig(request)
+    values = body.get("joints", {})
+    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+                                     lambda skeleton: skeleton.with_stiffness(values, scale))
+    return bundle_response(bundle)
+
+
+async def rig_pose(request: Request):
+    """{joint: name or index, rotation: [3 numbers, radians]} → the new rig bundle."""
+    rig_of(request)
+    body = await json_body(request)
+    if not isinstance(body, dict) or "joint" not in body or \
+            not isinstance(body.get("rotation"), list):
+        raise HTTPException(400, "expected a JSON object {joint, rotation: [x, y, z] radians}")
+    joint, rotation = body["joint"], body["rotation"]
+    if isinstance(joint, bool) or not isinstance(joint, str | int):
+        raise HTTPException(400, "joint must be a joint name or index")
+    if len(rotation) != 3 or any(isinstance(v, bool) or not isinstance(v, int | float)
+                                 for v in rotation):
+        raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
+    item = await ready_rig(request)
+    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+                                     lambda skeleton: skeleton.rotate_joint(joint, rotation))
+    return bundle_response(bundle)
+
+
+async def rig_reset(request: Request):
+    """The rig as loaded again (pose and stiffness) → its bundle."""
+    item = await ready_rig(request)
+    return bundle_response(await asyncio.to_thread(library_of(request).reset_rig, item))
+
+
+async def rig_gallery_route(request: Request):
+    """The initial gallery of mode mappings: {rig, song, size} → {mappings, default}."""
+    body = await json_body(request)
+    if not isinstance(body, dict):
+        raise HTTPException(400, "expected a JSON object {rig, song, size}")
+    library = library_of(request)
+    item = library.rigs.get(str(body.get("rig")))
+    if item is None:
+        raise HTTPException(404, f"no rig with id '{body.get('rig')}'")
+    song = song_of(request, str(body.get("song")))
+    size = gallery_size(body.get("size", DEFAULT_GALLERY))
+    await asyncio.to_thread(library.ready_rig, item)
+    rig = item.rig
+    if rig.palette is None:
+        raise HTTPException(409, f"{item.name}: the rig has no vibration mode; nothing to "
+                                 "dance")
+
+    def make():
+        dancer = rig.dancer(band_edges=song.spectrogram.band_edges)
+        items = rig_gallery(dancer, song.spectrogram, size)
+        default = default_mapping(song.spectrogram, len(rig.palette.selected))
+        return {"mappings": [m.to_json() for m in items], "default": default.to_json()}
+
+    return JSONResponse(await asyncio.to_thread(make))
+
+
 async def api_missing(request: Request):
     raise HTTPException(404, f"no API route {request.url.path}")
 
@@ -312,6 +421,13 @@ API_ROUTES = [
     Route("/api/breed", breed_route, methods=["POST"]),
     Route("/api/mappings", save_mapping, methods=["POST"]),
     Route("/api/mappings/{id}", get_mapping),
+    Route("/api/rigs/{id}", get_rig),
+    Route("/api/rigs/{id}/rig.bin", get_rig_bundle),
+    Route("/api/rigs/{id}/skeleton.json", get_rig_skeleton),
+    Route("/api/rigs/{id}/stiffness", rig_stiffness, methods=["POST"]),
+    Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),
+    Route("/api/rigs/{id}/reset", rig_reset, methods=["POST"]),
+    Route("/api/rig-gallery", rig_gallery_route, methods=["POST"]),
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
 ]
 

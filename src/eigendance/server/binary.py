@@ -10,6 +10,9 @@ f32, coefficients (k,3) f32 and `harmonics` (n, 4·⌈k/4⌉) f32 (or f16 on req
 packed four harmonics per RGBA texel (zero padded), ready for a float texture.
 Spectrogram bundle (`spectrogram_bundle`): times (T,) f32, values (T,B) f32, band_edges (B+1,)
 f32, meta rate/sample_rate/duration.
+Rig bundle (`rig_bundle`): what the page needs to play a rig — modal skinning packed for float
+textures, linear blend skinning for three.js, the bodies and their per-mode twists; the arrays
+and their units are listed in docs/web.md#rig-bundle.
 """
 
 from __future__ import annotations
@@ -18,6 +21,9 @@ import json
 import struct
 
 import numpy as np
+
+from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
+from eigendance.modal.skeleton import CONSTRAINED_ROWS
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2")}
@@ -31,10 +37,10 @@ def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) 
             dtype = "uint32"
         else:
             dtype = "float16" if name in half else "float32"
-        data = np.ascontiguousarray(array, dtype=DTYPES[dtype]).tobytes()
+        data = memoryview(np.ascontiguousarray(array, dtype=DTYPES[dtype]).reshape(-1)).cast("B")
         entries[name] = {"dtype": dtype, "shape": list(np.shape(array)), "offset": offset}
         padding = (-len(data)) % 4
-        blobs.append(data + b"\0" * padding)
+        blobs.extend((data, b"\0" * padding))  # joined once below: no copy per array
         offset += len(data) + padding
     header = json.dumps({"meta": meta, "arrays": entries}).encode()
     header += b" " * ((-len(header)) % 4)
@@ -85,3 +91,91 @@ def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
                               or spectrogram.times[-1])}
     return pack(meta, {"times": np.asarray(spectrogram.times), "values": values,
                        "band_edges": np.asarray(spectrogram.band_edges)})
+
+
+def packed_modes(per_mode: np.ndarray, n: int) -> np.ndarray:
+    """(nm, 3n) per-mode rows of per-vertex vectors (`ModalSkin.displacement`, `.rotation`) →
+    (n, G, 3, 4), G = ⌈nm/4⌉: texel (i, g, d) holds coordinate d of modes 4g … 4g+3 (zero
+    padded), so that a shader adds dot(c[4g:4g+4], texel) to coordinate d of vertex i (four
+    modes per RGBA texel, like the harmonics)."""
+    nm = len(per_mode)
+    groups = (nm + 3) // 4
+    padded = np.zeros((4 * groups, n, 3), dtype=np.float32)
+    padded[:nm] = per_mode.reshape(nm, n, 3)
+    return np.ascontiguousarray(padded.reshape(groups, 4, n, 3).transpose(2, 0, 3, 1))
+
+
+def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.ndarray]:
+    """The `count` largest skin weights of every vertex and their bodies, renormalised to sum
+    1 (three.js SkinnedMesh reads four): indices (n, count) and weights (n, count)."""
+    weights = np.asarray(weights, dtype=float)
+    count = min(count, weights.shape[1])
+    order = np.argsort(-weights, axis=1, kind="stable")[:, :count]
+    top = np.take_along_axis(weights, order, axis=1)
+    top = top / np.maximum(top.sum(axis=1, keepdims=True), 1e-300)
+    if count < 4:  # pad to four influences of weight 0
+        order = np.pad(order, ((0, 0), (0, 4 - count)))
+        top = np.pad(top, ((0, 0), (0, 4 - count)))
+    return order, top
+
+
+def rest_bone_matrices(model) -> np.ndarray:
+    """(n_b, 4, 4) world matrices of the bodies at rest: [R_b | c_b] (body frame → world)."""
+    bones = np.zeros((model.n_bodies, 4, 4))
+    bones[:, :3, :3] = model.body_rotations
+    bones[:, :3, 3] = model.body_centers
+    bones[:, 3, 3] = 1.0
+    return bones
+
+
+def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
+    """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`."""
+    skeleton, model, palette = rig.skeleton, rig.model, rig.palette
+    nm = model.n_modes
+    low, high = skeleton.vertices.min(axis=0), skeleton.vertices.max(axis=0)
+    return {
+        "kind": "rig", "name": name, "revision": int(revision),
+        "n": int(len(skeleton.vertices)),
+        "faces": int(len(skeleton.faces)), "bodies": model.n_bodies,
+        "joints": len(skeleton.joints), "modes": int(nm), "groups": (nm + 3) // 4,
+        "rigid_modes": int(model.rigid_modes), "size": float(model.size),
+        "center": ((low + high) / 2).tolist(), "diagonal": float(np.linalg.norm(high - low)),
+        "body_names": list(model.body_names),
+        "frequencies": model.frequencies.tolist(),
+        "joint_list": [{"name": joint.name, "type": joint.type,
+                        "bodies": [int(b) for b in joint.bodies],
+                        "free_rows": list(joint.free_rows),
+                        "constrained_rows": list(CONSTRAINED_ROWS[joint.type]),
+                        "stiffness": joint.stiffness.tolist(),
+                        "default_stiffness": default.tolist()}
+                       for joint, default in zip(skeleton.joints,
+                                                 skeleton.automatic_stiffnesses(), strict=True)],
+        "palette": None if palette is None else palette.to_settings().to_json(),
+        "offset": 0.0,
+    }
+
+
+def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
+    """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32."""
+    skeleton, model, skin = rig.skeleton, rig.model, rig.skin
+    n, nm = len(skin.vertices), model.n_modes
+    joints, weights = top_weights(skeleton.weights)
+    bones = rest_bone_matrices(model)
+    column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
+    twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
+    return pack(rig_meta(rig, name, revision), {
+        "vertices": skin.vertices, "faces": skeleton.faces.astype(np.uint32),
+        "tau": packed_modes(skin.displacement, n), "rho": packed_modes(skin.rotation, n),
+        "frequencies": model.frequencies,
+        "amplitudes": single_mode_amplitudes(model), "reach": mode_reach(model),
+        "phases": default_phases(np.arange(nm)),
+        "skin_joints": joints.astype(np.uint32), "skin_weights": weights,
+        "bone_matrices": column_major(bones, 1, 2).reshape(-1, 16),
+        "bind_matrices": column_major(np.linalg.inv(bones), 1, 2).reshape(-1, 16),
+        "body_centers": model.body_centers, "body_rotations": model.body_rotations,
+        "body_ends": np.array([[b.start, b.end] for b in skeleton.bodies]).reshape(-1, 2, 3),
+        "body_radii": np.array([b.radius for b in skeleton.bodies]),
+        "body_twists": twists,
+        "joint_bodies": model.joint_bodies.astype(np.uint32),
+        "joint_positions": model.joint_positions,
+    })

@@ -3,7 +3,9 @@
 
 from __future__ import annotations
 
+import errno
 import os
+import socket
 import sys
 import time
 from importlib import resources
@@ -20,9 +22,11 @@ DEFAULT_PORT = 8765
 DEMO_K = 150
 
 
-def run(app, host: str, port: int, announce: str | None = None) -> None:
-    """Serve `app` until interrupted; print `announce` (one line) once the socket listens."""
-    config = uvicorn.Config(app, host=host, port=port, log_level="warning", access_log=False)
+def run(app, listening: socket.socket, announce=None) -> None:
+    """Serve `app` on a socket from `listen` until interrupted; print `announce` (one line)
+    once it serves. announce: the line, or a callable(port) that makes it."""
+    host, bound = listening.getsockname()[:2]
+    config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False)
     server = uvicorn.Server(config)
     if announce:
         original = server.startup
@@ -30,12 +34,39 @@ def run(app, host: str, port: int, announce: str | None = None) -> None:
         async def startup(sockets=None):
             await original(sockets=sockets)
             if server.started:
-                print(announce, flush=True)
+                print(announce(bound) if callable(announce) else announce, flush=True)
 
         server.startup = startup
-    server.run()
+    with listening:
+        server.run(sockets=[listening])
     if not server.started:
-        raise InputError(f"cannot listen on {host}:{port} (in use, or not allowed)")
+        raise InputError(f"cannot serve on {host}:{bound}: the app did not start")
+
+
+def listen(host: str, port: int) -> socket.socket:
+    """A TCP socket bound to host:port (port 0: any free one); InputError naming the problem.
+
+    Bound before anything else starts (uvicorn would log its own lines and exit, after the
+    library had started solving), so an address in use, unknown or not allowed is one line.
+    """
+    try:
+        family, kind, protocol, _, address = socket.getaddrinfo(
+            host or None, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)[0]
+    except (socket.gaierror, UnicodeError) as error:
+        raise InputError(f"cannot listen on {host}: unknown address "
+                         f"({getattr(error, 'strerror', None) or error})") from None
+    listening = socket.socket(family, kind, protocol)
+    try:
+        listening.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # as uvicorn does
+        listening.bind(address)
+        listening.listen(socket.SOMAXCONN)
+    except OSError as error:
+        listening.close()
+        remedy = {"port": 0} if error.errno == errno.EADDRINUSE else None
+        raise InputError(f"cannot listen on {host}:{port}: {error.strerror or error}",
+                         remedy=remedy) from None
+    listening.set_inheritable(True)
+    return listening
 
 
 def terminal_progress(library) -> None:

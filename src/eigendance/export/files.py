@@ -1,0 +1,129 @@
+"""Exports of a dance to files other tools open: glTF (.glb), point cache (.pc2 + .obj) and USD
+(docs/design.md#exports).
+
+`export_dance` samples the dance at t_i = i/fps, i = 0 … ⌊duration·fps⌋, writes the chosen
+format and copies the song beside it (named after the export, the song's suffix kept), all or
+nothing (`output.Outputs`).
+"""
+
+from __future__ import annotations
+
+import filecmp
+import os
+
+import numpy as np
+
+from eigendance.errors import InputError
+from eigendance.export.dance import Dance, RigDance, sample_times
+from eigendance.export.gltf import glb_bytes
+from eigendance.export.output import Outputs
+from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
+from eigendance.export.usd import write_usd
+from eigendance.files import suffix_of
+
+FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
+
+
+def format_of(path: str | os.PathLike, format: str | None = None) -> str:
+    """The export format: `format` if given (checked against the suffix), else by suffix."""
+    suffix = suffix_of(path)
+    if format is None:
+        for name, suffixes in FORMATS.items():
+            if suffix in suffixes:
+                return name
+        known = ", ".join(s for suffixes in FORMATS.values() for s in suffixes)
+        raise InputError(f"{os.fspath(path)}: unknown export format '{suffix or '(none)'}' "
+                         f"(expected one of {known})")
+    if format not in FORMATS:
+        raise InputError(f"unknown export format {format!r} (expected one of "
+                         f"{', '.join(FORMATS)})")
+    if suffix not in FORMATS[format]:
+        raise InputError(f"{os.fspath(path)}: a {format} file must end in "
+                         f"{' or '.join(FORMATS[format])}")
+    return format
+
+
+def companion_paths(path: str | os.PathLike, format: str, audio: str | None) -> dict:
+    """The files an export writes: {"main", "mesh" (pc2's rest OBJ), "song"} (None if not)."""
+    path = os.fspath(path)
+    stem = os.path.splitext(path)[0]
+    song = None
+    if audio is not None:
+        song = stem + suffix_of(audio)
+        if os.path.abspath(song) == os.path.abspath(audio) or (
+                os.path.isfile(song) and filecmp.cmp(song, audio, shallow=False)):
+            song = None  # the song is already there under that name (an earlier export's)
+    return {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
+
+
+def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
+                 fps: float = 30.0, force: bool = False, progress=None) -> dict:
+    """Write `dance` as glTF, point cache or USD, with its song beside it.
+
+    Parameters
+    ----------
+    dance : a `HarmonicDance` or a `RigDance`.
+    path : the file to write; its suffix names the format unless `format` does.
+    format : "glb", "pc2" or "usd" (None: by suffix).
+    fps : samples per second.
+    force : overwrite existing files.
+    progress : optional callable(frames done, frames in all).
+
+    Returns
+    -------
+    {"format", "files" (written), "frames", "fps", "bytes" (of the main file),
+    "point_cache_bytes" (the same motion as a .pc2), "skinning_difference" (glb of a
+    modal-skinned rig: the largest distance between its linear blend skinning and the modal
+    skinning, model units; else None), "diagonal"}.
+    """
+    format = format_of(path, format)
+    if not (np.isfinite(fps) and 0 < fps <= 1000):
+        raise InputError(f"frames per second must be in (0, 1000], got {fps}")
+    times = sample_times(dance.duration, fps)
+    paths = companion_paths(path, format, dance.audio)
+    written = [p for p in (paths["main"], paths["mesh"], paths["song"]) if p is not None]
+    song_name = None if dance.audio is None else \
+        os.path.basename(os.path.splitext(paths["main"])[0] + suffix_of(dance.audio))
+    if paths["song"] is None and dance.audio is not None and \
+            os.path.abspath(dance.audio) == os.path.abspath(paths["main"]):
+        song_name = os.path.basename(dance.audio)
+
+    def step(done):
+        if progress is not None:
+            progress(done, len(times))
+
+    difference = None
+    with Outputs(written, force) as outputs:
+        main = outputs.temporary(paths["main"])
+        if format == "glb":
+            extras = {"audio": song_name, "fps": fps, "frames": len(times),
+                      "duration": dance.duration, **dance.info}
+            with open(main, "wb") as file:
+                file.write(glb_bytes(dance, times, extras))
+            step(len(times))
+            if isinstance(dance, RigDance) and dance.modal is not None:
+                difference = skinning_difference(dance, times)
+        elif format == "pc2":
+            with open(main, "wb") as file:
+                write_pc2(file, dance, times, step)
+            with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
+                file.write(obj_text(dance.rest, dance.faces,
+                                    f"eigendance: rest mesh of {os.path.basename(path)}"))
+        else:
+            write_usd(main, dance, times, fps, song_name, step)
+        if paths["song"]:
+            outputs.copy(dance.audio, paths["song"])
+        size = os.path.getsize(main)
+    return {"format": format, "files": written, "frames": len(times), "fps": fps,
+            "bytes": size, "point_cache_bytes": pc2_size(dance.n, len(times)),
+            "skinning_difference": difference, "diagonal": dance.diagonal}
+
+
+def skinning_difference(dance: RigDance, times) -> float:
+    """The largest distance between a rig's modal skinning and the linear blend skinning of
+    the same body transforms (what a glTF skin plays) over `times`, model units."""
+    largest = 0.0
+    for first, positions, _ in dance.frames(times):
+        blended = dance.blend_positions(times[first:first + len(positions)])
+        largest = max(largest, float(np.linalg.norm(positions - blended, axis=-1).max()))
+    return largest

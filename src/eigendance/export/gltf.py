@@ -1,0 +1,216 @@
+"""glTF 2.0 binary (.glb) of a dance (docs/design.md#exports), written with pygltflib.
+
+- A `HarmonicDance` becomes morph targets: one target per driven harmonic ν with the POSITION
+  displacement D_ν = U[:,ν]·X̃_ν·scale, and one animation of the mesh's weights φ_ν(t_i) − 1 at
+  the sample times t_i = i/fps (LINEAR). At every sample the player's sum rest + Σ w_ν D_ν is the
+  reference positions X_φ exactly (up to float32), since X_φ is linear in φ.
+- A `RigDance` becomes a skin: one joint node per body, bound in the body's rest frame B_b
+  (inverse bind matrix B_b⁻¹), animated by translation and rotation channels so that its world
+  transform is T_b(t_i)·B_b; a viewer's joint matrix T_b·B_b·B_b⁻¹ = T_b then plays linear blend
+  skinning Σ_b w_ib T_b x exactly at every sample (with as many JOINTS_j/WEIGHTS_j sets of four as
+  the most-influenced vertex needs).
+
+The song's file name, the sample rate and what moved are in the root `extras.eigendance`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pygltflib
+from scipy.spatial.transform import Rotation
+
+from eigendance.export.dance import Dance, HarmonicDance, RigDance
+
+# The player's first tile colour (web/src/deform.ts TILE_COLORS[0]), as sRGB bytes.
+BASE_COLOR = (0xE8, 0xA8, 0x7C)
+WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is renormalised)
+
+
+def srgb_to_linear(srgb) -> np.ndarray:
+    """sRGB components in [0, 1] → linear (the glTF base colour is linear)."""
+    c = np.asarray(srgb, dtype=np.float64)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+class _Builder:
+    """Accumulates arrays into one binary buffer (4-byte aligned views) and their accessors."""
+
+    TYPES = {1: "SCALAR", 2: "VEC2", 3: "VEC3", 4: "VEC4", 16: "MAT4"}
+    COMPONENTS = {np.dtype("<f4"): pygltflib.FLOAT, np.dtype("<u4"): pygltflib.UNSIGNED_INT,
+                  np.dtype("<u2"): pygltflib.UNSIGNED_SHORT,
+                  np.dtype("u1"): pygltflib.UNSIGNED_BYTE}
+
+    def __init__(self, gltf: pygltflib.GLTF2):
+        self.gltf = gltf
+        self.chunks: list[bytes] = []
+        self.length = 0
+
+    def accessor(self, array: np.ndarray, width: int, target: int | None = None,
+                 bounds: bool = False) -> int:
+        """An accessor (and its own buffer view) for `array`, `width` components per element.
+
+        bounds: store min/max (required for POSITION and animation inputs)."""
+        array = np.ascontiguousarray(array)
+        data = array.tobytes()
+        view = pygltflib.BufferView(buffer=0, byteOffset=self.length, byteLength=len(data),
+                                    target=target)
+        self.chunks.append(data)
+        self.length += len(data)
+        padding = -self.length % 4
+        self.chunks.append(b"\0" * padding)
+        self.length += padding
+        self.gltf.bufferViews.append(view)
+        elements = array.reshape(-1, width)
+        accessor = pygltflib.Accessor(bufferView=len(self.gltf.bufferViews) - 1, byteOffset=0,
+                                      componentType=self.COMPONENTS[array.dtype],
+                                      count=len(elements), type=self.TYPES[width])
+        if bounds:
+            accessor.min = [float(x) for x in elements.min(axis=0)]
+            accessor.max = [float(x) for x in elements.max(axis=0)]
+        self.gltf.accessors.append(accessor)
+        return len(self.gltf.accessors) - 1
+
+    def finish(self) -> bytes:
+        blob = b"".join(self.chunks)
+        self.gltf.buffers.append(pygltflib.Buffer(byteLength=len(blob)))
+        self.gltf.set_binary_blob(blob)
+        return blob
+
+
+def glb_bytes(dance: Dance, times, extras: dict) -> bytes:
+    """The .glb of `dance` sampled at `times` (s), with `extras` under extras.eigendance.
+
+    Parameters
+    ----------
+    dance : a `HarmonicDance` (morph targets) or a `RigDance` (skin).
+    times : (T,) sample times, ascending.
+    extras : JSON-ready facts stored in the file (the song's name, fps, …).
+
+    Returns
+    -------
+    The file's bytes.
+    """
+    times = np.asarray(times, dtype=np.float64)
+    gltf = pygltflib.GLTF2(asset=pygltflib.Asset(version="2.0", generator="eigendance"))
+    gltf.extras = {"eigendance": extras}
+    builder = _Builder(gltf)
+    color = [*(float(c) for c in srgb_to_linear(np.array(BASE_COLOR) / 255)), 1.0]
+    gltf.materials.append(pygltflib.Material(
+        name="eigendance", doubleSided=True,
+        pbrMetallicRoughness=pygltflib.PbrMetallicRoughness(baseColorFactor=color,
+                                                            metallicFactor=0.0,
+                                                            roughnessFactor=0.6)))
+    attributes = pygltflib.Attributes(
+        POSITION=builder.accessor(dance.rest.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, True),
+        NORMAL=builder.accessor(dance.rest_normals().astype("<f4"), 3, pygltflib.ARRAY_BUFFER))
+    index_type = "<u2" if dance.n <= 65535 else "<u4"
+    primitive = pygltflib.Primitive(
+        attributes=attributes, material=0, mode=pygltflib.TRIANGLES,
+        indices=builder.accessor(dance.faces.astype(index_type).ravel(), 1,
+                                 pygltflib.ELEMENT_ARRAY_BUFFER))
+    mesh = pygltflib.Mesh(name=dance.name, primitives=[primitive])
+    gltf.meshes.append(mesh)
+    gltf.nodes.append(pygltflib.Node(name=dance.name, mesh=0))
+    gltf.scenes.append(pygltflib.Scene(name=dance.name, nodes=[0]))
+    gltf.scene = 0
+    sample_input = builder.accessor(times.astype("<f4"), 1, bounds=True)
+    if isinstance(dance, HarmonicDance):
+        _morph_targets(dance, times, builder, mesh, primitive, sample_input)
+    elif isinstance(dance, RigDance):
+        _skin(dance, times, builder, attributes, sample_input)
+    else:
+        raise TypeError(f"cannot write {type(dance).__name__} as glTF")
+    builder.finish()
+    return b"".join(gltf.save_to_bytes())
+
+
+def _morph_targets(dance: HarmonicDance, times, builder, mesh, primitive, sample_input):
+    morphs = dance.morphs(times)
+    for target in morphs.targets:
+        primitive.targets.append(pygltflib.Attributes(POSITION=builder.accessor(
+            target.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, bounds=True)))
+    if len(morphs.harmonics) == 0:
+        return  # a still mapping: no target, nothing to animate
+    mesh.weights = [0.0] * len(morphs.harmonics)
+    mesh.extras = {"targetNames": [f"harmonic {int(nu)}" for nu in morphs.harmonics]}
+    output = builder.accessor(morphs.weights.astype("<f4").ravel(), 1)
+    builder.gltf.animations.append(pygltflib.Animation(
+        name="dance",
+        samplers=[pygltflib.AnimationSampler(input=sample_input, output=output,
+                                             interpolation=pygltflib.ANIM_LINEAR)],
+        channels=[pygltflib.AnimationChannel(
+            sampler=0, target=pygltflib.AnimationChannelTarget(node=0, path="weights"))]))
+
+
+def _skin(dance: RigDance, times, builder, attributes, sample_input):
+    gltf = builder.gltf
+    count = len(dance.body_names)
+    first_joint = len(gltf.nodes) + 1
+    joints = list(range(first_joint, first_joint + count))
+    gltf.nodes.append(pygltflib.Node(name="skeleton", children=joints))
+    gltf.scenes[0].nodes.append(first_joint - 1)
+    rest = dance.rest_frames
+    for name, frame in zip(dance.body_names, rest, strict=True):
+        rotation, translation = _rotation_translation(frame[None, :3, :3], frame[None, :3, 3])
+        gltf.nodes.append(pygltflib.Node(name=name, rotation=rotation[0].tolist(),
+                                         translation=translation[0].tolist()))
+    inverse = np.linalg.inv(rest).transpose(0, 2, 1)  # column-major, as glTF stores matrices
+    gltf.skins.append(pygltflib.Skin(name=dance.name, joints=joints, skeleton=first_joint - 1,
+                                     inverseBindMatrices=builder.accessor(
+                                         inverse.astype("<f4").reshape(-1, 16), 16)))
+    gltf.nodes[0].skin = 0
+    indices, weights = _influences(dance.weights)
+    joint_type = "u1" if count <= 256 else "<u2"
+    for set_index in range(indices.shape[1] // 4):
+        columns = slice(4 * set_index, 4 * set_index + 4)
+        setattr(attributes, f"JOINTS_{set_index}", builder.accessor(
+            indices[:, columns].astype(joint_type), 4, pygltflib.ARRAY_BUFFER))
+        setattr(attributes, f"WEIGHTS_{set_index}", builder.accessor(
+            weights[:, columns].astype("<f4"), 4, pygltflib.ARRAY_BUFFER))
+    transforms, _ = dance.pose(times)
+    world = transforms @ rest[None]  # T_b(t)·B_b: each joint's world transform
+    rotations, translations = _rotation_translation(world[..., :3, :3], world[..., :3, 3])
+    samplers, channels = [], []
+    for body in range(count):
+        for path, values, width in (("translation", translations, 3), ("rotation", rotations, 4)):
+            output = builder.accessor(values[:, body].astype("<f4"), width)
+            channels.append(pygltflib.AnimationChannel(
+                sampler=len(samplers),
+                target=pygltflib.AnimationChannelTarget(node=joints[body], path=path)))
+            samplers.append(pygltflib.AnimationSampler(input=sample_input, output=output,
+                                                       interpolation=pygltflib.ANIM_LINEAR))
+    gltf.animations.append(pygltflib.Animation(name="dance", samplers=samplers,
+                                               channels=channels))
+
+
+def _rotation_translation(rotations, translations):
+    """Unit quaternions (…, 4) as glTF stores them (x, y, z, w), continuous along axis 0 (no
+    sign flips between samples, so LINEAR/slerp takes the short way), and translations."""
+    shape = rotations.shape[:-2]
+    quaternions = Rotation.from_matrix(rotations.reshape(-1, 3, 3)).as_quat().reshape(*shape, 4)
+    if len(shape) == 2 and shape[0] > 1:
+        flips = np.sum(quaternions[1:] * quaternions[:-1], axis=-1) < 0
+        signs = np.cumprod(np.where(flips, -1.0, 1.0), axis=0)
+        quaternions[1:] *= signs[..., None]
+    quaternions /= np.linalg.norm(quaternions, axis=-1, keepdims=True)
+    return quaternions, np.asarray(translations)
+
+
+def _influences(weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per vertex the bodies with non-zero weight, padded to a multiple of four (index 0,
+    weight 0): indices (n, L) and weights (n, L), rows summing to 1 in float32."""
+    weights = np.where(weights >= WEIGHT_EPSILON, weights, 0.0)
+    weights = weights / weights.sum(axis=1, keepdims=True)
+    width = max(4, 4 * math.ceil(int((weights > 0).sum(axis=1).max()) / 4))
+    order = np.argsort(-weights, axis=1, kind="stable")[:, :width]
+    chosen = np.take_along_axis(weights, order, axis=1)
+    if chosen.shape[1] < width:
+        pad = width - chosen.shape[1]
+        chosen = np.pad(chosen, ((0, 0), (0, pad)))
+        order = np.pad(order, ((0, 0), (0, pad)))
+    order = np.where(chosen > 0, order, 0)
+    chosen = chosen.astype(np.float32)
+    chosen /= chosen.sum(axis=1, keepdims=True, dtype=np.float64).astype(np.float32)
+    return order, chosen

@@ -1,0 +1,244 @@
+"""Video of a dance with its song: H.264 (yuv420p) and AAC in MP4 (docs/design.md#exports).
+
+Frame i shows the dance at time i/fps exactly, i < ⌈duration·fps⌉ (`dance.video_times`): the
+video starts with the song and lasts as long, to within one frame. Frames are drawn offscreen
+(`renderer.Renderer`, the player's look) and piped as raw RGBA into the ffmpeg that the
+imageio-ffmpeg wheel ships, which encodes them while the next ones are drawn and muxes the song's
+audio re-encoded as AAC. The encoder runs bit-exact (no timestamps or version strings in the
+file), so the same inputs give the same bytes. ffmpeg writes to a temporary file beside the
+destination, renamed over it only when everything succeeded (`output.Outputs`): Ctrl-C, a crash
+or an encoder failure leaves nothing behind.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+import multiprocessing
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+import imageio_ffmpeg
+import numpy as np
+
+from eigendance.errors import InputError, InternalError, one_line
+from eigendance.export.dance import Dance, video_times
+from eigendance.export.output import Outputs
+from eigendance.export.renderer import Camera, Look, Renderer, gallery_cells, gl_started
+from eigendance.music.decode import open_audio
+
+MAX_SIDE = 7680  # pixels (8K)
+# Processes drawing frames in turn. llvmpipe transforms and sets up triangles on one thread, which
+# bounds a fine mesh (the bunny: 25 of its 60 ms of CPU per frame); two single-threaded renderers
+# keep both cores busy (measured in benchmarks/bench_render.py).
+WORKERS = 2
+PRESET, CRF, AUDIO_BITRATE = "veryfast", 18, "192k"  # x264 speed/quality, AAC bit rate
+
+
+def parse_size(text: str) -> tuple[int, int]:
+    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680."""
+    parts = text.lower().replace("×", "x").split("x")
+    try:
+        width, height = (int(part) for part in parts)
+    except ValueError:
+        raise InputError(f"size {text!r}: expected WIDTHxHEIGHT in pixels, e.g. 1280x720") \
+            from None
+    check_size(width, height)
+    return width, height
+
+
+def check_size(width: int, height: int) -> None:
+    for side in (width, height):
+        if not 16 <= side <= MAX_SIDE:
+            raise InputError(f"size {width}x{height}: each side must be 16 to {MAX_SIDE} pixels")
+        if side % 2:
+            raise InputError(f"size {width}x{height}: H.264 in yuv420p needs even sides")
+
+
+def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str) -> list[str]:
+    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4."""
+    rate = Fraction(fps).limit_denominator(1001)
+    return [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-y",
+            "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
+            "-framerate", f"{rate.numerator}/{rate.denominator}", "-i", "pipe:0",
+            "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
+            "-vf", "vflip", "-c:v", "libx264", "-preset", PRESET, "-crf", str(CRF),
+            "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", AUDIO_BITRATE,
+            "-map_metadata", "-1", "-fflags", "+bitexact", "-flags:v", "+bitexact",
+            "-flags:a", "+bitexact", "-movflags", "+faststart", "-f", "mp4", output]
+
+
+def check_song(path) -> str:
+    """The song's path; InputError (one line) unless it decodes (its first chunk is read)."""
+    _, chunks = open_audio(path)
+    next(iter(chunks), None)
+    if hasattr(chunks, "close"):
+        chunks.close()
+    return os.fspath(path)
+
+
+def _one_by_one(chunks):
+    """(positions, normals) per frame from a dance's chunks."""
+    for _, positions, normals in chunks:
+        for index in range(len(positions)):
+            yield positions[index], None if normals is None else normals[index]
+
+
+def render_frames(dances: list[Dance], looks: list[Look], times, width: int, height: int):
+    """Draw each frame at `times`: yields the RGBA bytes (bottom row first) of each.
+
+    One dance fills the frame with the player's camera; several (a gallery of the same mesh)
+    share it in the page's grid with the tile camera.
+    """
+    first = dances[0]
+    if any(dance.n != first.n or len(dance.faces) != len(first.faces) for dance in dances):
+        raise InputError("a gallery's dances must share one mesh")
+    center, scale = first.center, first.scale
+    radius = float(np.linalg.norm(first.rest - center, axis=1).max())
+    if len(dances) == 1:
+        cells = [(0, 0, width, height)]
+    else:
+        cells = gallery_cells(len(dances), width, height)
+    cameras = [Camera.framing(center, radius, scale, w / h, player=len(dances) == 1)
+               for _, _, w, h in cells]
+    renderer = Renderer(width, height, first.faces, first.rest_normals())
+    try:
+        streams = [_one_by_one(dance.frames(times)) for dance in dances]
+        for frame in zip(*streams, strict=True):
+            renderer.clear()
+            for (positions, normals), camera, look, cell in zip(frame, cameras, looks, cells,
+                                                                strict=True):
+                renderer.draw(positions, camera, look, cell, normals)
+            yield renderer.read()
+    finally:
+        renderer.release()
+
+
+def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, height: int,
+                   workers: int = WORKERS):
+    """`render_frames`, drawn by `workers` forked processes in turn (frame i by worker i mod
+    workers, each with its own single-threaded llvmpipe context): yields the frames in order.
+
+    Forking is safe here: a worker only draws (numpy, its own GL context) and writes to its pipe;
+    it imports nothing and takes no lock another thread of the caller may hold. A caller that has
+    drawn before (`renderer.gl_started`) draws itself instead: a fork would inherit llvmpipe's
+    state without its threads. Workers ignore Ctrl-C (the caller handles it and kills them) and
+    die with the caller.
+    """
+    times = np.asarray(times, dtype=np.float64)
+    if workers <= 1 or len(times) < 2 * workers or gl_started() or \
+            "fork" not in multiprocessing.get_all_start_methods():
+        yield from render_frames(dances, looks, times, width, height)
+        return
+    context = multiprocessing.get_context("fork")
+    pipes, processes = [], []
+    try:
+        for worker in range(workers):
+            receive, send = context.Pipe(duplex=False)
+            process = context.Process(target=_draw_in_turn, daemon=True, args=(
+                send, dances, looks, times[worker::workers], width, height))
+            process.start()
+            send.close()
+            pipes.append(receive)
+            processes.append(process)
+        size = width * height * 4
+        for index in range(len(times)):
+            try:
+                frame = pipes[index % workers].recv_bytes()
+            except EOFError:
+                raise InternalError("a render worker stopped without a word") from None
+            if len(frame) != size:  # a worker's error: "kind<TAB>message"
+                kind, _, message = frame.decode(errors="replace").partition("\t")
+                raise (InputError if kind == "InputError" else InternalError)(message)
+            yield frame
+    finally:
+        for process in processes:
+            if process.is_alive():
+                process.kill()
+            process.join()
+        for pipe in pipes:
+            pipe.close()
+
+
+def _draw_in_turn(send, dances, looks, times, width, height) -> None:
+    """In a render worker: draw `times` and send each frame (or one error line) to the caller."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if sys.platform.startswith("linux"):  # the kernel kills us when the caller dies
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    os.environ["LP_NUM_THREADS"] = "1"  # read when llvmpipe starts: one thread per worker
+    try:
+        for frame in render_frames(dances, looks, times, width, height):
+            send.send_bytes(frame)
+    except BrokenPipeError:
+        pass  # the caller stopped reading
+    except BaseException as error:  # noqa: BLE001 - everything goes back to the caller
+        send.send_bytes(f"{type(error).__name__}\t{one_line(error)}".encode())
+    finally:
+        send.close()
+
+
+def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
+                 audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
+                 force: bool = False, progress=None) -> dict:
+    """Render dances (one, or a gallery of the same mesh) with their song into an MP4.
+
+    Parameters
+    ----------
+    path : the .mp4 to write (atomically; never overwritten unless `force`).
+    dances : one dance, or several of the same mesh drawn as the page's gallery grid.
+    looks : one `Look` per dance.
+    audio : the song's file (any format ffmpeg reads), muxed as AAC.
+    fps : frames per second; size : (width, height) in pixels, both even.
+    progress : optional callable(frames done, frames in all).
+
+    Returns
+    -------
+    {"path", "frames", "fps", "size", "duration"}.
+    """
+    if not dances or len(looks) != len(dances):
+        raise InputError("render needs at least one dance and one look per dance")
+    width, height = (int(side) for side in size)
+    check_size(width, height)
+    if not (math.isfinite(fps) and 0 < fps <= 240):
+        raise InputError(f"frames per second must be in (0, 240], got {fps}")
+    audio = check_song(audio)
+    duration = max(dance.duration for dance in dances)
+    times = video_times(duration, fps)
+    path = os.fspath(path)
+    with Outputs([path], force) as outputs:
+        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path))
+        log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
+        encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                   stderr=log)
+        try:
+            try:
+                for index, frame in enumerate(frames_in_turn(dances, looks, times, width,
+                                                             height)):
+                    encoder.stdin.write(frame)
+                    if progress is not None:
+                        progress(index + 1, len(times))
+                encoder.stdin.close()
+            except BrokenPipeError:
+                pass  # the encoder stopped: its own message follows
+            encoder.wait()
+            log.seek(0)
+            errors = log.read().decode(errors="replace")
+            if encoder.returncode != 0:
+                last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
+                                f"exit status {encoder.returncode}")
+                raise InternalError(f"ffmpeg failed: {last}")
+        finally:
+            if encoder.poll() is None:
+                encoder.kill()
+                encoder.wait()
+            try:
+                encoder.stdin.close()
+            except BrokenPipeError:
+                pass  # the encoder is gone; nothing more to flush
+            log.close()
+    return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
+            "duration": duration}

@@ -1,0 +1,72 @@
+"""Small dances for the export tests: a bumpy sphere by its harmonics, rigs by their modes."""
+
+from __future__ import annotations
+
+import os
+import sys
+
+import pytest
+from export_helpers import SONG, rig
+
+from eigendance.export.dance import HarmonicDance
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.mesh import Mesh
+from eigendance.music.gallery import initial_gallery, strongest_item
+from eigendance.music.spectrogram import Spectrogram
+from helpers import bumpy_sphere, fixture_path
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "web"))
+
+from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
+
+
+@pytest.fixture(scope="session")
+def song():
+    return Spectrogram.from_file(SONG)
+
+
+@pytest.fixture(scope="session")
+def basis():
+    # Moved off the origin and scaled: exports are in the file's coordinates.
+    mesh = bumpy_sphere(2)
+    moved = Mesh.from_arrays(mesh.original_vertices * 2.5 + [3.0, -1.0, 0.5], mesh.faces)
+    return HarmonicBasis.from_mesh(moved, 40, cache=False)
+
+
+@pytest.fixture(scope="session")
+def mappings(basis, song):
+    return initial_gallery(basis, song, 4)
+
+
+@pytest.fixture(scope="session")
+def harmonic(basis, song):
+    mapping = strongest_item(basis, song)
+    mapping.gain, mapping.smoothing = 1.5, 0.05  # both must reach the exports
+    return HarmonicDance(basis, song, mapping, audio=SONG, name="sphere")
+
+
+@pytest.fixture(scope="session")
+def chain_lbs(song):
+    return rig("chain", "lbs", song)
+
+
+@pytest.fixture(scope="session")
+def figure_modal(song):
+    return rig(fixture_path("rigged", "RiggedFigure.glb"), "modal", song)
+
+
+@pytest.fixture(scope="session")
+def fox_lbs(song):
+    return rig(fixture_path("rigged", "Fox.glb"), "lbs", song)
+
+
+@pytest.fixture(scope="module")  # one Playwright at a time: tests/web starts its own
+def chromium():
+    if not os.path.exists(CHROMIUM):
+        pytest.skip("Chromium is not installed at /usr/bin/chromium")
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()

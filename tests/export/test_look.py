@@ -1,0 +1,93 @@
+"""The video's look is the player's (docs/design.md#exports): the same frame drawn by the page
+(`?render&bare&view=player`, headless Chromium, SwiftShader) and by the offline renderer
+(moderngl, llvmpipe) differs by rasterisation only. When the page's look changes (shaders,
+colours, camera), this test says so: port the change to eigendance.export.renderer."""
+
+from __future__ import annotations
+
+import io
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from export_helpers import SONG
+
+from eigendance.export.dance import HarmonicDance
+from eigendance.export.renderer import BACKGROUND, Look
+from eigendance.export.video import render_frames
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram
+from helpers import bumpy_sphere
+
+K = 24
+
+
+@pytest.fixture(scope="module")
+def served(tmp_path_factory):
+    """`eigendance serve MESH SONG MAPPING -k 24` on a free port, with its files."""
+    folder = tmp_path_factory.mktemp("look")
+    mesh = bumpy_sphere(3)
+    mesh_path = folder / "bumpy.obj"
+    with open(mesh_path, "w") as file:
+        file.write(("v %.9g %.9g %.9g\n" * mesh.n) % tuple(mesh.original_vertices.ravel()))
+        file.write(("f %d %d %d\n" * len(mesh.faces)) % tuple((mesh.faces + 1).ravel()))
+    rng = np.random.default_rng(11)
+    mapping = Mapping(rng.uniform(0, 1, 64), rng.uniform(-1.0, 1.0, K), name="look.json")
+    mapping.save(folder / "look.json")
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(folder / "cache"))
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "web"))
+    from web_helpers import free_port  # noqa: E402 - the web tests' helper
+
+    port = free_port()
+    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", str(mesh_path),
+                                SONG, str(folder / "look.json"), "-k", str(K), "--port",
+                                str(port)], env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL, text=True)
+    line = process.stdout.readline()
+    assert "serving on" in line, line
+    yield {"url": line.split()[-1], "mesh": str(mesh_path), "mapping": mapping}
+    process.terminate()
+    process.wait(10)
+
+
+@pytest.mark.web
+def test_the_offline_frame_looks_like_the_players(served, chromium):
+    import json
+    import urllib.request
+
+    from PIL import Image
+
+    with urllib.request.urlopen(served["url"] + "api/library") as answer:
+        library = json.load(answer)
+    mapping_id = library["mappings"][0]["id"]
+    page = chromium.new_page(viewport={"width": 800, "height": 560})
+    try:
+        page.goto(served["url"] + f"?render&bare&view=player&path=cpu&mapping={mapping_id}")
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=120_000)
+        page.evaluate("window.eigendance.ready")
+        page.wait_for_function("window.eigendance.info().k > 0", timeout=120_000)
+        page.evaluate("window.eigendance.renderAt(2.0)")
+        area = page.evaluate("(() => { const r = document.getElementById('player-area')"
+                             ".getBoundingClientRect(); return [r.left, r.top, r.width,"
+                             " r.height]; })()")
+        left, top, width, height = (int(round(v)) for v in area)
+        shot = page.screenshot(clip={"x": left, "y": top, "width": width, "height": height})
+    finally:
+        page.close()
+    theirs = np.asarray(Image.open(io.BytesIO(shot)).convert("RGB"), dtype=float)
+    basis = HarmonicBasis.from_mesh(served["mesh"], K)
+    dance = HarmonicDance(basis, Spectrogram.from_file(SONG), served["mapping"])
+    frame = next(render_frames([dance], [Look()], [2.0], width, height))
+    ours = np.frombuffer(frame, np.uint8).reshape(height, width, 4)[::-1, :, :3].astype(float)
+    mesh_theirs = np.any(theirs != BACKGROUND, axis=2)
+    mesh_ours = np.any(ours != BACKGROUND, axis=2)
+    overlap = (mesh_theirs & mesh_ours).sum() / (mesh_theirs | mesh_ours).sum()
+    assert 0.05 < mesh_ours.mean() < 0.8  # framed: the mesh fills part of the view
+    assert overlap > 0.97, overlap  # same camera, same deformation
+    both = mesh_theirs & mesh_ours
+    difference = np.abs(theirs - ours)
+    assert difference[~mesh_theirs & ~mesh_ours].max() == 0  # same background
+    assert difference[both].mean() < 4.0, difference[both].mean()  # same shading, colours

@@ -1,0 +1,184 @@
+"""Videos (docs/design.md#exports): H.264 yuv420p + AAC in MP4, frame i at time i/fps, the song's
+start and length, the same bytes every time, the gallery grid, and no partial file ever."""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import av
+import numpy as np
+import pytest
+from export_helpers import SONG
+
+from eigendance.errors import InputError
+from eigendance.export.dance import HarmonicDance, video_times
+from eigendance.export.renderer import BACKGROUND, Look, gallery_cells
+from eigendance.export.video import parse_size, render_frames, render_video
+
+FPS, SIZE = 10.0, (192, 108)
+
+
+def decode(path):
+    with av.open(str(path)) as container:
+        video, audio = container.streams.video[0], container.streams.audio[0]
+        info = {"video": (video.codec_context.name, video.codec_context.pix_fmt,
+                          video.codec_context.width, video.codec_context.height),
+                "audio": audio.codec_context.name,
+                "video_start": float(video.start_time * video.time_base),
+                "audio_start": float(audio.start_time * audio.time_base),
+                "video_duration": float(video.duration * video.time_base),
+                "audio_duration": float(audio.duration * audio.time_base)}
+        frames = [frame.to_ndarray(format="rgb24") for frame in container.decode(video=0)]
+    return info, np.array(frames)
+
+
+@pytest.fixture(scope="module")
+def video(harmonic, tmp_path_factory):
+    path = tmp_path_factory.mktemp("video") / "dance.mp4"
+    report = render_video(path, [harmonic], [Look()], SONG, FPS, SIZE)
+    return path, report
+
+
+def test_the_video_is_h264_with_the_song_as_aac_from_the_same_start(video, harmonic):
+    path, report = video
+    info, frames = decode(path)
+    count = math.ceil(harmonic.duration * FPS)
+    assert report["frames"] == len(frames) == count
+    assert info["video"] == ("h264", "yuv420p", *SIZE) and info["audio"] == "aac"
+    assert info["video_start"] == 0 and info["audio_start"] == 0
+    assert abs(info["video_duration"] - harmonic.duration) <= 1 / FPS
+    assert abs(info["audio_duration"] - harmonic.duration) <= 1 / FPS
+
+
+def test_frame_i_shows_time_i_over_fps(video, harmonic):
+    """Each decoded frame is the offline drawing at i/fps, and nearer to it than to the drawing
+    of any other frame checked (the dance moves between them)."""
+    path, _ = video
+    _, decoded = decode(path)
+    times = video_times(harmonic.duration, FPS)
+    drawn = np.array([np.frombuffer(frame, np.uint8).reshape(SIZE[1], SIZE[0], 4)[::-1, :, :3]
+                      for frame in render_frames([harmonic], [Look()], times, *SIZE)])
+    checked = [0, 7, 15, 22, 30, len(times) - 1]
+    errors = np.array([[np.abs(decoded[i].astype(float) - drawn[j]).mean() for j in checked]
+                       for i in checked])
+    assert np.all(np.diag(errors) < 2.0), np.diag(errors)  # H.264 at CRF 18 is near-lossless
+    assert np.all(np.argmin(errors, axis=1) == np.arange(len(checked))), errors
+
+
+def test_the_same_inputs_give_the_same_bytes(video, harmonic, tmp_path):
+    path, _ = video
+    again = tmp_path / "again.mp4"
+    render_video(again, [harmonic], [Look()], SONG, FPS, SIZE)
+    assert again.read_bytes() == path.read_bytes()
+
+
+def test_a_gallery_is_drawn_as_the_page_grid_in_the_tile_colours(basis, song, mappings):
+    dances = [HarmonicDance(basis, song, mapping) for mapping in mappings]
+    looks = [Look(color_index=index) for index in range(len(dances))]
+    width, height = 320, 180
+    frame = next(render_frames(dances, looks, [1.0], width, height))
+    image = np.frombuffer(frame, np.uint8).reshape(height, width, 4)[:, :, :3]  # bottom up
+    cells = gallery_cells(len(dances), width, height)
+    assert len(cells) == 4 and len({(w, h) for _, _, w, h in cells}) == 1
+    covered = np.zeros((height, width), bool)
+    hues = []
+    for x, y, w, h in cells:
+        tile = image[y:y + h, x:x + w].reshape(-1, 3).astype(float)
+        drawn = np.any(tile != BACKGROUND, axis=1)
+        assert 0.05 < drawn.mean() < 0.9  # the mesh is in its cell, framed
+        mean = tile[drawn].mean(axis=0)
+        hues.append(mean / mean.sum())
+        covered[y:y + h, x:x + w] = True
+    assert np.all(image[~covered] == BACKGROUND)  # nothing drawn between the tiles
+    hues = np.array(hues)
+    assert min(np.abs(hues[i] - hues[j]).sum() for i in range(4) for j in range(i)) > 0.02
+
+
+def test_sizes_are_checked():
+    assert parse_size("1280x720") == (1280, 720) and parse_size("64×48") == (64, 48)
+    for bad, message in (("1281x720", "even"), ("8x8", "16 to"), ("big", "WIDTHxHEIGHT")):
+        with pytest.raises(InputError, match=message):
+            parse_size(bad)
+
+
+def test_an_unreadable_song_is_an_input_error_and_leaves_nothing(harmonic, tmp_path):
+    song = tmp_path / "song.ogg"
+    song.write_text("not audio")
+    with pytest.raises(InputError, match="song.ogg: not a readable audio file"):
+        render_video(tmp_path / "dance.mp4", [harmonic], [Look()], song, FPS, SIZE)
+    assert sorted(os.listdir(tmp_path)) == ["song.ogg"]
+
+
+def test_an_existing_video_is_kept_without_force(video, harmonic):
+    path, _ = video
+    before = path.read_bytes()
+    with pytest.raises(InputError, match="exists"):
+        render_video(path, [harmonic], [Look()], SONG, FPS, SIZE)
+    assert path.read_bytes() == before
+
+
+def test_ctrl_c_while_rendering_leaves_no_file(tmp_path):
+    """The command line, interrupted once frames are flowing: exit status 130, nothing left."""
+    output = tmp_path / "out" / "dance.mp4"
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
+    process = subprocess.Popen(
+        [sys.executable, "-m", "eigendance.cli", "render", "chain", SONG, "--fps", "240",
+         "--size", "640x360", "-o", str(output)], env=env, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and process.poll() is None:
+        parts = [name for name in os.listdir(output.parent) if name.endswith(".mp4")] \
+            if output.parent.exists() else []
+        if parts and os.path.getsize(output.parent / parts[0]) > 0:
+            break
+        time.sleep(0.05)
+    assert process.poll() is None, "the render ended before it could be interrupted"
+    process.send_signal(signal.SIGINT)
+    _, errors = process.communicate(timeout=60)
+    assert process.returncode == 130, errors
+    assert "interrupted" in errors
+    assert os.listdir(output.parent) == []
+
+
+def test_render_workers_draw_the_same_frames_in_order(tmp_path):
+    """Two forked workers drawing frames in turn give the frames one process draws, in order
+    (in a fresh interpreter: a process that has drawn never forks renderers)."""
+    script = (
+        "import numpy as np, sys, trimesh\n"
+        "from eigendance.export.dance import HarmonicDance\n"
+        "from eigendance.export.renderer import Look\n"
+        "from eigendance.export.video import frames_in_turn, render_frames\n"
+        "from eigendance.harmonic.basis import HarmonicBasis\n"
+        "from eigendance.harmonic.mesh import Mesh\n"
+        "from eigendance.music.gallery import strongest_item\n"
+        "from eigendance.music.spectrogram import Spectrogram\n"
+        "s = trimesh.creation.icosphere(2)\n"
+        "basis = HarmonicBasis.from_mesh(Mesh.from_arrays(s.vertices * [1.4, 1, 0.8], s.faces),"
+        " 20, cache=False)\n"
+        "song = Spectrogram.from_file(sys.argv[1])\n"
+        "dance = HarmonicDance(basis, song, strongest_item(basis, song))\n"
+        "times = np.arange(12) / 3.0\n"
+        "turns = list(frames_in_turn([dance], [Look()], times, 64, 48, workers=2))\n"
+        "alone = list(render_frames([dance], [Look()], times, 64, 48))\n"
+        "print(len(turns), turns == alone, len(set(alone)))\n")
+    run = subprocess.run([sys.executable, "-c", script, SONG], capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == ["12", "True", "12"]
+
+
+def test_an_error_in_a_render_worker_is_one_line_and_leaves_nothing(tmp_path):
+    output = tmp_path / "out" / "tiny.mp4"
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
+    run = subprocess.run([sys.executable, "-m", "eigendance.cli", "render",
+                          os.path.join(os.path.dirname(SONG), "..", "meshes", "teapot.obj"),
+                          SONG, "-k", "8", "--gallery", "4", "--size", "32x16", "-o",
+                          str(output)], env=env, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 1, run.stderr
+    assert run.stderr.strip().endswith("32×16 pixels is too small for a gallery of 4 tiles")
+    assert run.stderr.count("\n") == 1
+    assert not output.parent.exists() or os.listdir(output.parent) == []

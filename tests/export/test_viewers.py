@@ -1,0 +1,101 @@
+"""Exported glbs in the tools people open them with (docs/design.md#exports): the Khronos
+glTF-Validator (npm gltf-validator, from Node) and three.js's GLTFLoader in headless Chromium.
+
+Both need web/node_modules (`scripts/web.sh install`); without it they are skipped, except under
+CI, where a missing tool fails.
+"""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import json
+import os
+import shutil
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+from export_helpers import check_positions, required
+
+from eigendance.export.dance import sample_times
+from eigendance.export.files import export_dance
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+WEB_MODULES = os.path.join(ROOT, "web", "node_modules")
+HERE = os.path.dirname(__file__)
+INSTALL = "scripts/web.sh install"
+
+
+@pytest.fixture(scope="module")
+def glbs(tmp_path_factory, harmonic, chain_lbs, figure_modal, fox_lbs):
+    """Every kind of glb the exporter writes: morph targets, and skins of built-in and glTF
+    rigs (linear blend and modal skinning)."""
+    folder = tmp_path_factory.mktemp("glbs")
+    dances = {"sphere": harmonic, "chain": chain_lbs, "figure": figure_modal, "fox": fox_lbs}
+    for name, dance in dances.items():
+        export_dance(dance, folder / f"{name}.glb", fps=15)
+    return folder, dances
+
+
+def test_the_khronos_validator_finds_no_error_and_no_warning(glbs):
+    folder, dances = glbs
+    node = shutil.which("node")
+    required("gltf-validator", node is not None and
+             os.path.isdir(os.path.join(WEB_MODULES, "gltf-validator")), INSTALL)
+    files = [str(folder / f"{name}.glb") for name in dances]
+    run = subprocess.run([node, os.path.join(HERE, "validate_gltf.mjs"), *files],
+                         capture_output=True, text=True, timeout=120, check=True)
+    reports = [json.loads(line) for line in run.stdout.splitlines()]
+    assert len(reports) == len(files)
+    for report in reports:
+        assert report["numErrors"] == 0 and report["numWarnings"] == 0, report
+
+
+@pytest.fixture(scope="module")
+def three_page(glbs):
+    """A static server of the glbs, the test page and three from web/node_modules."""
+    required("three", os.path.isdir(os.path.join(WEB_MODULES, "three")), INSTALL)
+    folder, _ = glbs
+    shutil.copy(os.path.join(HERE, "three_positions.html"), folder / "index.html")
+    os.symlink(os.path.abspath(os.path.join(WEB_MODULES, "three")), folder / "three")
+    handler = functools.partial(Quiet, directory=str(folder))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{server.server_address[1]}/"
+    server.shutdown()
+    server.server_close()
+
+
+class Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+@pytest.mark.web
+@pytest.mark.parametrize("name", ["sphere", "chain", "figure", "fox"])
+def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromium, name):
+    """At three sample times (first, middle, last but one: the mixer loops at the end)."""
+    _, dances = glbs
+    dance = dances[name]
+    samples = sample_times(dance.duration, 15)
+    times = [float(samples[0]), float(samples[len(samples) // 2]), float(samples[-2])]
+    page = chromium.new_page()
+    try:
+        page.goto(three_page)
+        page.wait_for_function("window.ready === true", timeout=30_000)
+        result = page.evaluate("([url, times]) => window.positionsAt(url, times)",
+                               [f"{name}.glb", times])
+    finally:
+        page.close()
+    played = np.array(result["frames"]).reshape(len(times), dance.n, 3)
+    if name == "sphere":
+        expected = dance.positions(times)
+        assert result["targets"] == len(dance.driven())
+    else:
+        expected = dance.blend_positions(np.array(times))  # what a glTF skin plays
+        assert result["skinned"]
+    check_positions(played, expected, dance.diagonal, 1e-4, f"three.js r{result['revision']}")
+    assert np.abs(expected[1] - expected[0]).max() > 1e-3 * dance.diagonal  # it moves
