@@ -4,6 +4,8 @@ import numpy as np
 import pytest
 
 from eigendance.errors import EigendanceError
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.music.gallery import direct_transfer, initial_indices, reversed_transfer
 from eigendance.music.mapping import (
     Mapping,
     ModeSettings,
@@ -11,6 +13,15 @@ from eigendance.music.mapping import (
     harmonic_indices,
     resample_amplification,
 )
+from eigendance.music.spectrogram import band_edges
+from helpers import bumpy_sphere
+
+EDGES = band_edges(64, 44100)
+
+
+@pytest.fixture(scope="module")
+def basis():
+    return HarmonicBasis.from_mesh(bumpy_sphere(2), 40, cache=False)
 
 
 def random_mapping(rng, bands=8, k=12, seed=None):
@@ -58,6 +69,29 @@ def test_filters_match_scatter_add_reference(rng):
 def test_filter_rejects_band_mismatch(rng):
     with pytest.raises(EigendanceError, match="8 bands; the spectrogram has 6"):
         random_mapping(rng).filter(np.zeros(6), 10)
+
+
+def test_initial_transfer_definition(basis):
+    nu = initial_indices(basis.frequencies, EDGES)
+    centres = np.sqrt(EDGES[:-1] * EDGES[1:])
+    levels = np.sqrt(np.maximum(basis.eigenvalues, 0) / basis.eigenvalues[-1])
+    for xi, f in enumerate(centres):  # the smallest ν with f_ξ/f_{B−1} ≤ √(λ_ν/λ_{k−1})
+        ratio = f / centres[-1]
+        expected = next(v for v in range(basis.k) if ratio <= levels[v] * (1 + 1e-12))
+        assert nu[xi] == expected
+    assert nu[-1] == basis.k - 1
+
+
+def test_direct_transfer_non_decreasing_and_reversed_is_its_mirror(basis):
+    k = basis.k
+    t_ini = direct_transfer(basis.frequencies, EDGES)
+    t_rev = reversed_transfer(basis.frequencies, EDGES)
+    assert (np.diff(t_ini) >= 0).all()
+    assert (t_ini > 0).all() and (t_ini < 1).all()
+    np.testing.assert_allclose(t_rev, 1 - t_ini, atol=1e-15)
+    nu = harmonic_indices(t_ini, k)
+    np.testing.assert_array_equal(nu, initial_indices(basis.frequencies, EDGES))
+    np.testing.assert_array_equal(harmonic_indices(t_rev, k), k - 1 - nu)
 
 
 def test_json_round_trip(tmp_path, rng):

@@ -39,22 +39,39 @@ GRAM_CHUNK = 64  # harmonics per block when only the diagonal of the Gram matrix
 
 
 class Dancer(Protocol):
-    """What a gallery needs of a model: its frequencies and the size of the motions it makes.
+    """What a gallery needs of a model: its frequencies and the motions filters give it.
 
-    Displacements must be linear in φ − 1: a filter φ moves the model by Σ_ν (φ_ν − 1) D_ν,
-    D_ν (n, 3) the displacement field of target ν (for harmonics D_ν = u_ν X̃_νᵀ).
+    Displacements must be affine in φ: a filter moves the model by Σ_ν (φ_ν − b) D_ν,
+    D_ν (n, 3) the displacement field of target ν (harmonics: b = 1 and D_ν = u_ν X̃_νᵀ; a rig's
+    modes: b = 0). A dancer may also give `motion_gram(targets)` — (T,) → (T, T), the mean over
+    the vertices of ⟨D_ν(x), D_μ(x)⟩ — without forming positions (`HarmonicBasis` does); else
+    `motion_gram` below forms it from the displacements.
     """
 
     @property
     def frequencies(self) -> np.ndarray:
-        """(k,) ascending: √λ of a mesh's harmonics, or a rig's natural frequencies."""
+        """(k,) ascending: √λ of a mesh's harmonics, or a rig's (ranked) modes."""
 
     @property
     def diagonal(self) -> float:
         """Bounding-box diagonal of the rest shape, in the units of the displacements."""
 
-    def motion_gram(self, targets) -> np.ndarray:
-        """(T,) target indices → (T, T): mean over the n vertices of ⟨D_ν(x), D_μ(x)⟩."""
+    def displacements(self, phi) -> np.ndarray:
+        """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape."""
+
+
+def motion_gram(dancer: Dancer, targets) -> np.ndarray:
+    """G_νμ = mean over the vertices of ⟨D_ν(x), D_μ(x)⟩ for `targets` (T,) → (T, T): the
+    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0)."""
+    targets = np.asarray(targets, dtype=np.int64)
+    own = getattr(dancer, "motion_gram", None)  # optional in the protocol: a fast path
+    if own is not None:
+        return own(targets)
+    filters_ = np.zeros((len(targets) + 1, len(dancer.frequencies)))
+    filters_[np.arange(1, len(targets) + 1), targets] = 1.0
+    moved = dancer.displacements(filters_)
+    fields = (moved[1:] - moved[0]).reshape(len(targets), -1)
+    return fields @ fields.T / moved.shape[1]
 
 
 def check_gallery_size(size) -> int:
@@ -72,7 +89,7 @@ def check_gallery_size(size) -> int:
 def motion_content(dancer: Dancer) -> np.ndarray:
     """c_ν = RMS over the vertices of D_ν, the motion of target ν per unit of φ_ν − 1 (k,)."""
     k = len(dancer.frequencies)
-    blocks = [np.diag(dancer.motion_gram(np.arange(start, min(k, start + GRAM_CHUNK))))
+    blocks = [np.diag(motion_gram(dancer, np.arange(start, min(k, start + GRAM_CHUNK))))
               for start in range(0, k, GRAM_CHUNK)]
     return np.sqrt(np.maximum(np.concatenate(blocks), 0.0))
 
@@ -242,7 +259,7 @@ def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
         if not len(targets):
             results.append(ItemMotion(0.0, 0.0, -1, -1))
             continue
-        gram = dancer.motion_gram(targets)
+        gram = motion_gram(dancer, targets)
         rms = frame_motion(w, gram) / diagonal
         energy = (w ** 2).mean(axis=0) * np.diag(gram)
         share = np.cumsum(energy) / max(energy.sum(), 1e-300)
@@ -254,12 +271,25 @@ def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
     return results
 
 
+def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
+    """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
+    of the displacements: the most the music can move it."""
+    k = len(dancer.frequencies)
+    motion = []
+    for mapping in mappings:
+        w = mapping.filter(np.ones((1, mapping.bands)), k) - 1.0
+        targets = np.flatnonzero(w[0])
+        motion.append(frame_motion(w[:, targets], motion_gram(dancer, targets))[0]
+                      if len(targets) else 0.0)
+    return np.array(motion)
+
+
 def gallery_correlations(dancer: Dancer, spectrogram, mappings) -> np.ndarray:
     """(S, S) correlation of the items' displacement fields over the song's frames:
     Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices."""
     weights = [item_weights(dancer, spectrogram, mapping) for mapping in mappings]
     union = np.unique(np.concatenate([targets for targets, _ in weights]))
-    gram = dancer.motion_gram(union)
+    gram = motion_gram(dancer, union)
     where = [np.searchsorted(union, targets) for targets, _ in weights]
     size = len(mappings)
     inner = np.zeros((size, size))
@@ -292,17 +322,16 @@ def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
     k = len(dancer.frequencies)
     mapping = Mapping(transfer, unit_amplification)
     targets = np.flatnonzero(unit_amplification)
-    gram = dancer.motion_gram(targets)
+    gram = motion_gram(dancer, targets)
     rms = frame_motion(mapping.filter(values, k)[:, targets] - 1.0, gram)
     typical, peak = np.percentile(rms, 95), rms.max()
     if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
-        full = frame_motion(mapping.filter(np.ones((1, values.shape[1])), k)[:, targets] - 1.0,
-                            gram)[0]
-        return target * diagonal / full
+        return target * diagonal / full_scale_motion(dancer, [mapping])[0]
     return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak)
 
 
-def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> list[Mapping]:
+def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
+                    amplitude: float | None = None) -> list[Mapping]:
     """The S items of the initial gallery (docs/design.md#gallery; departs from thesis §6.2.2).
 
     Parameters
@@ -310,6 +339,9 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) ->
     dancer : a `HarmonicBasis` (or any `Dancer`).
     spectrogram : the `Spectrogram` of the song that will play: each item is calibrated on it.
     size : S, checked by `check_gallery_size` (odd sizes too).
+    amplitude : None (the default: the construction below); a number M_a gives the thesis's own
+        gallery with that amplification, uncalibrated (`thesis_gallery`: a rig calibrates its
+        items itself).
 
     Returns
     -------
@@ -338,6 +370,8 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) ->
     >>> [round(item.motion, 3) for item in gallery_motion(basis, song, gallery)]
     [0.04, 0.031, 0.024, 0.019, 0.015]
     """
+    if amplitude is not None:
+        return thesis_gallery(dancer, spectrogram, size, amplitude)
     size = check_gallery_size(size)
     k = len(dancer.frequencies)
     bands = spectrogram.bands
@@ -369,3 +403,82 @@ def strongest_item(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> 
     gallery = initial_gallery(dancer, spectrogram, size)
     motion = [item.motion for item in gallery_motion(dancer, spectrogram, gallery)]
     return gallery[int(np.argmax(motion))]
+
+
+# ---------------------------------------------------------------------------------------------
+# The thesis's initial gallery (§6.2.2), as written: for dancers that calibrate themselves (a
+# rig's ranked modes, `eigendance.modal.rig.rig_gallery`) and for comparison
+
+
+def initial_indices(frequencies, band_edges, positions=None) -> np.ndarray:
+    """ν_ini at (possibly fractional) band positions x (default 0 … B−1), int64.
+
+    ν_ini(x) = the smallest ν with f_x / f_{B−1} ≤ ω_ν / ω_{k−1} (thesis 6-4 with ω = √λ),
+    where f_x is the geometric centre of band x. Band edges are geometric, so
+    f_x / f_{B−1} = (e_B / e_0)^((x − B + 1)/B) exactly, which also defines f_x between bands
+    (the gallery's t(εξ)).
+    """
+    frequencies = np.maximum(np.asarray(frequencies, dtype=np.float64), 0.0)
+    band_edges = np.asarray(band_edges, dtype=np.float64)
+    bands = len(band_edges) - 1
+    if positions is None:
+        positions = np.arange(bands, dtype=np.float64)
+    if not frequencies[-1] > 0:
+        raise InputError("the model has no positive frequency; cannot build transfers")
+    ratio = (band_edges[-1] / band_edges[0]) ** ((np.asarray(positions) - bands + 1) / bands)
+    levels = frequencies / frequencies[-1]  # non-decreasing, ends at 1
+    index = np.searchsorted(levels, ratio, side="left")
+    return np.minimum(index, len(frequencies) - 1).astype(np.int64)
+
+
+def direct_transfer(frequencies, band_edges, positions=None) -> np.ndarray:
+    """t_ini = (ν_ini + ½)/k: low sounds drive low harmonics (thesis 6-4)."""
+    k = len(frequencies)
+    return (initial_indices(frequencies, band_edges, positions) + 0.5) / k
+
+
+def reversed_transfer(frequencies, band_edges, positions=None) -> np.ndarray:
+    """t_rev = (k − 1 − ν_ini + ½)/k: low sounds drive high harmonics."""
+    k = len(frequencies)
+    return (k - 1 - initial_indices(frequencies, band_edges, positions) + 0.5) / k
+
+
+def gallery_epsilons(size: int) -> np.ndarray:
+    """The ⌈S/2⌉ compressions ε of the transfers: 0, 1, 2/S, 4/S, …"""
+    count = (size + 1) // 2
+    return np.array([0.0, 1.0, *[2 * i / size for i in range(1, count - 1)]])[:count]
+
+
+def gallery_intervals(size: int) -> np.ndarray:
+    """The ⌈S/2⌉ normalised amplification intervals I_ε = [ε², (ε + 2/S)²], ε = 0, 2/S, …"""
+    eps = 2 * np.arange((size + 1) // 2) / size
+    return np.stack([eps ** 2, (eps + 2 / size) ** 2], axis=1)
+
+
+def thesis_gallery(dancer: Dancer, spectrogram, size: int, amplitude: float) -> list[Mapping]:
+    """The thesis's initial gallery (§6.2.2) with M_a = amplitude, uncalibrated.
+
+    Item i < ⌈S/2⌉: transfer t_ini(ε_i·ξ), amplification +M_a on interval I_i, 0 elsewhere; the
+    other ⌊S/2⌋ items: t_rev(ε_i·ξ) and −M_a on I_i. ε_i = 0, 1, 2/S, 4/S, …;
+    I_i = [(2i/S)², ((2i+2)/S)²] of the normalised target range: target ν is in I_i when its
+    cell centre (ν + ½)/k lies in [lower, upper) (the last one closed). On a mesh's harmonics
+    most items never move (docs/design.md#gallery): `initial_gallery` is the one to use.
+    """
+    size = check_gallery_size(size)
+    edges = np.asarray(getattr(spectrogram, "band_edges", spectrogram), dtype=np.float64)
+    bands = len(edges) - 1
+    frequencies = dancer.frequencies
+    k = len(frequencies)
+    xi = np.arange(bands, dtype=np.float64)
+    centres = (np.arange(k) + 0.5) / k
+    intervals = gallery_intervals(size)
+    epsilons = gallery_epsilons(size)
+    items = []
+    for sign, transfer, count in ((1.0, direct_transfer, (size + 1) // 2),
+                                  (-1.0, reversed_transfer, size // 2)):
+        for i, eps in enumerate(epsilons[:count]):
+            lower, upper = intervals[i]
+            last = i == len(intervals) - 1
+            inside = (centres >= lower) & ((centres <= upper) if last else (centres < upper))
+            items.append((transfer(frequencies, edges, eps * xi), sign * inside * amplitude))
+    return [Mapping(t, a, None, f"gallery item {i + 1}") for i, (t, a) in enumerate(items)]
