@@ -47,6 +47,8 @@ from eigendance.modal.skeleton import read_joint_stiffness
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
+    MAX_GALLERY,
+    MIN_GALLERY,
     check_gallery_size,
     gallery_correlations,
     gallery_motion,
@@ -253,7 +255,7 @@ def add_gallery(parser):
     parser.add_argument("basis", help="basis file (.npz) or mesh file (solved with -k)")
     parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file: the song "
                                             "the initial items are calibrated on")
-    parser.add_argument("-n", "--size", type=integer_or_text, default=DEFAULT_GALLERY,
+    parser.add_argument("-n", "--size", type=gallery_size, default=DEFAULT_GALLERY,
                         help=f"number of gallery items, 2 to 16 (default {DEFAULT_GALLERY})")
     parser.add_argument("--seed", type=number(0, 2**32 - 1, integer=True), default=0,
                         help="breeding seed (default 0)")
@@ -267,12 +269,19 @@ def add_gallery(parser):
     add_output(parser, "folder for 0.json, 1.json, …")
 
 
-def integer_or_text(text: str):
-    """An int when the text is one; else the text, for `check_gallery_size` to refuse."""
+def gallery_size(text: str) -> int:
+    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`)."""
     try:
-        return int(text)
+        value = int(text)
     except ValueError:
-        return text
+        value = text
+    try:
+        return check_gallery_size(value)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+gallery_size.bounds = (MIN_GALLERY, MAX_GALLERY)  # for the tests of every numeric flag
 
 
 def run_gallery(args) -> None:

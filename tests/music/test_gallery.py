@@ -247,9 +247,11 @@ def test_cli_gallery_writes_the_items_and_shows_their_table(tmp_path, meshes, so
     assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "3",
                  "-o", str(tmp_path / "odd")]) == 0
     for size in ("17", "1", "x"):
-        assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", size,
-                     "-o", str(tmp_path / "big")]) == 1
-        assert "2 to 16 items" in capsys.readouterr().err
+        with pytest.raises(SystemExit) as refused:
+            main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", size,
+                  "-o", str(tmp_path / "big")])
+        assert refused.value.code == 1
+        assert "argument -n/--size: a gallery has 2 to 16 items" in capsys.readouterr().err
 
 
 # Breeding (docs/design.md#breeding)
