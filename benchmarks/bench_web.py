@@ -1,14 +1,19 @@
-"""Web player benchmark: per-frame deformation of S gallery tiles in headless Chromium.
+"""Web player benchmark: where a frame of the gallery goes in headless Chromium without a GPU.
 
-Serves MESH with the demo music through `eigendance serve`, opens the gallery with S tiles in
-headless Chromium (SwiftShader WebGL2 where there is no GPU) and times, per frame:
-  - the GPU deformation alone (weights upload + positions pass of every tile, synchronised),
-  - the CPU (JS) deformation alone,
-  - the whole frame (deformation + drawing every tile) on each path,
-beside the numpy reference for the same work (`HarmonicBasis.filter_positions` of S filters, one
-matrix product), and prints the ratios. Not run by CI.
+For each case — the demo (built-in cat, k = 150, the demo music) and the Stanford bunny (shared
+data, k = 300, the demo music) — serves it with `eigendance serve`, opens the gallery with S
+tiles in headless Chromium (SwiftShader WebGL2) and measures, per frame:
+  - deformation: the positions of every tile (GPU positions pass, or the JS CPU path), waited
+    for on the GPU;
+  - drawing: the surfaces of every tile (studio backdrop, shadow, model), waited for;
+  - the live page: frames it really draws per second while the music plays (counted from the
+    frames drawn over a few seconds of wall time), our code's share of each frame (issuing the
+    deformation and drawing, not waiting for the GPU), and the rest — compositing and
+    presenting the canvas, waiting for the rasteriser, the browser's other work;
+beside the numpy reference for the same deformation (`HarmonicBasis.filter_positions` of S
+filters, one matrix product), measured in the same run. Not run by CI.
 
-    python benchmarks/bench_web.py [--mesh bunny_stanford.obj] [-k 1000] [-S 12] [--frames 5]
+    python benchmarks/bench_web.py [--case demo|bunny|all] [-S 8] [--frames 5] [--seconds 4]
 """
 
 from __future__ import annotations
@@ -18,45 +23,46 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 import time
 import urllib.request
 
 import numpy as np
+from playwright.sync_api import sync_playwright
 
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.music.mapping import Mapping, filters
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.server.serve import demo_paths
 from shared_data import shared_path
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-BUNNY = shared_path("meshes", "bunny_stanford.obj")
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run"]
+                 "--disable-component-update", "--disable-sync", "--no-first-run",
+                 "--autoplay-policy=no-user-gesture-required"]
+CASES = {"demo": (None, 150), "bunny": (shared_path("meshes", "bunny_stanford.obj"), 300)}
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mesh", default=BUNNY)
-    parser.add_argument("-k", type=int, default=1000)
-    parser.add_argument("-S", "--size", type=int, default=12)
-    parser.add_argument("--frames", type=int, default=5)
+    parser.add_argument("--case", choices=[*CASES, "all"], default="all")
+    parser.add_argument("-S", "--size", type=int, default=8)
+    parser.add_argument("--frames", type=int, default=5, help="frames per timed part")
+    parser.add_argument("--seconds", type=float, default=4.0, help="of live playback")
     parser.add_argument("--port", type=int, default=8791)
     args = parser.parse_args()
+    cat, song = demo_paths()
+    print(f"S = {args.size} tiles, headless Chromium without a GPU, viewport 1280x800")
+    for name in (CASES if args.case == "all" else [args.case]):
+        mesh, k = CASES[name]
+        run_case(name, mesh or cat, k, song, args)
 
-    from eigendance.harmonic.basis import HarmonicBasis
-    from eigendance.music.demo_music import write_demo_wav
-    from eigendance.music.mapping import Mapping
-    from eigendance.music.spectrogram import Spectrogram
 
-    folder = tempfile.mkdtemp(prefix="bench-web-")
-    song = os.path.join(folder, "demo.wav")
-    write_demo_wav(song, duration=10.0)
+def run_case(name: str, mesh: str, k: int, song: str, args) -> None:
     start = time.perf_counter()
-    basis = HarmonicBasis.from_mesh(args.mesh, args.k)  # cached after the first run
-    print(f"mesh {os.path.basename(args.mesh)}: n = {basis.n}, k = {basis.k} "
-          f"(basis {time.perf_counter() - start:.1f} s, cached after the first run)")
+    basis = HarmonicBasis.from_mesh(mesh, k)  # cached after the first run
+    solved = time.perf_counter() - start
     spectrogram = Spectrogram.from_file(song)
-
     server = subprocess.Popen(
-        [sys.executable, "-m", "eigendance.cli", "serve", args.mesh, song, "-k", str(args.k),
+        [sys.executable, "-m", "eigendance.cli", "serve", mesh, song, "-k", str(k),
          "--port", str(args.port)], stdout=subprocess.PIPE, text=True)
     try:
         url = server.stdout.readline().split()[-1]
@@ -70,54 +76,59 @@ def main() -> None:
         server.terminate()
         server.wait(10)
 
-    mappings = [Mapping.from_json(m) for m in results.pop("mappings")]
+    mappings = [Mapping.from_json(m) for m in results["mappings"]]
     times = 1.0 + 0.1 * np.arange(args.frames)
     values = spectrogram.at(times)
-    from eigendance.music.mapping import filters
-
-    phi = filters(mappings, values[:1], basis.k)  # warm-up
-    basis.filter_positions(phi[:, 0])
+    basis.filter_positions(filters(mappings, values[:1], basis.k)[:, 0])  # warm-up
     start = time.perf_counter()
     for frame in range(args.frames):
-        phi = filters(mappings, values[frame:frame + 1], basis.k)[:, 0]
-        basis.filter_positions(phi)
+        basis.filter_positions(filters(mappings, values[frame:frame + 1], basis.k)[:, 0])
     numpy_ms = (time.perf_counter() - start) / args.frames * 1000
 
-    print(f"S = {args.size} tiles, {args.frames} frames each, headless Chromium "
-          f"({results['renderer']}), viewport 1280x800")
-    rows = [("numpy reference (S filters, one product)", numpy_ms),
-            ("GPU deformation (positions pass)", results["gpu_deform"]),
-            ("JS CPU deformation", results["cpu_deform"]),
-            ("whole frame, GPU path", results["gpu_frame"]),
-            ("whole frame, CPU path", results["cpu_frame"])]
-    for name, ms in rows:
-        print(f"  {name:42s} {ms:9.1f} ms/frame   ratio to numpy {ms / numpy_ms:7.2f}")
-    print(f"  start-up choice of the app: {results['path'].upper()} path")
+    chosen = results["path"]
+    interval = 1000 / results["fps"] if results["fps"] > 0 else float("nan")
+    print(f"\n{name}: {os.path.basename(mesh)}, n = {basis.n}, k = {basis.k} (basis "
+          f"{solved:.1f} s, cached after the first run); {results['renderer']}")
+    print(f"  numpy reference, S filters, one product    {numpy_ms:8.1f} ms/frame")
+    for path in ("gpu", "cpu"):
+        mark = "  ← the page's choice" if path == chosen else ""
+        print(f"  {path.upper()} path: deformation {results[path]['deformation']:8.1f} ms "
+              f"({results[path]['deformation'] / numpy_ms:5.1f}× numpy), drawing "
+              f"{results[path]['drawing']:8.1f} ms{mark}")
+    print(f"  live page ({chosen.upper()}): {results['fps']:.1f} frames/s drawn = "
+          f"{interval:.0f} ms a frame: our code {results['ours']:.0f} ms, compositing and the rest "
+          f"{interval - results['ours']:.0f} ms (the page says {results['readout'] or 'nothing'}"
+          f"{' and offers fewer tiles' if results['offer'] else ''})")
 
 
 def browser_timings(url: str, args) -> dict:
-    from playwright.sync_api import sync_playwright
-
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
                                              args=CHROMIUM_ARGS)
         page = browser.new_page(viewport={"width": 1280, "height": 800})
-        page.goto(f"{url}?render&size={args.size}")
+        page.goto(f"{url}?test&size={args.size}")
         page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=600_000)
-        page.evaluate("window.eigendance.ready", )
+        page.evaluate("window.eigendance.ready")
         out = {"path": page.evaluate("window.eigendance.info().path"),
                "mappings": page.evaluate("window.eigendance.mappings()"),
                "renderer": page.evaluate("""() => {
-                   const gl = document.getElementById('gl').getContext('webgl2');
+                   const gl = document.createElement('canvas').getContext('webgl2');
                    const info = gl.getExtension('WEBGL_debug_renderer_info');
                    return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : 'WebGL2';
                }""")}
         for path in ("gpu", "cpu"):
             page.evaluate(f"window.eigendance.setPath('{path}')")
-            out[f"{path}_deform"] = page.evaluate(
-                f"window.eigendance.timeDeformation({args.frames}).frame")
-            out[f"{path}_frame"] = page.evaluate(
-                f"window.eigendance.timeFrames({args.frames}).frame")
+            out[path] = page.evaluate(f"window.eigendance.profileFrames({args.frames})")
+        page.evaluate(f"window.eigendance.setPath('{out['path']}')")
+        page.click("#play")
+        page.wait_for_timeout(1000)  # past the first frames
+        first = page.evaluate("[performance.now(), window.eigendance.info().frames]")
+        page.wait_for_timeout(int(1000 * args.seconds))
+        last = page.evaluate("[performance.now(), window.eigendance.info().frames]")
+        out["fps"] = 1000 * (last[1] - first[1]) / (last[0] - first[0])
+        out["ours"] = page.evaluate("window.eigendance.info().frameMs")
+        out["readout"] = page.inner_text("#fps")
+        out["offer"] = page.is_visible("#notice")
         browser.close()
     return out
 

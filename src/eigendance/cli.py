@@ -46,9 +46,12 @@ from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
 from eigendance.modal.skeleton import read_joint_stiffness
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
-    CALIBRATIONS,
     DEFAULT_GALLERY,
+    MAX_GALLERY,
+    MIN_GALLERY,
     check_gallery_size,
+    gallery_correlations,
+    gallery_motion,
     initial_gallery,
     strongest_item,
 )
@@ -250,20 +253,35 @@ def run_spectrum(args) -> None:
 
 def add_gallery(parser):
     parser.add_argument("basis", help="basis file (.npz) or mesh file (solved with -k)")
-    parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file")
-    parser.add_argument("-n", "--size", type=int, default=DEFAULT_GALLERY,
-                        help=f"number of gallery items (default {DEFAULT_GALLERY})")
+    parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file: the song "
+                                            "the initial items are calibrated on")
+    parser.add_argument("-n", "--size", type=gallery_size, default=DEFAULT_GALLERY,
+                        help=f"number of gallery items, 2 to 16 (default {DEFAULT_GALLERY})")
     parser.add_argument("--seed", type=number(0, 2**32 - 1, integer=True), default=0,
                         help="breeding seed (default 0)")
     parser.add_argument("--breed", nargs="+", metavar="MAPPING",
                         help="breed children of these mapping files instead of the initial "
                              "gallery")
-    parser.add_argument("--calibration", choices=CALIBRATIONS, default="strongest",
-                        help="initial gallery: one amplification so the strongest item moves "
-                             "5%% of the diagonal (default), or each item its own")
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="print each item's motion on the song and the harmonics it drives")
     parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when BASIS is a mesh file (default 300)")
     add_output(parser, "folder for 0.json, 1.json, …")
+
+
+def gallery_size(text: str) -> int:
+    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = text
+    try:
+        return check_gallery_size(value)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+gallery_size.bounds = (MIN_GALLERY, MAX_GALLERY)  # for the tests of every numeric flag
 
 
 def run_gallery(args) -> None:
@@ -271,17 +289,40 @@ def run_gallery(args) -> None:
     paths = [os.path.join(args.output, f"{i}.json") for i in range(size)]
     for path in paths:
         refuse_overwrite(path, args.force)
+    basis = spectrogram = None
     if args.breed:
         parents = [Mapping.load(path) for path in args.breed]
         items = breed(parents, size, args.seed)
-    else:
+    if not args.breed or args.verbose:
         basis = basis_from(args.basis, args.k)
         spectrogram = spectrogram_from(args.spectrogram)
-        items = initial_gallery(basis, spectrogram, size, calibration=args.calibration)
+    if not args.breed:
+        items = initial_gallery(basis, spectrogram, size)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"
     print(f"{args.output}: {len(items)} mappings ({what})")
+    if args.verbose:
+        print("\n".join(gallery_table(basis, spectrogram, items)))
+
+
+def gallery_table(basis, spectrogram, items) -> list[str]:
+    """Lines of the --verbose table: each item's m and peak motion on the song (percent of the
+    bounding-box diagonal) and its main harmonic range, then the largest correlation."""
+    lines = [f"{'item':>4} {'m':>7} {'peak':>7}  main harmonics (of k = {basis.k})"]
+    for number, measured in enumerate(gallery_motion(basis, spectrogram, items), 1):
+        harmonics = "none" if measured.lowest < 0 else \
+            f"{measured.lowest}" if measured.lowest == measured.highest else \
+            f"{measured.lowest}–{measured.highest}"
+        lines.append(f"{number:>4} {100 * measured.motion:>6.2f}% {100 * measured.peak:>6.2f}%"
+                     f"  {harmonics}")
+    correlations = np.abs(gallery_correlations(basis, spectrogram, items))
+    np.fill_diagonal(correlations, 0)
+    first, second = np.unravel_index(np.argmax(correlations), correlations.shape)
+    lines.append(f"m: 95th percentile over the song's frames of the RMS vertex displacement / "
+                 f"bounding-box diagonal; largest correlation between two items: "
+                 f"{correlations[first, second]:.3f} (items {first + 1} and {second + 1})")
+    return lines
 
 
 def add_animate(parser):

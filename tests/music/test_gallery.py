@@ -1,3 +1,7 @@
+"""The initial gallery (docs/design.md#gallery): every item dances, visibly and differently, on
+several meshes × songs, checked against displacements computed directly (not through the Gram
+matrices the gallery uses)."""
+
 import json
 import os
 import shutil
@@ -14,26 +18,243 @@ from eigendance.music.demo_music import demo_track
 from eigendance.music.gallery import (
     MAX_GALLERY,
     MIN_GALLERY,
-    TARGET_MOTION,
-    direct_transfer,
-    full_scale_motion,
-    gallery_epsilons,
-    gallery_intervals,
+    MOTION_BOUNDS,
+    MOTION_HIGHEST,
+    MOTION_LOWEST,
+    drivable_harmonics,
+    gallery_correlations,
+    gallery_motion,
     initial_gallery,
-    reversed_transfer,
+    motion_content,
     strongest_item,
 )
-from eigendance.music.mapping import Mapping
-from eigendance.music.spectrogram import Spectrogram, band_edges
-from helpers import bumpy_sphere
+from eigendance.music.mapping import Mapping, harmonic_indices
+from eigendance.music.spectrogram import Spectrogram
+from helpers import bumpy_sphere, fixture_path, sphere
 
-EDGES = band_edges(64, 44100)
+CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
+                   "cat_lowres.obj")
+LOW, HIGH = MOTION_BOUNDS
 JS = os.path.join(os.path.dirname(__file__), "..", "js", "breed_reference.mjs")
 
 
 @pytest.fixture(scope="module")
-def basis():
-    return HarmonicBasis.from_mesh(bumpy_sphere(2), 40, cache=False)
+def meshes():
+    """Bases of meshes made by code, fixture meshes and the built-in cat (small k: fast)."""
+    return {"icosphere": HarmonicBasis.from_mesh(sphere(3), 40, cache=False),
+            "bumpy sphere": HarmonicBasis.from_mesh(bumpy_sphere(2), 40, cache=False),
+            "knight": HarmonicBasis.from_mesh(fixture_path("meshes", "decimated-knight.off"),
+                                              60, cache=False),
+            "teapot": HarmonicBasis.from_mesh(fixture_path("meshes", "teapot.obj"), 40,
+                                              cache=False),
+            "beetle": HarmonicBasis.from_mesh(fixture_path("meshes", "beetle.obj"), 40,
+                                              laplacian="robust", cache=False),
+            "cat": HarmonicBasis.from_mesh(CAT, 60, cache=False)}
+
+
+@pytest.fixture(scope="module")
+def songs():
+    demo = Spectrogram.from_samples(*demo_track(6.0))
+    vibe, rate = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg"), None
+    trumpet = Spectrogram.from_file(fixture_path("audio", "sorohanro_solo_trumpet_06.ogg"))
+    vibe = Spectrogram.from_file(vibe)
+    samples, rate = demo_track(4.0)
+    quiet = Spectrogram.from_samples(samples * 10 ** (-45 / 20), rate)  # 45 dB down
+    return {"demo": demo, "vibe ace": vibe, "trumpet": trumpet, "quiet demo": quiet}
+
+
+def direct_motion(basis, song, mapping):
+    """RMS displacement / diagonal of every frame, from the positions themselves (T,)."""
+    phi = mapping.filter(song.values.astype(np.float64), basis.k)
+    moved = basis.displacements(phi)
+    return np.sqrt((moved ** 2).sum(axis=2).mean(axis=1)) / basis.diagonal
+
+
+def direct_correlations(basis, song, gallery):
+    """Correlations of the displacement fields over the song, from the positions themselves."""
+    fields = np.array([basis.displacements(item.filter(song.values.astype(np.float64),
+                                                       basis.k)).ravel() for item in gallery])
+    norms = np.linalg.norm(fields, axis=1)
+    return fields @ fields.T / np.outer(norms, norms)
+
+
+def zero_eigenvalue_harmonics(basis):
+    return np.flatnonzero(basis.eigenvalues < 1e-9 * basis.eigenvalues[-1])
+
+
+@pytest.mark.parametrize("name", ["icosphere", "bumpy sphere", "knight"])
+def test_motion_and_correlations_equal_the_positions_themselves(meshes, songs, name):
+    basis, song = meshes[name], songs["vibe ace"]
+    gallery = initial_gallery(basis, song, 8)
+    motion = gallery_motion(basis, song, gallery)
+    for item, measured in zip(gallery, motion, strict=True):
+        rms = direct_motion(basis, song, item)
+        assert measured.motion == pytest.approx(np.percentile(rms, 95), rel=1e-9)
+        assert measured.peak == pytest.approx(rms.max(), rel=1e-9)
+    np.testing.assert_allclose(gallery_correlations(basis, song, gallery),
+                               direct_correlations(basis, song, gallery), atol=1e-9)
+
+
+@pytest.mark.parametrize("size", [2, 3, 8, 16])
+def test_every_item_dances_visibly_and_differently_on_every_mesh_and_song(meshes, songs, size):
+    for mesh_name, basis in meshes.items():
+        for song_name, song in songs.items():
+            where = f"{mesh_name}, {song_name}, S = {size}"
+            gallery = initial_gallery(basis, song, size)
+            motion = gallery_motion(basis, song, gallery)
+            for number, measured in enumerate(motion):
+                assert LOW <= measured.motion <= HIGH, f"{where}: item {number} m = " \
+                    f"{measured.motion:.4f}"
+                assert measured.peak <= 0.15 + 1e-9, f"{where}: item {number} explodes"
+            correlations = np.abs(gallery_correlations(basis, song, gallery))
+            np.fill_diagonal(correlations, 0)
+            assert correlations.max() <= 0.9, f"{where}: items correlate " \
+                f"{correlations.max():.3f}"
+            zero = zero_eigenvalue_harmonics(basis)
+            for item in gallery:  # eigenvalue-0 harmonics (translations) are never driven
+                assert not np.isin(harmonic_indices(item.transfer, basis.k), zero).any(), where
+                assert (item.amplification[zero] == 0).all(), where
+
+
+def test_items_drive_the_spectrum_from_low_to_high(meshes, songs):
+    for name in ("bumpy sphere", "knight", "teapot", "beetle", "cat"):
+        basis = meshes[name]
+        drivable = drivable_harmonics(basis)
+        for size in (4, 8, 16):
+            motion = gallery_motion(basis, songs["demo"], initial_gallery(basis, songs["demo"],
+                                                                         size))
+            lowest = [item.lowest for item in motion]
+            highest = [item.highest for item in motion]
+            assert lowest[0] == highest[0] == drivable[0], name
+            assert lowest[-1] == highest[-1] == drivable[-1], name
+            assert (np.diff(lowest) > 0).all() and (np.diff(highest) > 0).all(), \
+                f"{name}, S = {size}: ranges {list(zip(lowest, highest, strict=True))}"
+            targets = [item.motion for item in motion]  # calibrated exactly on the song
+            np.testing.assert_allclose(targets[0], MOTION_LOWEST, rtol=1e-9)
+            np.testing.assert_allclose(targets[-1], MOTION_HIGHEST, rtol=1e-9)
+
+
+def test_initial_items_span_what_breeding_needs(meshes, songs):
+    """Per band, the transfers reach from the lowest to the highest drivable harmonic; per
+    drivable harmonic, the amplifications hold both signs; any initial transfer crossed with any
+    initial amplification moves the model as much as the transfer's own item."""
+    basis, song = meshes["knight"], songs["trumpet"]
+    drivable = drivable_harmonics(basis)
+    for size in (2, 5, 8):
+        gallery = initial_gallery(basis, song, size)
+        targets = np.array([harmonic_indices(item.transfer, basis.k) for item in gallery])
+        assert (targets.min(axis=0) == drivable[0]).all()
+        assert (targets.max(axis=0) == drivable[-1]).all()
+        amplification = np.array([item.amplification for item in gallery])
+        assert (amplification[:, drivable].max(axis=0) > 0).all()
+        assert (amplification[:, drivable].min(axis=0) < 0).all()
+        others = np.setdiff1d(np.arange(basis.k), drivable)
+        assert (amplification[:, others] == 0).all()
+        own = [measured.motion for measured in gallery_motion(basis, song, gallery)]
+        for i, item in enumerate(gallery):
+            crossed = [Mapping(item.transfer, other.amplification) for other in gallery]
+            np.testing.assert_allclose([m.motion for m in gallery_motion(basis, song, crossed)],
+                                       own[i], rtol=1e-9)
+
+
+def test_children_of_the_initial_gallery_move(meshes, songs):
+    basis, song = meshes["cat"], songs["demo"]
+    gallery = initial_gallery(basis, song, 8)
+    children = breed([gallery[1], gallery[4], gallery[6]], 8, seed=3)
+    assert all(item.motion > 0.002 for item in gallery_motion(basis, song, children))
+
+
+def test_a_quiet_song_moves_as_visibly_as_a_loud_one_and_silence_stays_still(meshes, songs):
+    basis = meshes["bumpy sphere"]
+    samples, rate = demo_track(4.0)
+    loud = Spectrogram.from_samples(samples, rate)
+    for song in (loud, songs["quiet demo"]):
+        motion = [m.motion for m in gallery_motion(basis, song, initial_gallery(basis, song))]
+        np.testing.assert_allclose(motion[0], MOTION_LOWEST, rtol=1e-9)
+    silence = Spectrogram.from_samples(np.zeros(rate), rate)
+    gallery = initial_gallery(basis, silence, 6)  # calibrated at full-scale input instead
+    assert all(np.isfinite(item.amplification).all() for item in gallery)
+    assert all(m.motion == 0 for m in gallery_motion(basis, silence, gallery))
+    full = Spectrogram.from_samples(np.zeros(rate), rate)
+    full.values[:] = 1.0
+    np.testing.assert_allclose(gallery_motion(basis, full, gallery[:1])[0].motion,
+                               MOTION_LOWEST, rtol=1e-9)
+
+
+def test_every_size_of_the_rule_works_and_others_are_refused(meshes, songs):
+    basis, song = meshes["bumpy sphere"], songs["demo"]
+    for size in range(MIN_GALLERY, MAX_GALLERY + 1):  # odd sizes included
+        gallery = initial_gallery(basis, song, size)
+        assert len(gallery) == size
+        assert len({tuple(item.transfer) for item in gallery}) == size
+    for size in (MIN_GALLERY - 1, MAX_GALLERY + 1, 8.0, True, "8"):
+        with pytest.raises(EigendanceError, match=f"{MIN_GALLERY} to {MAX_GALLERY} items"):
+            initial_gallery(basis, song, size)
+
+
+def test_a_model_with_few_moving_harmonics_combines_them(meshes, songs):
+    """An icosphere moves only through a few triples of harmonics: items combine them."""
+    basis, song = meshes["icosphere"], songs["demo"]
+    content = motion_content(basis)
+    drivable = drivable_harmonics(basis, content)
+    assert drivable.tolist() == [1, 2, 3, 30, 31, 32]  # x, y, z and the next symmetric triple
+    assert content[np.setdiff1d(np.arange(1, basis.k), drivable)].max() < 1e-9 * content.max()
+    assert content[drivable].min() > 1e-5 * content.max()
+    small = HarmonicBasis.from_mesh(sphere(2), 12, cache=False)  # only x, y and z move it
+    assert len(initial_gallery(small, song, 13)) == 13
+    with pytest.raises(EigendanceError, match="only 3 harmonics that move it") as raised:
+        initial_gallery(small, song, 14)
+    assert raised.value.remedy == {"k": 48}
+
+
+def test_strongest_item_moves_most(meshes, songs):
+    basis, song = meshes["knight"], songs["demo"]
+    gallery = initial_gallery(basis, song)
+    motion = [m.motion for m in gallery_motion(basis, song, gallery)]
+    assert strongest_item(basis, song).to_json() == gallery[int(np.argmax(motion))].to_json()
+
+
+def test_cli_gallery_writes_the_items_and_shows_their_table(tmp_path, meshes, songs, capsys):
+    basis = meshes["knight"]
+    samples, rate = demo_track(2.0)
+    Spectrogram.from_samples(samples, rate).save(tmp_path / "s.npz")
+    basis.save(tmp_path / "b.npz")
+    out = tmp_path / "gallery"
+    assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "5",
+                 "-o", str(out), "--verbose"]) == 0
+    assert sorted(os.listdir(out)) == [f"{i}.json" for i in range(5)]
+    shown = capsys.readouterr().out.splitlines()
+    header = next(i for i, line in enumerate(shown) if line.split()[:3] == ["item", "m", "peak"])
+    rows = [line.split() for line in shown[header + 1:header + 6]]
+    assert [row[0] for row in rows] == ["1", "2", "3", "4", "5"]
+    assert float(rows[0][1].rstrip("%")) == pytest.approx(100 * MOTION_LOWEST, abs=0.01)
+    assert any("largest correlation" in line for line in shown)
+    first = Mapping.load(out / "0.json")
+    assert first.bands == 64 and len(first.amplification) == basis.k and first.seed is None
+    children = tmp_path / "children"
+    arguments = ["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "--breed",
+                 str(out / "3.json"), str(out / "4.json"), "-n", "4", "--seed", "9",
+                 "-o", str(children)]
+    assert main(arguments) == 0
+    child = Mapping.load(children / "2.json")
+    expected = breed([Mapping.load(out / "3.json"), Mapping.load(out / "4.json")], 4, 9)[2]
+    np.testing.assert_array_equal(child.transfer, expected.transfer)
+    assert child.seed == 9
+    assert main(arguments) == 1  # refuses to overwrite
+    assert "exists; pass --force" in capsys.readouterr().err
+    assert main([*arguments, "--force", "--verbose"]) == 0
+    assert "item" in capsys.readouterr().out
+    assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "3",
+                 "-o", str(tmp_path / "odd")]) == 0
+    for size in ("17", "1", "x"):
+        with pytest.raises(SystemExit) as refused:
+            main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", size,
+                  "-o", str(tmp_path / "big")])
+        assert refused.value.code == 1
+        assert "argument -n/--size: a gallery has 2 to 16 items" in capsys.readouterr().err
+
+
+# Breeding (docs/design.md#breeding)
 
 
 def test_mulberry32_matches_the_javascript_reference():
@@ -42,61 +263,6 @@ def test_mulberry32_matches_the_javascript_reference():
     assert random.uniform() == 0.6270739405881613
     assert random.next_uint32() == 11749833
     assert Mulberry32(2 ** 32 + 1).next_uint32() == Mulberry32(1).next_uint32()
-
-
-def test_epsilons_and_intervals():
-    np.testing.assert_allclose(gallery_epsilons(8), [0, 1, 0.25, 0.5])
-    np.testing.assert_allclose(gallery_epsilons(2), [0])
-    np.testing.assert_allclose(gallery_intervals(8),
-                               [[0, 1 / 16], [1 / 16, 1 / 4], [1 / 4, 9 / 16], [9 / 16, 1]])
-
-
-def test_initial_gallery_structure_and_calibration(basis):
-    size = 8
-    gallery = initial_gallery(basis, EDGES, size)
-    assert len(gallery) == size
-    xi = np.arange(64.0)
-    for i, eps in enumerate(gallery_epsilons(size)):
-        np.testing.assert_allclose(gallery[i].transfer,
-                                   direct_transfer(basis.frequencies, EDGES, eps * xi))
-        np.testing.assert_allclose(gallery[4 + i].transfer,
-                                   reversed_transfer(basis.frequencies, EDGES, eps * xi))
-    assert len(set(gallery[0].transfer)) == 1  # ε = 0: a constant map
-    np.testing.assert_allclose(gallery[1].transfer, direct_transfer(basis.frequencies, EDGES))
-    amplitude = max(np.abs(item.amplification).max() for item in gallery)
-    first = np.array([item.amplification for item in gallery[:4]])
-    second = np.array([item.amplification for item in gallery[4:]])
-    np.testing.assert_array_equal(second, -first)
-    assert (first >= 0).all()
-    # Every harmonic lies in exactly one interval; intervals are finer at low frequencies.
-    np.testing.assert_array_equal((first > 0).sum(axis=0), 1)
-    widths = (first > 0).sum(axis=1)
-    assert (np.diff(widths) > 0).all()
-    motion = full_scale_motion(basis, gallery)
-    assert motion.max() / basis.diagonal == pytest.approx(TARGET_MOTION, rel=1e-9)
-    assert strongest_item(basis, EDGES, size).name == gallery[int(motion.argmax())].name
-    scaled = initial_gallery(basis, EDGES, size, amplitude=2 * amplitude)
-    np.testing.assert_allclose(scaled[0].amplification, 2 * gallery[0].amplification)
-
-
-def test_each_item_calibration_gives_every_moving_item_five_percent(basis):
-    gallery = initial_gallery(basis, EDGES, 8, calibration="each")
-    motion = full_scale_motion(basis, gallery) / basis.diagonal
-    moving = motion > 0
-    assert moving.sum() >= 2
-    np.testing.assert_allclose(motion[moving], TARGET_MOTION, rtol=1e-6)
-    with pytest.raises(EigendanceError, match="unknown calibration"):
-        initial_gallery(basis, EDGES, 8, calibration="median")
-
-
-def test_every_gallery_size_of_the_rule_works_and_others_are_refused(basis):
-    for size in range(MIN_GALLERY, MAX_GALLERY + 1):  # odd sizes included
-        gallery = initial_gallery(basis, EDGES, size)
-        assert len(gallery) == size
-        assert len({tuple(item.amplification) for item in gallery}) == size
-    for size in (MIN_GALLERY - 1, MAX_GALLERY + 1, 8.0, True):
-        with pytest.raises(EigendanceError, match=f"{MIN_GALLERY} to {MAX_GALLERY} items"):
-            initial_gallery(basis, EDGES, size)
 
 
 def distinct_parents(rng, count=2, bands=64, k=40):
@@ -182,35 +348,6 @@ def test_javascript_port_breeds_identical_children(rng):
     for python, javascript in zip(children, ported, strict=True):
         assert list(python.transfer) == javascript["transfer"]
         assert list(python.amplification) == javascript["amplification"]
-
-
-def test_cli_gallery_and_breed(tmp_path, basis, capsys):
-    samples, sr = demo_track(1.0)
-    Spectrogram.from_samples(samples, sr).save(tmp_path / "s.npz")
-    basis.save(tmp_path / "b.npz")
-    out = tmp_path / "gallery"
-    assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "6",
-                 "-o", str(out)]) == 0
-    assert sorted(os.listdir(out)) == [f"{i}.json" for i in range(6)]
-    first = Mapping.load(out / "0.json")
-    assert first.bands == 64 and len(first.amplification) == basis.k and first.seed is None
-    children = tmp_path / "children"
-    arguments = ["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "--breed",
-                 str(out / "3.json"), str(out / "5.json"), "-n", "4", "--seed", "9",
-                 "-o", str(children)]
-    assert main(arguments) == 0
-    child = Mapping.load(children / "2.json")
-    expected = breed([Mapping.load(out / "3.json"), Mapping.load(out / "5.json")], 4, 9)[2]
-    np.testing.assert_array_equal(child.transfer, expected.transfer)
-    assert child.seed == 9
-    assert main(arguments) == 1  # refuses to overwrite
-    assert "exists; pass --force" in capsys.readouterr().err
-    assert main([*arguments, "--force"]) == 0
-    assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "3",
-                 "-o", str(tmp_path / "odd")]) == 0
-    assert main(["gallery", str(tmp_path / "b.npz"), str(tmp_path / "s.npz"), "-n", "17",
-                 "-o", str(tmp_path / "big")]) == 1
-    assert "2 to 16 items" in capsys.readouterr().err
 
 
 def test_children_keep_the_settings_of_their_first_drawn_parent(rng):

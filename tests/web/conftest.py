@@ -10,7 +10,16 @@ import pytest
 
 sys.path.insert(0, os.path.dirname(__file__))
 
-from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, E2E_K, free_port, write_icosphere, write_song
+from web_helpers import (
+    CAT,
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    E2E_K,
+    REAL_SONG,
+    free_port,
+    write_icosphere,
+    write_song,
+)
 
 
 @pytest.fixture(scope="session")
@@ -23,11 +32,12 @@ def web_files(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def live_server(web_files):
-    """`eigendance serve CAT SONG -k 24` on a free port of 127.0.0.1, as a subprocess."""
+    """`eigendance serve CAT SONG REAL_SONG -k 24` on a free port of 127.0.0.1, as a
+    subprocess (SONG, generated, comes first: the page's default)."""
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
     command = [sys.executable, "-m", "eigendance.cli", "serve", CAT, web_files["song"],
-               "-k", str(E2E_K), "--port", str(port)]
+               REAL_SONG, "-k", str(E2E_K), "--port", str(port)]
     log = open(web_files["folder"] / "server.log", "w")  # noqa: SIM115 - closed below
     process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=log, text=True)
     line = process.stdout.readline()

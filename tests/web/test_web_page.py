@@ -1,6 +1,6 @@
 """The page's options and failures in headless Chromium: the test hooks only in `?render` /
-`?test` mode, the gallery-size rule from `api/config`, and request failures shown in the status
-line with the page still usable (no unhandled rejection).
+`?test` mode, the gallery-size rule from `api/config` (the server's, the only one), and request
+failures shown in full as errors with the page still usable (no unhandled rejection).
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 """
@@ -39,6 +39,11 @@ def open_page(browser, url, query, routes=()):
 
 def status(page) -> str:
     return page.inner_text("#status")
+
+
+def error(page) -> str:
+    """The error banner's text ('' when none is shown)."""
+    return "" if page.is_hidden("#error") else page.inner_text("#error-text")
 
 
 def tile_count(page) -> int:
@@ -90,11 +95,19 @@ def test_a_size_outside_the_rule_falls_back_to_the_default_with_a_message(browse
 
 
 def test_a_failing_config_request_is_shown_and_the_page_still_starts(browser, live_server):
-    page = open_page(browser, live_server["url"], "?test&path=cpu&size=4",
+    page = open_page(browser, live_server["url"], "?test&path=cpu&size=5",
                      [("**/api/config", 500, {"error": "config exploded"})])
-    assert "config exploded" in status(page)
-    assert tile_count(page) == 4
+    assert "config exploded" in error(page)
+    assert tile_count(page) == 5 and size_menu(page) == [5]
     assert not page.errors, page.errors
+    page.close()
+    # Without the rule the server checks ?size= (one rule), and the page shows its default.
+    page = browser.new_page(viewport={"width": 1000, "height": 700})
+    page.route("**/api/config", answer(500, {"error": "config exploded"}))
+    page.goto(live_server["url"] + "?test&path=cpu&size=40")
+    page.wait_for_function("window.eigendance && window.eigendance.info().tiles === 8",
+                           timeout=60_000)
+    assert "2 to 16 items" in error(page)
     page.close()
 
 
@@ -104,15 +117,16 @@ def test_failing_gallery_and_breed_requests_show_the_servers_message(browser, li
     # The gallery: the server's error in the status line, the tiles and menu as they were.
     page.route("**/api/gallery", answer(400, {"error": "no gallery of that size today"}))
     page.select_option("#size", "6")
-    page.wait_for_function("document.getElementById('status').textContent"
+    page.wait_for_function("document.getElementById('error-text').textContent"
                            ".includes('no gallery of that size today')", timeout=20_000)
+    assert error(page) == "Could not make the gallery: no gallery of that size today"
     assert page.input_value("#size") == "4" and tile_count(page) == 4
     assert page.evaluate("window.eigendance.mappings()") == before
     # Breeding: the same, then the page is still usable once the server answers again.
     page.route("**/api/breed", answer(400, {"error": "parents do not agree"}))
     page.click(".tile[data-index='1'] .view")
     page.click("#breed")
-    page.wait_for_function("document.getElementById('status').textContent"
+    page.wait_for_function("document.getElementById('error-text').textContent"
                            ".includes('parents do not agree')", timeout=20_000)
     assert page.evaluate("window.eigendance.info().generations") == 1
     page.unroute("**/api/breed")

@@ -11,6 +11,7 @@ import urllib.request
 
 import numpy as np
 import pytest
+import trimesh
 from starlette.testclient import TestClient
 from web_helpers import free_port, write_icosphere, write_song
 
@@ -21,6 +22,7 @@ from eigendance.music.mapping import Mapping
 from eigendance.server.app import create_app
 from eigendance.server.binary import unpack
 from eigendance.server.library import Library
+from helpers import bumpy_sphere
 
 
 @pytest.fixture(scope="module")
@@ -221,6 +223,35 @@ def test_gallery_size_and_breed_seed_are_checked(client):
                                                 "size": 2}).json()["mappings"][0]
     for seed in (-1, 2**32, "7", True):
         error_of(client.post("/api/breed", json={"parents": [mapping], "seed": seed}), 400)
+
+
+def test_every_size_of_the_rule_works_odd_ones_too_and_others_are_refused(files, tmp_path):
+    mesh = bumpy_sphere(2)
+    path = tmp_path / "bumpy.obj"
+    trimesh.Trimesh(mesh.original_vertices, mesh.faces).export(path)
+    library = Library(str(tmp_path / "library"), k=40)
+    library.add_path(str(path))
+    library.add_path(files["song"])
+    assert library.wait(60)
+    with TestClient(create_app(library)) as test_client:
+        data = test_client.get("/api/library").json()
+        body = {"mesh": data["meshes"][0]["id"], "song": data["songs"][0]["id"]}
+        for size in range(2, 17):
+            response = test_client.post("/api/gallery", json={**body, "size": size})
+            assert len(response.json()["mappings"]) == size, response.text
+        assert len(test_client.post("/api/gallery", json=body).json()["mappings"]) == 8
+        for size in (1, 17, 8.5, "x", None):
+            assert "2 to 16 items" in error_of(
+                test_client.post("/api/gallery", json={**body, "size": size}), 400)
+    library.close()
+
+
+def test_upload_errors_name_the_persons_file_not_the_stored_one(client):
+    for name, content in (("my cat.obj", b"v 0 0 0\nv 1 0 0\nf 1 2 3\n"),
+                          ("my cat.obj", b"hello\n"), ("tune.wav", b"RIFF\0\0\0\0WAVEjunk")):
+        message = error_of(client.post(f"/api/upload?name={name}", content=content), 400)
+        assert message.startswith(f"{name}: ") and "upload-" not in message, message
+        assert client.library.folder not in message
 
 
 def test_config_holds_the_gallery_size_rule(client):

@@ -12,6 +12,9 @@ CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-backg
 CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
                    "cat_lowres.obj")
 E2E_K = 24
+# A real recording (tests/fixtures/audio/LICENSES.md), served beside the generated song.
+REAL_SONG = os.path.join(os.path.dirname(__file__), "..", "fixtures", "audio",
+                         "kevin_macleod_vibe_ace_20s-24s.ogg")
 
 
 def free_port() -> int:

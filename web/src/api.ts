@@ -52,8 +52,12 @@ export async function audioBytes(songId: string): Promise<ArrayBuffer> {
   return (await checked(await fetch(`api/songs/${songId}/audio`))).arrayBuffer();
 }
 
-export async function gallery(mesh: string, song: string, size: number): Promise<Mapping[]> {
-  return (await postJSON<{ mappings: Mapping[] }>("api/gallery", { mesh, song, size })).mappings;
+/** The initial gallery of `size` items (null: the server's default size), calibrated on the
+ * song. */
+export async function gallery(mesh: string, song: string, size: number | null):
+    Promise<Mapping[]> {
+  const body = size === null ? { mesh, song } : { mesh, song, size };
+  return (await postJSON<{ mappings: Mapping[] }>("api/gallery", body)).mappings;
 }
 
 export async function breed(parents: Mapping[], size: number, seed: number): Promise<Mapping[]> {

@@ -8,9 +8,9 @@ import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
 import type { HarmonicsSource } from "./positions-pass";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX, TEXELS } from "./shaders";
 
-/** One colour per gallery tile (cycled), also used by its plots and in the player. */
-export const TILE_COLORS = [0xe8a87c, 0x85cdca, 0xd8c35b, 0xc38d9e, 0x8fb4e3, 0xa3d96b, 0xf2b5d4,
-  0xb8a1e6, 0xe6c189, 0x7fd1b9, 0xf28f6b, 0x9cb4cc];
+/** The models' colour (sRGB): one studio clay for every tile and the player, so tiles differ
+ * by how they move, not by their paint. */
+export const CLAY = 0xd9a47f;
 
 /** The largest k whose weights fit the vertex shader's uniform vectors (3 per 4 harmonics). */
 export function maxHarmonicsOnGPU(renderer: THREE.WebGLRenderer): number {
@@ -64,7 +64,7 @@ export class Deformer implements HarmonicsSource {
     const uniforms = () => ({
       harmonics: { value: this.texture }, texWidth: { value: width },
       colorHarmonic: { value: -1 }, colorScale: { value: 1 },
-      baseColor: { value: new THREE.Color(TILE_COLORS[0]) }, normalBlend: { value: 0.4 },
+      baseColor: { value: new THREE.Color(CLAY) }, deformedNormalWeight: { value: 0.4 },
       wire: { value: false },
     });
     const make = (extra: Record<string, any>) => new THREE.ShaderMaterial({
@@ -91,15 +91,17 @@ export class Deformer implements HarmonicsSource {
     return this.useCPU ? this.cpuMaterial : this.gpuMaterial;
   }
 
-  /** Set one tile's look and deformation before `renderer.render(scene, camera)`. */
+  /** Set one tile's look and deformation before `renderer.render(scene, camera)`.
+   * deformedNormalWeight: weight of the deformed triangle's flat normal (thesis Fig. 6.4(d)). */
   setTile(weights: Float32Array, cpuPositions: Float32Array | null, options: {
-    color: number; normalBlend: number; wireframe: boolean; harmonic: number; harmonicScale: number;
+    color: number; deformedNormalWeight: number; wireframe: boolean; harmonic: number;
+    harmonicScale: number;
   }, positions: THREE.Texture | null = null): void {
     const material = this.material;
     this.mesh.material = material;
     const u = material.uniforms;
-    (u.baseColor.value as THREE.Color).setHex(options.color);
-    u.normalBlend.value = options.normalBlend;
+    (u.baseColor.value as THREE.Color).setHex(options.color, THREE.SRGBColorSpace);
+    u.deformedNormalWeight.value = options.deformedNormalWeight;
     u.colorHarmonic.value = options.harmonic;
     u.colorScale.value = options.harmonicScale;
     u.wire.value = options.wireframe;

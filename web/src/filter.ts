@@ -2,6 +2,9 @@
 // reference (eigendance.mapping / eigendance.animate).
 import type { Basis, Spectrum } from "./bundle";
 
+export type Shading = "smooth" | "flat" | "wireframe";
+
+/** A mapping file (docs/design.md#mapping-file), version 1 or 2 as read; the page writes 2. */
 export interface Mapping {
   format: "eigendance.mapping";
   version: number;
@@ -9,6 +12,47 @@ export interface Mapping {
   transfer: number[];
   amplification: number[];
   seed: number | null;
+  gain?: number;
+  smoothing?: number;
+  offset?: number;
+  modes?: unknown;
+  look?: { deformed_normal_weight?: number; shading?: Shading };
+}
+
+/** What the player applies besides transfer and amplification: all of it is in the mapping. */
+export interface Settings {
+  /** multiplies the amplification (≥ 0) */
+  gain: number;
+  /** extra exponential smoothing of the spectrogram, s */
+  smoothing: number;
+  /** weight of the deformed triangle's flat normal against the original vertex normal */
+  deformedNormalWeight: number;
+  shading: Shading;
+}
+
+/** The defaults of a version-1 file (and of docs/design.md#mapping-file). */
+export const DEFAULT_SETTINGS: Settings = { gain: 1, smoothing: 0, deformedNormalWeight: 0.4,
+  shading: "smooth" };
+
+/** A mapping's settings, the defaults where a (version 1) file has none. */
+export function settingsOf(mapping: Mapping): Settings {
+  const look = mapping.look ?? {};
+  return {
+    gain: mapping.gain ?? DEFAULT_SETTINGS.gain,
+    smoothing: mapping.smoothing ?? DEFAULT_SETTINGS.smoothing,
+    deformedNormalWeight: look.deformed_normal_weight ?? DEFAULT_SETTINGS.deformedNormalWeight,
+    shading: look.shading ?? DEFAULT_SETTINGS.shading,
+  };
+}
+
+/** The mapping with these settings, as a version-2 file (other fields kept). */
+export function withSettings(mapping: Mapping, settings: Settings): Mapping {
+  return {
+    ...mapping, version: 2, gain: settings.gain, smoothing: settings.smoothing,
+    offset: mapping.offset ?? 0, modes: mapping.modes ?? null,
+    look: { ...mapping.look, deformed_normal_weight: settings.deformedNormalWeight,
+      shading: settings.shading },
+  };
 }
 
 /** Band values at time t: linear interpolation between the two nearest analysis frames. */
@@ -53,11 +97,14 @@ export function resampleAmplification(amplification: number[], k: number): Float
   return out;
 }
 
-/** A mapping prepared for one basis: band → harmonic index, and amplification per harmonic. */
+/** A mapping prepared for one basis: band → harmonic index, amplification per harmonic, and
+ * the settings that change its motion. */
 export interface Prepared {
   k: number;
   harmonicOfBand: Int32Array;
   amplification: Float64Array;
+  gain: number;
+  smoothing: number;
 }
 
 export function prepare(mapping: Mapping, k: number): Prepared {
@@ -65,12 +112,21 @@ export function prepare(mapping: Mapping, k: number): Prepared {
   mapping.transfer.forEach((t, b) => {
     harmonicOfBand[b] = Math.min(k - 1, Math.floor(t * k));
   });
-  return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k) };
+  const { gain, smoothing } = settingsOf(mapping);
+  return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k),
+    gain, smoothing };
 }
 
-/** φ(ν) = gain · a(ν) · Σ_{ξ: ν(ξ)=ν} g̃(ξ) + 1. */
-export function filterValues(prepared: Prepared, bandValues: ArrayLike<number>, gain = 1,
-                             out?: Float64Array): Float64Array {
+/** The harmonics a mapping moves: reached by a band and amplified (ascending). */
+export function drivenHarmonics(prepared: Prepared): number[] {
+  const driven = new Set<number>();
+  prepared.harmonicOfBand.forEach((v) => { if (prepared.amplification[v] !== 0) driven.add(v); });
+  return [...driven].sort((a, b) => a - b);
+}
+
+/** φ(ν) = gain · a(ν) · Σ_{ξ: ν(ξ)=ν} g̃(ξ) + 1, the gain the mapping's unless given. */
+export function filterValues(prepared: Prepared, bandValues: ArrayLike<number>,
+                             gain = prepared.gain, out?: Float64Array): Float64Array {
   const phi = out ?? new Float64Array(prepared.k);
   const sums = new Float64Array(prepared.k);
   const B = prepared.harmonicOfBand.length;
@@ -94,11 +150,15 @@ export function shaderWeights(basis: Basis, phi: ArrayLike<number>, out?: Float3
   return weights;
 }
 
-/** CPU path: positions X + U((φ − 1) ⊙ X̃) from the same weights the shader gets. */
-export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array): Float32Array {
-  const positions = out ?? new Float32Array(basis.n * 3);
+/** CPU path: positions X + U((φ − 1) ⊙ X̃) from the same weights the shader gets; of every
+ * vertex, or of `vertices` only (packed in their order). */
+export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array,
+                          vertices?: Int32Array): Float32Array {
+  const count = vertices ? vertices.length : basis.n;
+  const positions = out ?? new Float32Array(count * 3);
   const U = basis.harmonics, W = 4 * basis.k4;
-  for (let i = 0; i < basis.n; i++) {
+  for (let o = 0; o < count; o++) {
+    const i = vertices ? vertices[o] : o;
     let x = 0, y = 0, z = 0;
     const row = i * W;
     for (let j = 0; j < basis.k4; j++) {
@@ -109,9 +169,9 @@ export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Arra
       y += u0 * weights[w + 4] + u1 * weights[w + 5] + u2 * weights[w + 6] + u3 * weights[w + 7];
       z += u0 * weights[w + 8] + u1 * weights[w + 9] + u2 * weights[w + 10] + u3 * weights[w + 11];
     }
-    positions[3 * i] = basis.vertices[3 * i] + x;
-    positions[3 * i + 1] = basis.vertices[3 * i + 1] + y;
-    positions[3 * i + 2] = basis.vertices[3 * i + 2] + z;
+    positions[3 * o] = basis.vertices[3 * i] + x;
+    positions[3 * o + 1] = basis.vertices[3 * i + 1] + y;
+    positions[3 * o + 2] = basis.vertices[3 * i + 2] + z;
   }
   return positions;
 }

@@ -22,10 +22,7 @@ function makeHooks(app: App, ready: Promise<void>) {
   const prepared = (tile: number | "player"): Prepared =>
     tile === "player" ? player.prepared! : gallery.shots()[tile].prepared;
   /** every tile's shader weights at time t */
-  const allWeights = (t: number) => {
-    const values = motion.bandValuesAt(t);
-    return gallery.shots().map((shot) => motion.weights(shot.prepared, values));
-  };
+  const allWeights = (t: number) => gallery.shots().map((shot) => motion.weights(shot.prepared, t));
   return {
     ready,
     /** Draw the frame at time t (s) and resolve when it is on the canvas. */
@@ -36,39 +33,50 @@ function makeHooks(app: App, ready: Promise<void>) {
     },
     /** Back to the audio clock. */
     live(): void { viewer.unpin(); },
-    /** Deformed positions (normalised, n*3) of a tile at time t, computed by the GPU shader and
-     * read back from its float render target: the batched pass over every gallery tile, as
-     * drawn, or with `single` the one-tile pass (the player's). */
+    /** Deformed positions (normalised, n*3) of a tile or the player at time t, computed by the
+     * GPU shader and read back from its float render target: the batched pass over every
+     * gallery tile, as drawn, or with `single` (and for the player) the one-model pass. */
     readPositions(tile: number | "player", t: number, single = false): number[] {
       const deformer = viewer.deformer!;
       if (tile === "player" || single) {
-        const weights = motion.weights(prepared(tile), motion.bandValuesAt(t));
-        return Array.from(deformer.readPositions([weights]));
+        return Array.from(deformer.readPositions([motion.weights(prepared(tile), t)]));
       }
       return Array.from(deformer.readPositions(allWeights(t), tile));
     },
     /** The same positions from the CPU path. */
     cpuPositions(tile: number | "player", t: number): number[] {
-      const weights = motion.weights(prepared(tile), motion.bandValuesAt(t));
-      return Array.from(deformCPU(motion.basis!, weights));
+      return Array.from(deformCPU(motion.basis!, motion.weights(prepared(tile), t)));
     },
     /** Downsampled RGB pixels of each tile's view, read from the canvas. */
     tilePixels: (step = 4): number[][] => viewer.pixelsOf(gallery.views(), step),
+    /** The same for the player's view. */
+    playerPixels: (step = 4): number[] => viewer.pixelsOf([document.getElementById(
+      "player-area")!], step)[0],
     mappings: () => gallery.mappings(),
+    /** The player's mapping as "save mapping" writes it. */
+    playerMapping: () => player.saved(),
     select: (index: number) => gallery.toggle(index),
     breed: async (seed?: number): Promise<void> => {
-      await app.guard("breeding", () => gallery.breed(seed));
+      await app.guard("Breeding failed", () => gallery.breed(seed));
     },
-    back: () => gallery.setGeneration(gallery.generation - 1),
+    back: () => gallery.step(-1),
+    /** Show generation `index` (in creation order). */
+    generation: (index: number) => gallery.setGeneration(index),
+    /** The generations menu: index (creation order), depth in the tree, label. */
+    generations: () => gallery.history.entries(),
     setView: (view: View) => app.setView(view),
-    open: (index: number) => app.open(gallery.mappings()[index]),
+    open: (index: number) => app.open(gallery.mappings()[index], `tile ${index + 1}`),
     upload: (file: File) => app.handleFiles([file]),
     info: () => ({
-      meshId: app.library.meshId, songId: app.library.songId, n: motion.basis?.n, k: motion.basis?.k,
-      path: viewer.path, batch: viewer.deformer?.batch, generation: gallery.generation,
-      generations: gallery.generationCount, tiles: gallery.tileCount, view: app.view,
-      frameMs: viewer.frameMs, duration: motion.duration,
-      selected: gallery.selection,
+      meshId: app.library.meshId, songId: app.library.songId, n: motion.basis?.n,
+      k: motion.basis?.k, path: viewer.path, batch: viewer.deformer?.batch,
+      generation: gallery.generation, generations: gallery.generationCount,
+      tiles: gallery.tileCount, view: app.view, frameMs: viewer.frameMs, fps: viewer.fps,
+      frames: viewer.playedFrames,
+      duration: motion.duration, selected: gallery.selection, playing: app.transport.playing,
+      time: app.transport.now(), volume: app.transport.volume, muted: app.transport.muted,
+      error: document.getElementById("error")!.hidden ? null
+        : document.getElementById("error-text")!.textContent,
     }),
     setPath: (path: DeformationPath) => viewer.setPath(path),
     /** Time the deformation alone of every tile (ms per frame), GPU or CPU path. */
@@ -77,7 +85,7 @@ function makeHooks(app: App, ready: Promise<void>) {
         const weights = allWeights(t);
         const deformer = viewer.deformer!;
         if (!deformer.useCPU) deformer.computePositions(weights);
-        else weights.forEach((w) => deformCPU(motion.basis!, w, viewer.cpuBuffer()));
+        else weights.forEach((w, i) => deformCPU(motion.basis!, w, viewer.cpuBuffer(i)));
         viewer.finish();
       };
       run(t0);
@@ -91,6 +99,18 @@ function makeHooks(app: App, ready: Promise<void>) {
       const start = performance.now();
       for (let i = 0; i < count; i++) { viewer.draw(t0 + 0.1 * i); viewer.finish(); }
       return { frame: (performance.now() - start) / count };
+    },
+    /** Where a frame goes (ms, mean over `count` frames): the deformation of every model, then
+     * drawing them, each waited for on the GPU. */
+    profileFrames(count: number, t0 = 1): { deformation: number; drawing: number } {
+      viewer.draw(t0, true);
+      let deformation = 0, drawing = 0;
+      for (let i = 0; i < count; i++) {
+        const parts = viewer.draw(t0 + 0.1 * i, true)!;
+        deformation += parts.deformation;
+        drawing += parts.drawing;
+      }
+      return { deformation: deformation / count, drawing: drawing / count };
     },
   };
 }

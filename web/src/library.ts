@@ -1,5 +1,6 @@
-// The server's library as the page sees it: the mesh and song menus, and the current mesh and
-// song, downloaded into the motion, the viewer and the audio transport.
+// The server's library as the page sees it: the model, song and mapping menus, and the current
+// model and song, downloaded into the motion, the viewer and the audio transport (with a loading
+// indicator while they come).
 import * as api from "./api";
 import { $, messageOf } from "./dom";
 import type { Motion } from "./motion";
@@ -17,9 +18,16 @@ export class Library {
   /** Called once a new basis is in the motion and the viewer (the views re-prepare mappings). */
   onBasis: () => void = () => {};
 
+  /** `busy(text, fraction)` shows the loading indicator (fraction in [0, 1] or null when
+   * unknown); `busy(null)` hides it. `problem(text)` shows an error that is not fatal. */
   constructor(private readonly options: Options, private readonly motion: Motion,
               private readonly viewer: Viewer, private readonly transport: AudioTransport,
-              private readonly status: (text: string) => void) {}
+              private readonly busy: (text: string | null, fraction?: number | null) => void,
+              private readonly problem: (text: string) => void) {}
+
+  get meshName(): string { return this.items?.meshes.find((m) => m.id === this.meshId)?.name ?? ""; }
+  get songName(): string { return this.items?.songs.find((s) => s.id === this.songId)?.name ?? ""; }
+  get mappings(): { id: string; name: string }[] { return this.items?.mappings ?? []; }
 
   /** Ask the server what it holds and refill the menus. */
   async refresh(): Promise<api.Library> {
@@ -27,43 +35,63 @@ export class Library {
     this.items = items;
     fillSelect($<HTMLSelectElement>("mesh"), items.meshes, this.meshId);
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
+    const mappings = $<HTMLSelectElement>("mapping-menu");
+    const chosen = mappings.value;
+    fillSelect(mappings, items.mappings, chosen);
+    (mappings.closest("label") ?? mappings).hidden = !items.mappings.length;
     return items;
   }
 
   /** Make `meshId` current: wait for its basis job, download the basis, hand it over. */
   async loadMesh(meshId: string): Promise<void> {
     const mesh = this.items?.meshes.find((m) => m.id === meshId);
-    if (!mesh) throw new Error(`no mesh ${meshId}`);
-    this.meshId = meshId;
-    $<HTMLSelectElement>("mesh").value = meshId;
-    if (!mesh.ready && mesh.job) {
-      await api.followJob(mesh.job.id, (job) => {
-        this.status(`${mesh.name}: basis ${job.done}/${job.total} eigenpairs (${job.state})`);
-      });
+    if (!mesh) throw new Error(`the server has no model with id ${meshId}`);
+    try {
+      if (!mesh.ready && mesh.job) {
+        this.busy(`${mesh.name}: computing its harmonics…`, null);
+        await api.followJob(mesh.job.id, (job) => {
+          this.busy(`${mesh.name}: computing its harmonics (${job.done} of ${job.total})`,
+            job.total ? job.done / job.total : null);
+        });
+      }
+      this.busy(`${mesh.name}: loading its harmonics…`, null);
+      const bytes = 16 * Math.ceil(mesh.k / 4) * mesh.vertices;
+      const basis = await api.basis(meshId, this.options.half ?? bytes > HALF_ABOVE_BYTES);
+      this.viewer.setBasis(basis, this.options.batch);
+      this.motion.basis = basis;
+      this.meshId = meshId;
+      $<HTMLSelectElement>("mesh").value = meshId;
+      this.onBasis();
+    } finally {
+      $<HTMLSelectElement>("mesh").value = this.meshId; // the model on screen, if this one failed
+      this.busy(null);
     }
-    this.status(`${mesh.name}: loading basis…`);
-    const bytes = 16 * Math.ceil(mesh.k / 4) * mesh.vertices;
-    const basis = await api.basis(meshId, this.options.half ?? bytes > HALF_ABOVE_BYTES);
-    this.viewer.setBasis(basis, this.options.batch);
-    this.motion.basis = basis;
-    this.onBasis();
   }
 
-  /** Make `songId` current: its spectrogram, and its audio (none in `?render` mode). */
+  /** Make `songId` current, from 0:00: its spectrogram, and its audio (none in `?render`
+   * mode). */
   async loadSong(songId: string): Promise<void> {
-    this.songId = songId;
-    $<HTMLSelectElement>("song").value = songId;
-    const spectrum = await api.spectrum(songId);
-    this.motion.setSpectrum(spectrum);
-    $<HTMLInputElement>("seek").max = String(spectrum.duration);
-    if (this.options.render) {
-      await this.transport.load(null, spectrum.duration);
-      return;
-    }
+    const name = this.items?.songs.find((s) => s.id === songId)?.name ?? "the song";
     try {
-      await this.transport.load(await api.audioBytes(songId), spectrum.duration);
-    } catch (error) {
-      this.status(`audio: ${messageOf(error)}`);
+      this.busy(`${name}: loading…`, null);
+      const spectrum = await api.spectrum(songId);
+      this.motion.setSpectrum(spectrum);
+      this.songId = songId;
+      $<HTMLSelectElement>("song").value = songId;
+      $<HTMLInputElement>("seek").max = String(spectrum.duration);
+      if (this.options.render) {
+        await this.transport.load(null, spectrum.duration);
+        return;
+      }
+      try {
+        await this.transport.load(await api.audioBytes(songId), spectrum.duration);
+      } catch (error) {
+        await this.transport.load(null, spectrum.duration);
+        this.problem(`${name}: this browser cannot play its sound (${messageOf(error)})`);
+      }
+    } finally {
+      $<HTMLSelectElement>("song").value = this.songId;
+      this.busy(null);
     }
   }
 }

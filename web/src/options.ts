@@ -4,9 +4,6 @@
 /** The one gallery-size rule; the server sends it as `GET api/config` → `{gallery: …}`. */
 export interface GalleryRule { min: number; max: number; default: number; }
 
-/** Used only when the server cannot be asked (the error is shown in the status line). */
-export const FALLBACK_RULE: GalleryRule = { min: 2, max: 16, default: 8 };
-
 /** The smallest size the *tiles* menu offers: fewer tiles than 4 leave little to compare. */
 export const MENU_MIN = 4;
 
@@ -16,7 +13,10 @@ export interface Options {
   mesh: string | null;
   song: string | null;
   mapping: string | null;
-  view: "gallery" | "player";
+  /** `?view=`; null: the player when the server was given mappings, else the gallery */
+  view: "gallery" | "player" | null;
+  /** `?aa=0|1`: antialiasing off / on; null: on unless WebGL runs in software (or `?render`) */
+  aa: boolean | null;
   /** `?half`: float16 harmonics; `?half=0`: never; null: automatic (above 128 MB). */
   half: boolean | null;
   /** `?render`: no clock, frames drawn by `window.eigendance.renderAt(t)`. */
@@ -39,7 +39,9 @@ export function readOptions(search: string): Options {
     mesh: params.get("mesh"),
     song: params.get("song"),
     mapping: params.get("mapping"),
-    view: params.get("view") === "player" ? "player" : "gallery",
+    view: params.get("view") === "player" ? "player"
+      : params.get("view") === "gallery" ? "gallery" : null,
+    aa: params.has("aa") ? params.get("aa") !== "0" : null,
     half: params.has("half") ? params.get("half") !== "0" : null,
     render: params.has("render"),
     test: params.has("test"),
@@ -67,13 +69,15 @@ export function galleryRule(config: unknown): GalleryRule {
 }
 
 /** The gallery size asked for by `?size=`: any integer of the rule; otherwise the default and
- * a message saying why, for the status line. */
-export function gallerySize(raw: string | null, rule: GalleryRule):
-    { size: number; problem: string | null } {
+ * a message saying why, for the status line. Without the rule (`api/config` failed), the size
+ * as written, or null for the server's default: the server then checks it (one rule). */
+export function gallerySize(raw: string | null, rule: GalleryRule | null):
+    { size: number | null; problem: string | null } {
+  const written = raw !== null && /^\s*\d+\s*$/.test(raw) ? Number(raw) : NaN;
+  if (rule === null) return { size: Number.isInteger(written) ? written : null, problem: null };
   if (raw === null) return { size: rule.default, problem: null };
-  const size = /^\s*\d+\s*$/.test(raw) ? Number(raw) : NaN;
-  if (Number.isInteger(size) && size >= rule.min && size <= rule.max) {
-    return { size, problem: null };
+  if (Number.isInteger(written) && written >= rule.min && written <= rule.max) {
+    return { size: written, problem: null };
   }
   return {
     size: rule.default,
@@ -83,10 +87,22 @@ export function gallerySize(raw: string | null, rule: GalleryRule):
 }
 
 /** The *tiles* menu: every size from 4 (or the rule's minimum, if larger) to the maximum, plus
- * the current size when `?size=` chose a smaller one, so the menu shows what is on screen. */
-export function sizeChoices(rule: GalleryRule, current: number): number[] {
+ * the current size when `?size=` chose a smaller one, so the menu shows what is on screen.
+ * Without the rule, only the current size. */
+export function sizeChoices(rule: GalleryRule | null, current: number): number[] {
+  if (rule === null) return [current];
   const sizes: number[] = [];
   for (let size = Math.max(MENU_MIN, rule.min); size <= rule.max; size++) sizes.push(size);
   if (!sizes.includes(current)) sizes.push(current);
   return sizes.sort((a, b) => a - b);
+}
+
+/** How many tiles to offer when the page draws `fps` frames per second with `tiles` tiles and
+ * should reach `wanted`: the cost of a frame is about proportional to the tiles. At least
+ * `least`; null when fewer would not help. */
+export function fewerTiles(tiles: number, fps: number, wanted: number, least: number):
+    number | null {
+  const fit = Math.floor((tiles * fps) / wanted);
+  const offer = Math.max(least, Math.min(tiles - 1, fit));
+  return offer < tiles ? offer : null;
 }

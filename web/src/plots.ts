@@ -1,53 +1,81 @@
-// The small 2D plots: the live spectrum strip above the gallery, and each tile's transfer
-// (band → harmonic) and amplification (per harmonic).
-import type { Mapping } from "./filter";
+// The small 2D plots: the live spectrum strip, and under each tile its transfer (which harmonic
+// each sound band drives) and its amplification (how strongly each harmonic moves the model).
+import type { Prepared } from "./filter";
 
-const cssColor = (color: number) => `#${color.toString(16).padStart(6, "0")}`;
+const DRIVEN = "#ffb347";
+const IDLE = "#5a6070";
 
-/** One bar per band, height and lightness by its value in [0, 1]. */
-export function drawSpectrum(strip: HTMLCanvasElement, bandValues: Float32Array): void {
-  const context = strip.getContext("2d")!;
-  const { width, height } = strip;
-  context.clearRect(0, 0, width, height);
+/** The live spectrum strip: one bar per band, height and brightness by its value in [0, 1].
+ * Bars are elements, not a 2D canvas: a 2D canvas redrawn every frame made headless Chromium's
+ * compositor drop a band of the WebGL canvas (at the strip's rectangle, upside down). */
+export function drawSpectrum(strip: HTMLElement, bandValues: Float32Array): void {
   const B = bandValues.length;
+  if (strip.childElementCount !== B) {
+    strip.replaceChildren(...Array.from({ length: B }, (_, b) => {
+      const bar = document.createElement("span");
+      bar.style.background = `hsl(${30 + 200 * (b / B)}, 80%, 55%)`;
+      return bar;
+    }));
+  }
+  const bars = strip.children as HTMLCollectionOf<HTMLElement>;
   for (let b = 0; b < B; b++) {
-    const v = bandValues[b];
-    context.fillStyle = `hsl(${30 + 200 * (b / B)}, 80%, ${35 + 30 * v}%)`;
-    const x0 = Math.floor((b / B) * width), x1 = Math.floor(((b + 1) / B) * width);
-    context.fillRect(x0, height * (1 - v), Math.max(1, x1 - x0 - 1), height * v);
+    const v = Math.max(0, Math.min(1, bandValues[b]));
+    bars[b].style.transform = `scaleY(${v.toFixed(3)})`;
+    bars[b].style.opacity = (0.45 + 0.55 * v).toFixed(3);
   }
 }
 
-/** The transfer as a line: band (x) → normalised harmonic (y). */
-export function drawTransfer(canvas: HTMLCanvasElement, mapping: Mapping, color: number): void {
+/** The transfer as dots: sound band (x, low to high pitch) → harmonic it drives (y, low to high
+ * frequency of the shape). */
+export function drawTransfer(canvas: HTMLCanvasElement, prepared: Prepared): void {
   const t = canvas.getContext("2d")!;
   const { width, height } = canvas;
   t.clearRect(0, 0, width, height);
-  t.strokeStyle = cssColor(color);
-  t.lineWidth = 1.5;
-  t.beginPath();
-  mapping.transfer.forEach((value, b) => {
-    const x = (b / Math.max(1, mapping.transfer.length - 1)) * (width - 2) + 1;
-    const y = height - 2 - value * (height - 4);
-    if (b === 0) t.moveTo(x, y); else t.lineTo(x, y);
+  t.fillStyle = "#ffffff14";
+  t.fillRect(0, 0, width, height);
+  const B = prepared.harmonicOfBand.length;
+  t.fillStyle = DRIVEN;
+  prepared.harmonicOfBand.forEach((v, b) => {
+    const x = ((b + 0.5) / B) * width;
+    const y = height - 2 - ((v + 0.5) / prepared.k) * (height - 4);
+    t.fillRect(x - 1, y - 1, 2.5, 2.5);
   });
-  t.stroke();
 }
 
-/** The amplification as bars about a zero line, scaled by `largest` |a| of the generation so
- * tiles compare at a glance. */
-export function drawAmplification(canvas: HTMLCanvasElement, mapping: Mapping, largest: number,
-                                  color: number): void {
+/** How strongly a mapping moves each harmonic ν per unit of loudness: a(ν)·|X̃_ν| (the
+ * amplification times the harmonic's share of the shape), signed. */
+export function effectiveAmplification(prepared: Prepared, coefficients: Float32Array):
+    Float64Array {
+  const out = new Float64Array(prepared.k);
+  for (let v = 0; v < prepared.k; v++) {
+    const c = Math.hypot(coefficients[3 * v], coefficients[3 * v + 1], coefficients[3 * v + 2]);
+    out[v] = prepared.gain * prepared.amplification[v] * c;
+  }
+  return out;
+}
+
+/** The effective amplification as bars about a zero line (up: the shape's feature grows with
+ * the music, down: it shrinks or turns over), harmonics along x from low to high, scaled to the
+ * tile's largest bar; the harmonics the music reaches in colour, the others grey. */
+export function drawAmplification(canvas: HTMLCanvasElement, prepared: Prepared,
+                                  effective: Float64Array): void {
   const a = canvas.getContext("2d")!;
   const { width, height } = canvas;
   a.clearRect(0, 0, width, height);
-  a.fillStyle = "#444";
+  a.fillStyle = "#ffffff14";
+  a.fillRect(0, 0, width, height);
+  a.fillStyle = "#444b58";
   a.fillRect(0, height / 2, width, 1);
-  a.fillStyle = cssColor(color);
-  const K = mapping.amplification.length;
-  mapping.amplification.forEach((value, v) => {
-    const x = Math.floor((v / K) * width);
-    const h = (value / largest) * (height / 2 - 1);
-    a.fillRect(x, height / 2 - Math.max(h, 0), Math.max(1, Math.ceil(width / K)), Math.abs(h));
-  });
+  const reached = new Set(prepared.harmonicOfBand);
+  const k = prepared.k;
+  let largest = 0;
+  for (let v = 0; v < k; v++) largest = Math.max(largest, Math.abs(effective[v]));
+  for (let v = 0; v < k; v++) {
+    const h = Math.max(-1, Math.min(1, effective[v] / (largest || 1))) * (height / 2 - 1);
+    if (!h) continue;
+    a.fillStyle = reached.has(v) ? DRIVEN : IDLE;
+    const x = Math.floor((v / k) * width);
+    a.fillRect(x, height / 2 - Math.max(h, 0), Math.max(1, Math.ceil(width / k)),
+      Math.max(1, Math.abs(h)));
+  }
 }

@@ -19,6 +19,9 @@ export class AudioTransport implements Clock {
   onChange: (playing: boolean) => void = () => {};
 
   private context: AudioContext | null = null;
+  /** what plays, at full level: the recorder taps it */
+  private mix: GainNode | null = null;
+  /** `mix` at the listener's volume, to the speakers */
   private output: GainNode | null = null;
   private buffer: AudioBuffer | null = null;
   private source: AudioBufferSourceNode | null = null;
@@ -27,11 +30,26 @@ export class AudioTransport implements Clock {
   /** song time while paused */
   private offset = 0;
   private isPlaying = false;
+  private loudness = 1;
+  private silenced = false;
 
   /** `createContext` is replaceable so tests can drive a fake clock. */
   constructor(private readonly createContext: () => AudioContext = () => new AudioContext()) {}
 
   get playing(): boolean { return this.isPlaying; }
+
+  /** Playback volume in [0, 1] (the sound only: the motion follows the song, not the volume). */
+  get volume(): number { return this.loudness; }
+  set volume(value: number) {
+    this.loudness = Math.max(0, Math.min(1, value));
+    this.applyVolume();
+  }
+
+  get muted(): boolean { return this.silenced; }
+  set muted(value: boolean) {
+    this.silenced = value;
+    this.applyVolume();
+  }
 
   now(): number {
     const t = this.isPlaying && this.context ? this.context.currentTime - this.startedAt
@@ -44,13 +62,14 @@ export class AudioTransport implements Clock {
       && this.context.currentTime - this.startedAt >= this.duration;
   }
 
-  /** Decode and keep a song's audio (`bytes`), or with null only its length: `?render` mode
-   * plays no sound and starts at 0. Throws when the browser cannot decode the audio. */
+  /** Decode and keep a song's audio (`bytes`), or with null only its length (`?render` mode
+   * plays no sound). A new song starts at 0:00. Throws when the browser cannot decode it. */
   async load(bytes: ArrayBuffer | null, duration: number): Promise<void> {
     this.pause();
     this.buffer = null;
     this.duration = duration;
-    if (bytes === null) { this.offset = 0; return; }
+    this.offset = 0;
+    if (bytes === null) return;
     this.buffer = await this.audio().decodeAudioData(bytes);
   }
 
@@ -60,7 +79,7 @@ export class AudioTransport implements Clock {
     void context.resume();
     const source = context.createBufferSource();
     source.buffer = this.buffer;
-    source.connect(this.output!);
+    source.connect(this.mix!);
     source.start(0, this.offset);
     this.source = source;
     this.startedAt = context.currentTime - this.offset;
@@ -89,24 +108,32 @@ export class AudioTransport implements Clock {
     this.offset = 0;
   }
 
-  /** A stream of what plays, for the recorder; `untap` it when done. */
+  /** A stream of what plays (at full level, whatever the volume), for the recorder; `untap`
+   * it when done. */
   tap(): MediaStreamAudioDestinationNode {
     const destination = this.audio().createMediaStreamDestination();
-    this.output!.connect(destination);
+    this.mix!.connect(destination);
     return destination;
   }
 
   untap(destination: MediaStreamAudioDestinationNode): void {
-    this.output?.disconnect(destination);
+    this.mix?.disconnect(destination);
   }
 
   /** The AudioContext, made on first use (browsers want a page gesture before it sounds). */
   private audio(): AudioContext {
     if (!this.context) {
       this.context = this.createContext();
+      this.mix = this.context.createGain();
       this.output = this.context.createGain();
+      this.mix.connect(this.output);
       this.output.connect(this.context.destination);
+      this.applyVolume();
     }
     return this.context;
+  }
+
+  private applyVolume(): void {
+    if (this.output) this.output.gain.value = this.silenced ? 0 : this.loudness;
   }
 }

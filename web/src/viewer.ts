@@ -1,56 +1,102 @@
 // The Viewer owns the WebGL canvas: renderer, cameras, the render loop, drawing the gallery's
-// tiles or the player into their viewports, frame timing, and the choice of deformation path
-// (docs/design.md#rendering). What to draw comes from the views through `Stage`; time from a `Clock`.
+// tiles or the player into their viewports, the studio around each model, the page's real frame
+// rate, and the choice of deformation path (docs/design.md#rendering). What to draw comes from
+// the views through `Stage`; time from a `Clock`.
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Basis } from "./bundle";
-import { Deformer, TILE_COLORS, maxHarmonicsOnGPU } from "./deform";
+import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
-import type { Prepared } from "./filter";
+import type { Prepared, Shading } from "./filter";
 import type { Motion } from "./motion";
+import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
+import type { Silhouette } from "./studio";
 import type { Clock } from "./transport";
 
 export type View = "gallery" | "player";
 export type DeformationPath = "gpu" | "cpu";
 
-/** How surfaces are shaded (the player's controls; shading applies to the gallery too). */
+/** How one model's surface is shaded: its mapping's look (docs/design.md#mapping-file). */
 export interface Look {
-  shading: "smooth" | "flat" | "wireframe";
-  /** weight of the original vertex normal against the deformed triangle's flat normal */
-  normalBlend: number;
-  /** harmonics explorer: colour the player's mesh by this eigenvector (−1: off) */
-  harmonic: number;
-  harmonicScale: number;
+  shading: Shading;
+  /** weight of the deformed triangle's flat normal against the original vertex normal */
+  deformedNormalWeight: number;
 }
 
-/** One mesh to draw: where on the page, with which mapping, in which tile colour. */
-export interface Shot { element: HTMLElement; prepared: Prepared; colorIndex: number; }
+/** One model to draw: where on the page, moved by which (prepared) mapping, with which look;
+ * `source` (the mapping) says when the player shows another one. */
+export interface Shot { element: HTMLElement; prepared: Prepared; look: Look; source?: object; }
+
+/** The harmonics explorer: colour the player's model by eigenvector `harmonic` (−1: off). */
+export interface Explorer { harmonic: number; scale: number; }
 
 /** What the current frame shows. */
-export interface Stage { view: View; tiles: Shot[]; player: Shot | null; look: Look; }
+export interface Stage { view: View; tiles: Shot[]; player: Shot | null; explorer: Explorer; }
 
-const BACKGROUND = 0x15171c;
+/** Where a camera stands: looking at `target` from `distance` along VIEW_DIRECTION. */
+interface Framing { target: THREE.Vector3; distance: number; }
+
+/** Where the time of a frame went (ms); measured by `profile`. */
+export interface FrameParts { deformation: number; drawing: number; }
+
+/** The frame rate below which the gallery offers fewer tiles. */
+export const SMOOTH_FPS = 20;
+const FIELD_OF_VIEW = 30;
+/** A model is framed at rest and in the song's POSES loudest moments, by its RIM vertices that
+ * reach farthest (all of a small model: on a sphere every vertex reaches as far). */
+const POSES = 6;
+const RIM = 2000;
+/** Frame times are averaged over this window (ms) for the frame-rate readout. */
+const RATE_WINDOW_MS = 1000;
+
+/** Whether WebGL runs on a software rasteriser (SwiftShader, llvmpipe): no antialiasing there,
+ * it would halve the frame rate. */
+export function softwareRenderer(): boolean {
+  const gl = document.createElement("canvas").getContext("webgl2");
+  if (!gl) return true;
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = String(info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : "");
+  gl.getExtension("WEBGL_lose_context")?.loseContext();
+  return /swiftshader|llvmpipe|software|softpipe/i.test(name);
+}
 
 export class Viewer {
   readonly renderer: THREE.WebGLRenderer;
+  readonly studio = new Studio();
   deformer: Deformer | null = null;
   path: DeformationPath = "gpu";
-  /** smoothed draw time of one frame (ms) */
+  /** the page's real frame rate while playing (frames drawn per second), 0 when idle */
+  fps = 0;
+  /** smoothed time of our own work per frame (ms): deformation and drawing */
   frameMs = 0;
-  /** Called after every frame with its time and band values (spectrum strip, seek bar). */
-  onFrame: (t: number, bandValues: Float32Array) => void = () => {};
+  /** frames drawn while the music played, since the page started */
+  playedFrames = 0;
+  /** Called before every frame is drawn, with its time: what changes the page's layout (the
+   * seek bar, the clock, readouts), so the frame is drawn where the views are. */
+  onFrame: (t: number) => void = () => {};
 
-  private readonly tileCamera = new THREE.PerspectiveCamera(32, 1, 0.1, 50);
-  private readonly playerCamera = new THREE.PerspectiveCamera(35, 1, 0.05, 50);
+
+  private readonly tileCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
+  private readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   private readonly controls: OrbitControls;
+  private shape: Silhouette | null = null;
+  private rim: Int32Array | null = null;
+  /** each mapping's rim in its loudest poses, and its framings by view aspect */
+  private poses = new WeakMap<Prepared, Silhouette>();
+  private framings = new WeakMap<Prepared, Map<number, Framing>>();
+  /** the aspect and mapping the player's camera was framed for */
+  private playerFramed: { aspect: number; source: object | undefined } | null = null;
   /** a time set by `pin` (offline rendering, tests) instead of the clock's */
   private pinned: number | null = null;
   private drawRequested = false;
-  private cpuPositions: Float32Array | null = null;
+  private cpuBuffers: Float32Array[] = [];
+  /** start times (ms) of the frames drawn while playing, within the last RATE_WINDOW_MS */
+  private frameTimes: number[] = [];
 
-  constructor(canvas: HTMLCanvasElement, playerArea: HTMLElement, private readonly motion: Motion,
-              private readonly clock: Clock, private readonly stage: () => Stage) {
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: false,
+  constructor(canvas: HTMLCanvasElement, playerArea: HTMLElement,
+              private readonly motion: Motion, private readonly clock: Clock,
+              private readonly stage: () => Stage, antialias: boolean) {
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias,
       preserveDrawingBuffer: true, powerPreference: "high-performance" });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.autoClear = false;
@@ -70,12 +116,19 @@ export class Viewer {
 
   unpin(): void { this.pinned = null; this.requestDraw(); }
 
-  /** Show a new mesh: its deformer (GPU resources) and cameras framing it. */
+  /** Show a new mesh: its deformer (GPU resources), its shadow, and cameras framing it. */
   setBasis(basis: Basis, batch: number): void {
     const deformer = new Deformer(basis, this.renderer, batch); // may throw: keep the old one
     this.deformer?.dispose();
     this.deformer = deformer;
-    this.aimCameras(basis);
+    deformer.scene.add(this.studio.backdrop, this.studio.shadow);
+    this.studio.placeShadow(basis);
+    this.shape = silhouette(basis.vertices, VIEW_DIRECTION);
+    this.rim = rim(this.shape, Math.min(1, RIM / basis.n));
+    this.poses = new WeakMap();
+    this.framings = new WeakMap();
+    this.cpuBuffers = [];
+    this.playerFramed = null;
   }
 
   /** The render loop: a frame whenever the music plays or something asked for one. The end of
@@ -86,43 +139,56 @@ export class Viewer {
         this.clock.rewind();
         this.requestDraw();
       }
-      if ((this.clock.playing && this.pinned === null) || this.drawRequested) {
+      const playing = this.clock.playing && this.pinned === null;
+      if (playing || this.drawRequested) {
         this.drawRequested = false;
+        this.countFrame(playing);
         this.draw(this.time());
+      } else {
+        this.countFrame(false);
       }
       requestAnimationFrame(tick);
     };
     requestAnimationFrame(tick);
   }
 
-  /** Draw the frame at time t (s) of whatever the stage shows. */
-  draw(t: number): void {
+  /** Draw the frame at time t (s) of whatever the stage shows. With `profile`, wait for the GPU
+   * after each part and return where the time went. */
+  draw(t: number, profile = false): FrameParts | null {
     const deformer = this.deformer;
-    if (!deformer || !this.motion.ready) return;
+    if (!deformer || !this.motion.ready) return null;
     const start = performance.now();
+    this.onFrame(t); // first: what it writes into the page may move the views
     this.resize();
     const stage = this.stage();
-    const bandValues = this.motion.bandValuesAt(t);
     const renderer = this.renderer;
     renderer.setScissorTest(false);
-    renderer.setClearColor(BACKGROUND, 1);
+    renderer.setClearColor(0x15171c, 1);
     renderer.clear();
-    renderer.setScissorTest(true);
-    if (stage.view === "gallery") {
-      const weights = stage.tiles.map((shot) => this.motion.weights(shot.prepared, bandValues));
-      // GPU path: every tile's positions first (batched passes), then the surfaces.
-      const positions = deformer.useCPU ? null : deformer.computePositions(weights);
-      stage.tiles.forEach((shot, index) => {
-        this.drawShot(shot, this.tileCamera, weights[index], stage, positions?.[index] ?? null);
-      });
-    } else if (stage.player) {
-      const weights = this.motion.weights(stage.player.prepared, bandValues);
-      this.drawShot(stage.player, this.playerCamera, weights, stage, null);
+    const shots = stage.view === "gallery" ? stage.tiles : stage.player ? [stage.player] : [];
+    const weights = shots.map((shot) => this.motion.weights(shot.prepared, t));
+    // Every model's positions first (GPU: batched passes; CPU: one buffer each), then surfaces.
+    let positions: THREE.Texture[] | null = null;
+    let cpu: Float32Array[] | null = null;
+    if (!shots.length) {
+      // nothing to deform (a player without a mapping)
+    } else if (!deformer.useCPU) {
+      positions = deformer.computePositions(weights);
+    } else {
+      cpu = weights.map((w, i) => deformCPU(deformer.basis, w, this.cpuBuffer(i)));
     }
+    if (profile) this.finish();
+    const deformed = performance.now();
+    renderer.setScissorTest(true);
+    shots.forEach((shot, i) => {
+      const camera = stage.view === "gallery" ? this.tileCamera : this.playerCamera;
+      this.drawShot(shot, camera, weights[i], stage, positions?.[i] ?? null, cpu?.[i] ?? null);
+    });
     renderer.setScissorTest(false);
-    const elapsed = performance.now() - start;
-    this.frameMs = this.frameMs ? 0.9 * this.frameMs + 0.1 * elapsed : elapsed;
-    this.onFrame(t, bandValues);
+    if (profile) this.finish();
+    const end = performance.now();
+    this.frameMs = this.frameMs ? 0.9 * this.frameMs + 0.1 * (end - start) : end - start;
+    return { deformation: deformed - start, drawing: end - deformed };
   }
 
   /** Wait until the GPU has finished the frame (a 1-pixel read forces it). */
@@ -131,8 +197,8 @@ export class Viewer {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
   }
 
-  /** Pick the deformation path (docs/design.md#rendering): the CPU when k does not fit the shader's uniforms,
-   * else the one `forced`, else the faster of the two timed on a few frames. */
+  /** Pick the deformation path (docs/design.md#rendering): the CPU when k does not fit the
+   * shader's uniforms, else the one `forced`, else the faster of the two timed on a few frames. */
   choosePath(forced: DeformationPath | null): void {
     const deformer = this.deformer!;
     if (deformer.basis.k > maxHarmonicsOnGPU(this.renderer)) {
@@ -154,13 +220,12 @@ export class Viewer {
     this.path = path;
   }
 
-  /** A buffer for CPU positions (n*3), reused across frames. */
-  cpuBuffer(): Float32Array {
+  /** A buffer for the CPU positions (n*3) of the i-th model of a frame, reused across frames. */
+  cpuBuffer(i = 0): Float32Array {
     const n3 = this.deformer!.basis.n * 3;
-    if (!this.cpuPositions || this.cpuPositions.length !== n3) {
-      this.cpuPositions = new Float32Array(n3);
-    }
-    return this.cpuPositions;
+    while (this.cpuBuffers.length <= i) this.cpuBuffers.push(new Float32Array(n3));
+    if (this.cpuBuffers[i].length !== n3) this.cpuBuffers[i] = new Float32Array(n3);
+    return this.cpuBuffers[i];
   }
 
   /** Downsampled RGB pixels of each element's area of the canvas, as drawn. */
@@ -185,6 +250,27 @@ export class Viewer {
     });
   }
 
+  /** Frame the player's model again (after the window changed shape, or on request). */
+  resetPlayerCamera(): void { this.playerFramed = null; this.requestDraw(); }
+
+  /** Count a drawn frame (or none) for the frame-rate readout: frames whose start lies in the
+   * last RATE_WINDOW_MS, while the music plays; 0 when nothing plays. */
+  private countFrame(drawn: boolean): void {
+    const now = performance.now();
+    if (!drawn) {
+      if (!this.clock.playing) { this.frameTimes = []; this.fps = 0; }
+      return;
+    }
+    this.playedFrames++;
+    this.frameTimes.push(now);
+    // The last RATE_WINDOW_MS, but at least two frames: a page slower than 1 fps shows it too.
+    while (this.frameTimes.length > 2 && this.frameTimes[0] < now - RATE_WINDOW_MS) {
+      this.frameTimes.shift();
+    }
+    const span = now - this.frameTimes[0];
+    this.fps = this.frameTimes.length > 1 ? (1000 * (this.frameTimes.length - 1)) / span : 0;
+  }
+
   /** Mean time (ms) of a drawn frame on one path, after a warm-up (shader compile, uploads). */
   private timeFrames(useCPU: boolean): number {
     this.deformer!.useCPU = useCPU;
@@ -194,9 +280,10 @@ export class Viewer {
     return (performance.now() - start) / 2;
   }
 
-  /** Draw one mesh into its element's rectangle of the canvas (skipped when off screen). */
+  /** Draw one model into its element's rectangle of the canvas (skipped when off screen). */
   private drawShot(shot: Shot, camera: THREE.PerspectiveCamera, weights: Float32Array,
-                   stage: Stage, positions: THREE.Texture | null): void {
+                   stage: Stage, positions: THREE.Texture | null,
+                   cpu: Float32Array | null): void {
     const deformer = this.deformer!;
     const renderer = this.renderer;
     const rect = shot.element.getBoundingClientRect();
@@ -205,18 +292,76 @@ export class Viewer {
     const x = rect.left, y = height - rect.bottom;
     renderer.setViewport(x, y, rect.width, rect.height);
     renderer.setScissor(x, y, rect.width, rect.height);
-    camera.aspect = rect.width / rect.height;
-    camera.updateProjectionMatrix();
-    const cpu = deformer.useCPU ? deformCPU(deformer.basis, weights, this.cpuBuffer()) : null;
-    const { look } = stage;
+    this.aim(camera, rect.width / rect.height, shot);
+    this.studio.setAspect(rect.width / rect.height);
+    const { look } = shot;
+    const player = stage.view === "player";
     deformer.setTile(weights, cpu, {
-      color: TILE_COLORS[shot.colorIndex % TILE_COLORS.length],
+      color: CLAY,
       wireframe: look.shading === "wireframe",
-      normalBlend: look.shading === "flat" ? 0 : look.normalBlend,
-      harmonic: stage.view === "player" ? look.harmonic : -1,
-      harmonicScale: look.harmonicScale,
+      deformedNormalWeight: look.shading === "flat" ? 1 : look.deformedNormalWeight,
+      harmonic: player ? stage.explorer.harmonic : -1,
+      harmonicScale: stage.explorer.scale,
     }, positions);
     renderer.render(deformer.scene, camera);
+  }
+
+  /** Frame the model for a view of this aspect: a tile at every frame (its framing is cached),
+   * the player's orbit camera when its view changed shape or shows another mapping. */
+  private aim(camera: THREE.PerspectiveCamera, aspect: number, shot: Shot): void {
+    camera.aspect = aspect;
+    if (camera === this.playerCamera) {
+      const framed = this.playerFramed;
+      if (!framed || framed.source !== shot.source
+          || Math.abs(aspect - framed.aspect) > 0.02 * aspect) {
+        this.playerFramed = { aspect, source: shot.source };
+        const { target, distance } = this.framingFor(shot.prepared, aspect);
+        camera.position.copy(VIEW_DIRECTION).multiplyScalar(distance).add(target);
+        this.controls.target.copy(target);
+        this.controls.update();
+      }
+      camera.updateProjectionMatrix();
+      return;
+    }
+    const { target, distance } = this.framingFor(shot.prepared, aspect);
+    camera.position.copy(VIEW_DIRECTION).multiplyScalar(distance).add(target);
+    camera.lookAt(target);
+    camera.updateProjectionMatrix();
+  }
+
+  /** Where the camera stands for a model moved by `prepared` in a view of this aspect: the
+   * model whole at rest and in the song's loudest poses. */
+  private framingFor(prepared: Prepared, aspect: number): Framing {
+    const key = Math.round(aspect * 50) / 50;
+    let byAspect = this.framings.get(prepared);
+    if (!byAspect) {
+      byAspect = new Map();
+      this.framings.set(prepared, byAspect);
+    }
+    let found = byAspect.get(key);
+    if (!found) {
+      found = framing([this.shape!, this.posesOf(prepared)], VIEW_DIRECTION, FIELD_OF_VIEW, key);
+      byAspect.set(key, found);
+    }
+    return found;
+  }
+
+  /** The rim of the model in the song's loudest poses under this mapping (CPU, rim only). */
+  private posesOf(prepared: Prepared): Silhouette {
+    let found = this.poses.get(prepared);
+    if (!found) {
+      const basis = this.deformer!.basis, rimVertices = this.rim!;
+      const times = this.motion.loudestTimes(POSES);
+      const points = new Float32Array(3 * rimVertices.length * times.length);
+      times.forEach((t, i) => {
+        deformCPU(basis, this.motion.weights(prepared, t),
+          points.subarray(3 * rimVertices.length * i, 3 * rimVertices.length * (i + 1)),
+          rimVertices);
+      });
+      found = silhouette(points, VIEW_DIRECTION);
+      this.poses.set(prepared, found);
+    }
+    return found;
   }
 
   /** Fit the canvas's drawing buffer to the window. */
@@ -224,21 +369,5 @@ export class Viewer {
     const width = window.innerWidth, height = window.innerHeight;
     const size = this.renderer.getSize(new THREE.Vector2());
     if (size.x !== width || size.y !== height) this.renderer.setSize(width, height, false);
-  }
-
-  /** Both cameras look at the origin from the same side, far enough to frame the mesh. */
-  private aimCameras(basis: Basis): void {
-    let radius = 0;
-    const v = basis.vertices;
-    for (let i = 0; i < basis.n * 3; i += 3) {
-      radius = Math.max(radius, Math.hypot(v[i], v[i + 1], v[i + 2]));
-    }
-    const distance = (radius * 1.15) / Math.sin(THREE.MathUtils.degToRad(16));
-    const direction = new THREE.Vector3(0.55, 0.35, 1).normalize();
-    this.tileCamera.position.copy(direction).multiplyScalar(distance);
-    this.tileCamera.lookAt(0, 0, 0);
-    this.playerCamera.position.copy(direction).multiplyScalar(distance * 0.95);
-    this.controls.target.set(0, 0, 0);
-    this.controls.update();
   }
 }

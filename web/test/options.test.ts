@@ -1,7 +1,9 @@
 // URL options and the gallery-size rule (api/config): a bad ?size= falls back to the default
 // with a message, never a hung page.
 import { describe, expect, it } from "vitest";
-import { galleryRule, gallerySize, readOptions, sizeChoices, wantsHooks } from "../src/options";
+import {
+  fewerTiles, galleryRule, gallerySize, readOptions, sizeChoices, wantsHooks,
+} from "../src/options";
 
 const rule = { min: 2, max: 16, default: 8 };
 
@@ -28,6 +30,22 @@ describe("gallery size", () => {
     expect(sizeChoices({ min: 6, max: 8, default: 6 }, 6)).toEqual([6, 7, 8]);
   });
 
+  it("leaves the size to the server when its rule could not be read", () => {
+    expect(gallerySize("5", null)).toEqual({ size: 5, problem: null });
+    expect(gallerySize("40", null)).toEqual({ size: 40, problem: null }); // the server says no
+    expect(gallerySize(null, null)).toEqual({ size: null, problem: null });
+    expect(gallerySize("abc", null)).toEqual({ size: null, problem: null });
+    expect(sizeChoices(null, 8)).toEqual([8]);
+  });
+
+  it("offers fewer tiles when the frame rate is too low", () => {
+    expect(fewerTiles(8, 10, 20, 2)).toBe(4);
+    expect(fewerTiles(16, 5, 20, 2)).toBe(4);
+    expect(fewerTiles(4, 2, 20, 2)).toBe(2);
+    expect(fewerTiles(2, 5, 20, 2)).toBeNull();
+    expect(fewerTiles(8, 19, 20, 2)).toBe(7);
+  });
+
   it("checks the server's answer", () => {
     expect(galleryRule({ gallery: rule })).toEqual(rule);
     expect(() => galleryRule({})).toThrow(/api\/config/);
@@ -45,6 +63,11 @@ describe("URL options", () => {
     expect(readOptions("?half=0").half).toBe(false);
     expect(readOptions("").half).toBeNull();
     expect(readOptions("?path=tpu").path).toBeNull();
+    expect(readOptions("").view).toBeNull();
+    expect(readOptions("?view=gallery").view).toBe("gallery");
+    expect(readOptions("?aa=0").aa).toBe(false);
+    expect(readOptions("?aa").aa).toBe(true);
+    expect(readOptions("").aa).toBeNull();
   });
 
   it("installs the hooks only for ?render and ?test", () => {

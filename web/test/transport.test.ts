@@ -7,7 +7,12 @@ import { AudioTransport } from "../src/transport";
 class FakeContext {
   currentTime = 100;
   destination = {};
-  createGain() { return { connect() {}, disconnect() {} }; }
+  gains: { gain: { value: number } }[] = [];
+  createGain() {
+    const node = { gain: { value: 1 }, connect() {}, disconnect() {} };
+    this.gains.push(node);
+    return node;
+  }
   createBufferSource() {
     return { buffer: null, connect() {}, start() {}, stop() {} };
   }
@@ -59,5 +64,32 @@ describe("AudioTransport", () => {
     expect(transport.playing).toBe(false);
     expect(transport.now()).toBe(0);
     expect(transport.ended()).toBe(false);
+  });
+
+  it("a new song starts at 0:00, paused", async () => {
+    const { transport, context } = await loaded();
+    transport.seek(5);
+    transport.play();
+    context.currentTime += 1;
+    await transport.load(new ArrayBuffer(4), 4);
+    expect(transport.playing).toBe(false);
+    expect(transport.now()).toBe(0);
+  });
+
+  it("volume and mute change the sound only, not the clock", async () => {
+    const { transport, context } = await loaded();
+    const [, speakers] = context.gains; // mix (full level, recorded), then the speakers
+    transport.volume = 0.25;
+    expect(speakers.gain.value).toBe(0.25);
+    transport.muted = true;
+    expect(speakers.gain.value).toBe(0);
+    expect(context.gains[0].gain.value).toBe(1);
+    transport.play();
+    context.currentTime += 2;
+    expect(transport.now()).toBeCloseTo(2);
+    transport.muted = false;
+    expect(speakers.gain.value).toBe(0.25);
+    transport.volume = 7;
+    expect(transport.volume).toBe(1);
   });
 });

@@ -155,6 +155,18 @@ class HarmonicBasis:
         """U((φ − 1) ⊙ X̃) for filters (S, k) → (S, n, 3), normalised units."""
         return Deformer(self.eigenvectors, self.coefficients)(phi)
 
+    def motion_gram(self, targets) -> np.ndarray:
+        """G_νμ = mean over vertices of ⟨D_ν(x), D_μ(x)⟩ for the harmonics `targets` (T,) → (T, T).
+
+        D_ν = u_ν X̃_νᵀ (n, 3) is the displacement of harmonic ν per unit of φ_ν − 1, so a filter
+        moves the vertices by RMS √((φ − 1)ᵀ G (φ − 1)) (normalised units; the gallery's
+        calibration, docs/design.md#gallery).
+        """
+        targets = np.asarray(targets, dtype=np.int64)
+        columns = self.eigenvectors[:, targets]
+        return (columns.T @ columns) * (self.coefficients[targets] @
+                                        self.coefficients[targets].T) / self.n
+
     def deformer(self, original: bool = False) -> Deformer:
         """The deformation kernel for this basis, in normalised or original coordinates."""
         if original:

@@ -1,38 +1,77 @@
 """The initial gallery: S mappings to choose from before any breeding (docs/design.md#gallery).
 
-A gallery works on any *dancer* — the harmonics of a mesh or the vibration modes of a rig —
-through the `Dancer` protocol: its frequencies (ascending) and the displacements a filter gives.
-Sizes follow one rule, shared by the library, the command line, the server and the page:
-`check_gallery_size`.
+Every item drives its own *part* of the model's spectrum, from the lowest harmonic to the
+highest, and is calibrated on the song that will play so that it moves the model visibly:
+m = the 95th percentile over the song's frames of (RMS vertex displacement / bounding-box
+diagonal) is MOTION_LOWEST for the first item, falling geometrically to MOTION_HIGHEST for the
+last. Harmonics of eigenvalue 0 (translations) and harmonics that carry none of the shape (their
+coefficient is rounding noise) are never driven.
+
+A gallery works on any *dancer* — the harmonics of a mesh, later the vibration modes of a
+rig — through the `Dancer` protocol. Sizes follow one rule, shared by the library, the command
+line, the server and the page: `check_gallery_size`.
 """
 
 from __future__ import annotations
 
+import itertools
+from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.music.mapping import Mapping, filters
+from eigendance.music.mapping import Mapping
 
 MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
-TARGET_MOTION = 0.05  # strongest initial item: RMS displacement / bounding-box diagonal
-CALIBRATIONS = ("strongest", "each")
+# Target m of the lowest and the highest item (fractions of the bounding-box diagonal); items in
+# between fall geometrically. High harmonics are fine ripples: at the same RMS they read as noise.
+MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.015
+MOTION_BOUNDS = (0.01, 0.08)  # what every initial item's m is promised to lie in
+PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only for a moment)
+ZERO_FREQUENCY = 1e-6  # ω_ν ≤ this · ω_max: eigenvalue 0, a translation of a component
+# A harmonic moving the model less than this · the largest carries only rounding: of the
+# arithmetic (1e-15) or of the file's coordinates (6 to 7 significant digits in OBJ, PLY, STL).
+CONTENT_FLOOR = 1e-6
+CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
+MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy
+GRAM_CHUNK = 64  # harmonics per block when only the diagonal of the Gram matrix is needed
 
 
 class Dancer(Protocol):
-    """What a gallery needs of a model: k frequencies and the motion of a filter."""
+    """What a gallery needs of a model: its frequencies and the motions filters give it.
+
+    Displacements must be affine in φ: a filter moves the model by Σ_ν (φ_ν − b) D_ν,
+    D_ν (n, 3) the displacement field of target ν (harmonics: b = 1 and D_ν = u_ν X̃_νᵀ; a rig's
+    modes: b = 0). A dancer may also give `motion_gram(targets)` — (T,) → (T, T), the mean over
+    the vertices of ⟨D_ν(x), D_μ(x)⟩ — without forming positions (`HarmonicBasis` does); else
+    `motion_gram` below forms it from the displacements.
+    """
 
     @property
     def frequencies(self) -> np.ndarray:
-        """(k,) ascending: √λ of a mesh's harmonics, or a rig's natural frequencies."""
+        """(k,) ascending: √λ of a mesh's harmonics, or a rig's (ranked) modes."""
 
     @property
     def diagonal(self) -> float:
-        """Bounding-box diagonal of the rest shape, in the units of `displacements`."""
+        """Bounding-box diagonal of the rest shape, in the units of the displacements."""
 
-    def displacements(self, phi: np.ndarray) -> np.ndarray:
+    def displacements(self, phi) -> np.ndarray:
         """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape."""
+
+
+def motion_gram(dancer: Dancer, targets) -> np.ndarray:
+    """G_νμ = mean over the vertices of ⟨D_ν(x), D_μ(x)⟩ for `targets` (T,) → (T, T): the
+    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0)."""
+    targets = np.asarray(targets, dtype=np.int64)
+    own = getattr(dancer, "motion_gram", None)  # optional in the protocol: a fast path
+    if own is not None:
+        return own(targets)
+    filters_ = np.zeros((len(targets) + 1, len(dancer.frequencies)))
+    filters_[np.arange(1, len(targets) + 1), targets] = 1.0
+    moved = dancer.displacements(filters_)
+    fields = (moved[1:] - moved[0]).reshape(len(targets), -1)
+    return fields @ fields.T / moved.shape[1]
 
 
 def check_gallery_size(size) -> int:
@@ -41,6 +80,334 @@ def check_gallery_size(size) -> int:
             not MIN_GALLERY <= size <= MAX_GALLERY:
         raise InputError(f"a gallery has {MIN_GALLERY} to {MAX_GALLERY} items; got {size!r}")
     return int(size)
+
+
+# ---------------------------------------------------------------------------------------------
+# Which harmonics can move the model, and how the gallery splits them
+
+
+def motion_content(dancer: Dancer) -> np.ndarray:
+    """c_ν = RMS over the vertices of D_ν, the motion of target ν per unit of φ_ν − 1 (k,)."""
+    k = len(dancer.frequencies)
+    blocks = [np.diag(motion_gram(dancer, np.arange(start, min(k, start + GRAM_CHUNK))))
+              for start in range(0, k, GRAM_CHUNK)]
+    return np.sqrt(np.maximum(np.concatenate(blocks), 0.0))
+
+
+def drivable_harmonics(dancer: Dancer, content: np.ndarray | None = None) -> np.ndarray:
+    """The targets a gallery may drive, ascending (int64): eigenvalue > 0 (ω_ν above
+    ZERO_FREQUENCY·ω_max) and a motion c_ν above CONTENT_FLOOR times the largest one."""
+    frequencies = np.maximum(np.asarray(dancer.frequencies, dtype=np.float64), 0.0)
+    if not len(frequencies) or not frequencies.max() > 0:
+        raise InputError("the model has no harmonic of non-zero frequency: nothing can make it "
+                         "dance", remedy={"k": max(2 * len(frequencies), 8)})
+    content = motion_content(dancer) if content is None else content
+    moving = frequencies > ZERO_FREQUENCY * frequencies.max()
+    largest = content[moving].max() if moving.any() else 0.0
+    drivable = moving & (content > CONTENT_FLOOR * largest) & (largest > 0)
+    if not drivable.any():
+        raise InputError("no harmonic of the model moves it (its shape has no component on "
+                         "them)", remedy={"k": 2 * len(frequencies)})
+    return np.flatnonzero(drivable)
+
+
+@dataclass
+class Part:
+    """The part of the spectrum one initial item drives.
+
+    harmonics: the targets its transfer reaches, ascending; unit: its amplification on them
+    before calibration (signed); home: the targets whose amplification it calibrates for every
+    item (its own range); profile: the unit magnitude on `home`; order: how its transfer spreads
+    the bands over `harmonics` ("direct": low bands to low harmonics, "reversed", or
+    "interleaved": band ξ to harmonic ξ mod w).
+    """
+
+    harmonics: np.ndarray
+    unit: np.ndarray
+    home: np.ndarray
+    profile: np.ndarray
+    order: str
+
+
+def geometric_starts(count: int, parts: int) -> np.ndarray:
+    """Start positions of `parts` consecutive groups of `count` ≥ `parts` items, each at least
+    one long, lengths growing geometrically: start_i ≈ (count + 1)^(i/parts) − 1."""
+    starts = np.round((count + 1.0) ** (np.arange(parts) / parts) - 1).astype(np.int64)
+    for i in range(1, parts):  # at least one item per group, room left for the later ones
+        starts[i] = min(max(starts[i], starts[i - 1] + 1), count - (parts - i))
+    return starts
+
+
+def ranged_parts(drivable: np.ndarray, size: int) -> list[Part]:
+    """Parts over contiguous ranges of the drivable list P (N ≥ S of them).
+
+    Item 0 sends every band to P[0] and item S−1 to P[N−1] (thesis ε = 0: constant maps to the
+    lowest and the highest frequency, so crossings reach any transfer); items 1…S−2 split
+    P[1:N−1] into geometrically growing ranges, their bands spread over them, direct and reversed
+    in turn. Item s's sign is (−1)^s; its amplification is flat on its range (a band-pass).
+    """
+    count = len(drivable)
+    bounds = [0, count - 1]
+    if size > 2:
+        bounds = [0, *(1 + geometric_starts(count - 2, size - 2)), count - 1]
+    bounds.append(count)
+    parts = []
+    for s in range(size):
+        home = drivable[bounds[s]:bounds[s + 1]]
+        reached = home[:1] if s == 0 else home[-1:] if s == size - 1 else home
+        sign = 1.0 if s % 2 == 0 else -1.0
+        parts.append(Part(reached, np.full(len(reached), sign), home, np.ones(len(home)),
+                          "direct" if s % 2 else "reversed"))
+    return parts
+
+
+def combined_parts(drivable: np.ndarray, content: np.ndarray, size: int) -> list[Part]:
+    """Parts for a model with fewer drivable harmonics N than items S (a sphere, a small k).
+
+    The items are the single harmonics, then signed pairs, then signed triples … (first sign the
+    item's (−1)^s), each harmonic equalised to the same motion per unit (amplification 1/c_ν), its
+    bands interleaved: two such items correlate at most √(2/3) when their loudness is alike.
+    """
+    count = len(drivable)
+    combos = list(itertools.islice(signed_combinations(count), size))
+    if len(combos) < size:
+        raise InputError(f"the model has only {count} harmonic{'s' * (count > 1)} that move "
+                         f"it: too few for {size} different gallery items",
+                         remedy={"k": 4 * len(content)})  # symmetric shapes: moving ones are rare
+    parts = []
+    for s, (members, signs) in enumerate(combos):
+        harmonics = drivable[list(members)]
+        sign = 1.0 if s % 2 == 0 else -1.0
+        equaliser = 1.0 / content[harmonics]
+        home = harmonics if len(members) == 1 else harmonics[:0]
+        parts.append(Part(harmonics, sign * signs * equaliser, home, equaliser[:len(home)],
+                          "interleaved"))
+    return parts
+
+
+def signed_combinations(count: int):
+    """(members, signs) of 1, 2, … of `count` items, first sign +: the singles, then the pairs
+    (+ +, + −), then the triples …; (3^count − 1)/2 in all."""
+    for width in range(1, count + 1):
+        for members in itertools.combinations(range(count), width):
+            for signs in itertools.product((1.0, -1.0), repeat=width - 1):
+                yield members, np.array([1.0, *signs])
+
+
+def part_transfer(part: Part, bands: int, k: int) -> np.ndarray:
+    """The transfer (B,) sending every band into `part.harmonics`: cell centres (ν + ½)/k."""
+    width = len(part.harmonics)
+    xi = np.arange(bands)
+    if part.order == "interleaved":
+        index = xi % width
+    else:
+        index = np.minimum(width - 1, ((xi + 0.5) * width / bands).astype(np.int64))
+        if part.order == "reversed":
+            index = width - 1 - index
+    return (part.harmonics[index] + 0.5) / k
+
+
+# ---------------------------------------------------------------------------------------------
+# Motion on a song
+
+
+def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
+    """Band values of at most CALIBRATION_FRAMES evenly spaced frames of the song (F, B),
+    smoothed once more by `smoothing` s (a mapping's setting)."""
+    values = np.asarray(spectrogram.smoothed(smoothing).values, dtype=np.float64)
+    if len(values) > CALIBRATION_FRAMES:
+        values = values[np.linspace(0, len(values) - 1, CALIBRATION_FRAMES).round().astype(int)]
+    return values
+
+
+def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
+    """RMS displacement of each frame: √(wᵀ G w) for weights w (F, T) on T targets → (F,)."""
+    return np.sqrt(np.maximum(((w @ gram) * w).sum(axis=1), 0.0))
+
+
+@dataclass
+class ItemMotion:
+    """How one mapping moves a model on a song: m (fraction of the diagonal), the largest frame's
+    motion (same unit) and the main harmonic range [lowest, highest] (MAIN_SHARE of its energy)."""
+
+    motion: float
+    peak: float
+    lowest: int
+    highest: int
+
+    def as_json(self) -> dict:
+        return {"motion": self.motion, "peak": self.peak,
+                "harmonics": [self.lowest, self.highest]}
+
+
+def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndarray, np.ndarray]:
+    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T)."""
+    k = len(dancer.frequencies)
+    w = mapping.filter(song_frames(spectrogram, mapping.smoothing), k) - 1.0
+    targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
+    return targets, w[:, targets]
+
+
+def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
+    """m, the peak and the main harmonic range of each mapping on the song (any mappings: an
+    initial gallery or bred children). m = 95th percentile over the frames of the RMS vertex
+    displacement divided by the bounding-box diagonal."""
+    results = []
+    diagonal = dancer.diagonal
+    for mapping in mappings:
+        targets, w = item_weights(dancer, spectrogram, mapping)
+        if not len(targets):
+            results.append(ItemMotion(0.0, 0.0, -1, -1))
+            continue
+        gram = motion_gram(dancer, targets)
+        rms = frame_motion(w, gram) / diagonal
+        energy = (w ** 2).mean(axis=0) * np.diag(gram)
+        share = np.cumsum(energy) / max(energy.sum(), 1e-300)
+        tail = (1 - MAIN_SHARE) / 2
+        lowest = targets[min(len(targets) - 1, np.searchsorted(share, tail, side="right"))]
+        highest = targets[min(len(targets) - 1, np.searchsorted(share, 1 - tail))]
+        results.append(ItemMotion(float(np.percentile(rms, 95)), float(rms.max()),
+                                  int(lowest), int(highest)))
+    return results
+
+
+def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
+    """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
+    of the displacements: the most the music can move it."""
+    k = len(dancer.frequencies)
+    motion = []
+    for mapping in mappings:
+        w = mapping.filter(np.ones((1, mapping.bands)), k) - 1.0
+        targets = np.flatnonzero(w[0])
+        motion.append(frame_motion(w[:, targets], motion_gram(dancer, targets))[0]
+                      if len(targets) else 0.0)
+    return np.array(motion)
+
+
+def gallery_correlations(dancer: Dancer, spectrogram, mappings) -> np.ndarray:
+    """(S, S) correlation of the items' displacement fields over the song's frames:
+    Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices."""
+    weights = [item_weights(dancer, spectrogram, mapping) for mapping in mappings]
+    union = np.unique(np.concatenate([targets for targets, _ in weights]))
+    gram = motion_gram(dancer, union)
+    where = [np.searchsorted(union, targets) for targets, _ in weights]
+    size = len(mappings)
+    inner = np.zeros((size, size))
+    for s in range(size):
+        projected = weights[s][1] @ gram[where[s]]  # (F, |union|)
+        for r in range(s, size):
+            inner[s, r] = inner[r, s] = np.sum(projected[:, where[r]] * weights[r][1])
+    norms = np.sqrt(np.maximum(np.diag(inner), 1e-300))
+    return inner / norms[:, None] / norms[None, :]
+
+
+# ---------------------------------------------------------------------------------------------
+# The gallery
+
+
+def motion_targets(size: int) -> np.ndarray:
+    """Target m of each item: MOTION_LOWEST falling geometrically to MOTION_HIGHEST."""
+    return MOTION_LOWEST * (MOTION_HIGHEST / MOTION_LOWEST) ** (np.arange(size) /
+                                                                max(1, size - 1))
+
+
+def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
+              target: float, diagonal: float) -> float:
+    """α such that α·unit moves the model by m = target on these frames (F, B).
+
+    m is linear in α: α = target·diagonal / (95th percentile of the unit motion), lowered so
+    that no frame moves more than PEAK_MOTION; a silent song is calibrated at full-scale input
+    (g̃ ≡ 1, the loudest it could be).
+    """
+    k = len(dancer.frequencies)
+    mapping = Mapping(transfer, unit_amplification)
+    targets = np.flatnonzero(unit_amplification)
+    gram = motion_gram(dancer, targets)
+    rms = frame_motion(mapping.filter(values, k)[:, targets] - 1.0, gram)
+    typical, peak = np.percentile(rms, 95), rms.max()
+    if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
+        return target * diagonal / full_scale_motion(dancer, [mapping])[0]
+    return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak)
+
+
+def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
+                    amplitude: float | None = None) -> list[Mapping]:
+    """The S items of the initial gallery (docs/design.md#gallery; departs from thesis §6.2.2).
+
+    Parameters
+    ----------
+    dancer : a `HarmonicBasis` (or any `Dancer`).
+    spectrogram : the `Spectrogram` of the song that will play: each item is calibrated on it.
+    size : S, checked by `check_gallery_size` (odd sizes too).
+    amplitude : None (the default: the construction below); a number M_a gives the thesis's own
+        gallery with that amplification, uncalibrated (`thesis_gallery`: a rig calibrates its
+        items itself).
+
+    Returns
+    -------
+    S mappings, lowest part of the spectrum first. With N ≥ S drivable harmonics P (eigenvalue
+    > 0, some shape on them): item 0 sends every band to P[0], item S−1 to P[N−1], items 1…S−2
+    spread the bands over geometrically growing ranges of P in between (`ranged_parts`); with
+    N < S, signed combinations of the few harmonics (`combined_parts`). Item s's amplification is
+    (−1)^s·α_r on the range of every item r (α_r calibrated so that item r alone moves the model
+    by its target m on the song, `motion_targets`), 0 on harmonics that are never driven: each
+    item moves only its own range, while crossing any initial transfer with any initial
+    amplification still moves the model, with either sign.
+
+    Example
+    -------
+    >>> import trimesh
+    >>> from eigendance.harmonic.basis import HarmonicBasis
+    >>> from eigendance.harmonic.mesh import Mesh
+    >>> from eigendance.music.spectrogram import Spectrogram
+    >>> sphere = trimesh.creation.icosphere(2)
+    >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices * [1.4, 1, 0.8],
+    ...                                                  sphere.faces), 30, cache=False)
+    >>> song = Spectrogram.from_samples(np.sin(np.arange(44100) / 5.0), 44100)
+    >>> gallery = initial_gallery(basis, song, size=5)
+    >>> len(gallery), gallery[0].bands, len(gallery[0].amplification)
+    (5, 64, 30)
+    >>> [round(item.motion, 3) for item in gallery_motion(basis, song, gallery)]
+    [0.04, 0.031, 0.024, 0.019, 0.015]
+    """
+    if amplitude is not None:
+        return thesis_gallery(dancer, spectrogram, size, amplitude)
+    size = check_gallery_size(size)
+    k = len(dancer.frequencies)
+    bands = spectrogram.bands
+    content = motion_content(dancer)
+    drivable = drivable_harmonics(dancer, content)
+    parts = ranged_parts(drivable, size) if len(drivable) >= size else \
+        combined_parts(drivable, content, size)
+    values = song_frames(spectrogram)
+    diagonal = dancer.diagonal
+    transfers = [part_transfer(part, bands, k) for part in parts]
+    scales = []
+    for part, transfer, target in zip(parts, transfers, motion_targets(size), strict=True):
+        unit = np.zeros(k)
+        unit[part.harmonics] = part.unit
+        scales.append(calibrate(dancer, values, transfer, unit, target, diagonal))
+    dormant = np.zeros(k)  # |amplification| every item has on each harmonic outside its part
+    for part, scale in zip(parts, scales, strict=True):
+        dormant[part.home] = scale * part.profile
+    items = []
+    for s, (part, transfer, scale) in enumerate(zip(parts, transfers, scales, strict=True)):
+        amplification = (1.0 if s % 2 == 0 else -1.0) * dormant
+        amplification[part.harmonics] = scale * part.unit
+        items.append(Mapping(transfer, amplification, None, f"gallery item {s + 1}"))
+    return items
+
+
+def strongest_item(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> Mapping:
+    """The initial-gallery item that moves the model most on this song (a default mapping)."""
+    gallery = initial_gallery(dancer, spectrogram, size)
+    motion = [item.motion for item in gallery_motion(dancer, spectrogram, gallery)]
+    return gallery[int(np.argmax(motion))]
+
+
+# ---------------------------------------------------------------------------------------------
+# The thesis's initial gallery (§6.2.2), as written: for dancers that calibrate themselves (a
+# rig's ranked modes, `eigendance.modal.rig.rig_gallery`) and for comparison
 
 
 def initial_indices(frequencies, band_edges, positions=None) -> np.ndarray:
@@ -88,45 +455,15 @@ def gallery_intervals(size: int) -> np.ndarray:
     return np.stack([eps ** 2, (eps + 2 / size) ** 2], axis=1)
 
 
-def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
-                    amplitude: float | None = None,
-                    calibration: str = "strongest") -> list[Mapping]:
-    """The S items of the initial gallery (thesis 6.2.2).
+def thesis_gallery(dancer: Dancer, spectrogram, size: int, amplitude: float) -> list[Mapping]:
+    """The thesis's initial gallery (§6.2.2) with M_a = amplitude, uncalibrated.
 
-    Parameters
-    ----------
-    dancer : a `HarmonicBasis` (or any `Dancer`).
-    spectrogram : a `Spectrogram`, or its band edges (B+1,) Hz.
-    size : S, checked by `check_gallery_size` (odd sizes too).
-    amplitude : M_a; by default calibrated (see below).
-    calibration : "strongest" or "each" (see below).
-
-    Returns
-    -------
-    S mappings. Item i < ⌈S/2⌉: transfer t_ini(ε_i·ξ), amplification +M_a on interval I_i,
-    0 elsewhere; the other ⌊S/2⌋ items: t_rev(ε_i·ξ) and −M_a on I_i. ε_i = 0, 1, 2/S, 4/S, …;
-    I_i = [(2i/S)², ((2i+2)/S)²] of the normalised harmonic range: harmonic ν is in I_i when
-    its cell centre (ν + ½)/k lies in [lower, upper) (the last one closed).
-    M_a is calibrated so that the strongest item at full-scale input (g̃ ≡ 1) moves the
-    vertices by TARGET_MOTION (5%) of the bounding-box diagonal, RMS. calibration="each" gives
-    every item that moves at all its own M_a, so that each moves by 5%.
-
-    Example
-    -------
-    >>> import trimesh
-    >>> from eigendance.harmonic.basis import HarmonicBasis
-    >>> from eigendance.harmonic.mesh import Mesh
-    >>> from eigendance.music.spectrogram import band_edges
-    >>> sphere = trimesh.creation.icosphere(2)
-    >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices, sphere.faces), 30,
-    ...                                 cache=False)
-    >>> gallery = initial_gallery(basis, band_edges(64, 44100), size=5)
-    >>> len(gallery), gallery[0].bands, len(gallery[0].amplification)
-    (5, 64, 30)
+    Item i < ⌈S/2⌉: transfer t_ini(ε_i·ξ), amplification +M_a on interval I_i, 0 elsewhere; the
+    other ⌊S/2⌋ items: t_rev(ε_i·ξ) and −M_a on I_i. ε_i = 0, 1, 2/S, 4/S, …;
+    I_i = [(2i/S)², ((2i+2)/S)²] of the normalised target range: target ν is in I_i when its
+    cell centre (ν + ½)/k lies in [lower, upper) (the last one closed). On a mesh's harmonics
+    most items never move (docs/design.md#gallery): `initial_gallery` is the one to use.
     """
-    if calibration not in CALIBRATIONS:
-        raise InputError(f"unknown calibration '{calibration}' (expected one of "
-                         f"{', '.join(CALIBRATIONS)})")
     size = check_gallery_size(size)
     edges = np.asarray(getattr(spectrogram, "band_edges", spectrogram), dtype=np.float64)
     bands = len(edges) - 1
@@ -136,41 +473,12 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
     centres = (np.arange(k) + 0.5) / k
     intervals = gallery_intervals(size)
     epsilons = gallery_epsilons(size)
-    transfers, shapes = [], []
+    items = []
     for sign, transfer, count in ((1.0, direct_transfer, (size + 1) // 2),
                                   (-1.0, reversed_transfer, size // 2)):
         for i, eps in enumerate(epsilons[:count]):
-            transfers.append(transfer(frequencies, edges, eps * xi))
             lower, upper = intervals[i]
             last = i == len(intervals) - 1
             inside = (centres >= lower) & ((centres <= upper) if last else (centres < upper))
-            shapes.append(sign * inside.astype(np.float64))
-    if amplitude is not None:
-        amplitudes = np.full(size, float(amplitude))
-    else:
-        motion = full_scale_motion(dancer, [Mapping(t, a) for t, a in
-                                            zip(transfers, shapes, strict=True)])
-        if not motion.max() > 1e-12:
-            raise InputError("no initial gallery item moves this model: it has too few "
-                             "harmonics", remedy={"k": 2 * k})
-        target = TARGET_MOTION * dancer.diagonal
-        if calibration == "strongest":
-            amplitudes = np.full(size, target / motion.max())
-        else:  # items that cannot move (transfer and amplification never meet) keep 0 · shape
-            amplitudes = np.where(motion > 1e-9 * motion.max(),
-                                  target / np.maximum(motion, 1e-300), 0.0)
-    return [Mapping(t, m * a, None, f"gallery item {i}")
-            for i, (t, a, m) in enumerate(zip(transfers, shapes, amplitudes, strict=True))]
-
-
-def full_scale_motion(dancer: Dancer, mappings: list[Mapping]) -> np.ndarray:
-    """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,)."""
-    phi = filters(mappings, np.ones(mappings[0].bands), len(dancer.frequencies))  # (S, k)
-    moved = dancer.displacements(phi)  # (S, n, 3)
-    return np.sqrt((moved ** 2).sum(axis=2).mean(axis=1))
-
-
-def strongest_item(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> Mapping:
-    """The initial-gallery item that moves the model most at full-scale input (the default)."""
-    gallery = initial_gallery(dancer, spectrogram, size, calibration="strongest")
-    return gallery[int(np.argmax(full_scale_motion(dancer, gallery)))]
+            items.append((transfer(frequencies, edges, eps * xi), sign * inside * amplitude))
+    return [Mapping(t, a, None, f"gallery item {i + 1}") for i, (t, a) in enumerate(items)]

@@ -14,6 +14,7 @@ analyses the rig again (`Rig.from_skeleton`) and bumps its revision.
 
 from __future__ import annotations
 
+import copy
 import json
 import os
 import secrets
@@ -37,6 +38,15 @@ from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundl
 
 def new_id() -> str:
     return secrets.token_hex(6)
+
+
+def named(error: EigendanceError, path: str, name: str) -> EigendanceError:
+    """The error with the stored file's path and name replaced by the name the person gave it
+    (an upload is stored as upload-<random><suffix>: no message should show that)."""
+    text = str(error).replace(path, name).replace(os.path.basename(path), name)
+    renamed = copy.copy(error)
+    renamed.args = (text,)
+    return renamed
 
 
 @dataclass
@@ -171,6 +181,7 @@ class Library:
     def add_upload(self, data: bytes, name: str, kind: str):
         """Store an uploaded file under a name of our own and register it as `kind`."""
         stored = os.path.join(self.folder, f"upload-{secrets.token_hex(6)}{suffix_of(name)}")
+        os.makedirs(self.folder, exist_ok=True)  # a /tmp cleaner may have removed it meanwhile
         with open(stored, "wb") as file:
             file.write(data)
         try:
@@ -183,6 +194,9 @@ class Library:
             if is_skeleton_json(stored):
                 return self.add_rig(stored, name, "upload")
             return self.add_mapping_file(stored, name)
+        except EigendanceError as error:
+            os.unlink(stored)
+            raise named(error, stored, name) from None
         except BaseException:
             os.unlink(stored)
             raise
@@ -221,7 +235,7 @@ class Library:
             item.basis = basis
             job.update(state="done", done=job.total)
         except EigendanceError as error:
-            job.update(state="error", message=str(error))
+            job.update(state="error", message=str(named(error, item.path, item.name)))
         except Exception as error:  # noqa: BLE001 - reported to the page, never crashes the server
             job.update(state="error", message=f"{item.name}: the basis failed (internal error: "
                                               f"{type(error).__name__}: {one_line(error, 200)})")
