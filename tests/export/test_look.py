@@ -87,7 +87,7 @@ def test_the_offline_frame_looks_like_the_players(served, chromium):
     renderer = Renderer(width, height, dance.faces, dance.rest_normals(), dance.rest,
                         dance.scale)
     try:
-        renderer.clear()
+        renderer.begin([(0, 0, width, height)])
         renderer.draw(None, view_cameras([dance], [(0, 0, width, height)])[0], Look())
         studio = renderer.image().astype(float)
     finally:

@@ -89,7 +89,7 @@ def test_a_gallery_is_drawn_as_the_page_grid_each_tile_in_its_studio(basis, song
     renderer = Renderer(width, height, first.faces, first.rest_normals(), first.rest,
                         first.scale)
     try:  # the empty studios under the same cameras: the meshes are what differs
-        renderer.clear()
+        renderer.begin(cells)
         for cell, camera in zip(cells, view_cameras(dances, cells), strict=True):
             renderer.draw(None, camera, Look(), cell)
         studio = np.frombuffer(renderer.read(), np.uint8).reshape(height, width, 4)[:, :, :3]

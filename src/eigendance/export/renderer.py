@@ -82,9 +82,13 @@ void main() {
   float wrapped = max((dot(n, key) + 0.3) / 1.3, 0.0);
   vec3 light = ambient + vec3(1.0, 0.93, 0.84) * 1.05 * wrapped * wrapped
     + vec3(0.55, 0.65, 0.85) * 0.35 * max(dot(n, fill), 0.0);
-  float fresnel = pow(1.0 - max(dot(n, view), 0.0), 4.0);
+  // pow(x, 4) and pow(x, 24) by multiplication: the same numbers, cheaper on a software GPU.
+  float edge = 1.0 - max(dot(n, view), 0.0), edge2 = edge * edge;
+  float fresnel = edge2 * edge2;
   vec3 rim = vec3(0.75, 0.82, 1.0) * (0.35 * max(dot(n, back), 0.0) + 0.25) * fresnel;
-  float spec = pow(max(dot(n, normalize(key + view)), 0.0), 24.0) * 0.18;
+  float h = max(dot(n, normalize(key + view)), 0.0), h3 = h * h * h, h6 = h3 * h3;
+  float h12 = h6 * h6;
+  float spec = h12 * h12 * 0.18;
   vec3 color = albedo * light + rim + vec3(spec);
   color = color / (1.0 + 0.25 * color); // soft shoulder: highlights never clip hard
   fragColor = vec4(pow(color * 1.25, vec3(1.0 / 2.2)), 1.0);
@@ -331,27 +335,46 @@ class Renderer:
         self.shadow["strength"].value = SHADOW_STRENGTH
         self.shadow_quad = context.vertex_array(self.shadow, [(square, "2f", "position")])
         self.shadow_model = shadow_model(np.asarray(rest, dtype=np.float64), scale)
+        self.studio = context.framebuffer(
+            color_attachments=[context.renderbuffer((self.width, self.height))])
+        self.studio_views: tuple | None = None  # the views whose backdrops `studio` holds
         self.turned = False
         self.framebuffer.use()
 
-    def clear(self) -> None:
+    def begin(self, views: list[tuple[int, int, int, int]]) -> None:
+        """Start a frame of these views (x, y, w, h): the canvas's clear colour between them
+        and the studio backdrop in each. The backdrop depends on the views only, so it is drawn
+        once and copied into every frame (a per-pixel gradient is most of a frame's cost on
+        llvmpipe otherwise)."""
+        context = self.context
+        views = tuple(tuple(int(v) for v in view) for view in views)
+        context.scissor = None
+        if views != self.studio_views:
+            self.studio.use()
+            self.studio.clear(*(c / 255 for c in BACKGROUND), 1.0)
+            context.disable(moderngl.DEPTH_TEST | moderngl.BLEND)
+            for view in views:
+                self.studio.viewport = view
+                context.scissor = view
+                self.backdrop["aspect"].value = view[2] / view[3]
+                self.backdrop_quad.render(moderngl.TRIANGLE_STRIP)
+            context.scissor = None
+            self.studio_views = views
         self.framebuffer.use()
-        self.context.scissor = None
-        self.framebuffer.clear(*(c / 255 for c in BACKGROUND), 1.0, depth=1.0)
+        self.framebuffer.clear(depth=1.0)
+        context.copy_framebuffer(self.framebuffer, self.studio)  # colour only
 
     def draw(self, positions: np.ndarray | None, camera: Camera, look: Look,
              viewport: tuple[int, int, int, int] | None = None,
              normals: np.ndarray | None = None) -> None:
-        """Draw the studio and the mesh at `positions` (n, 3) into `viewport` (default: the
-        whole frame), in the page's order: backdrop, model, then the (transparent) shadow,
-        hidden where the model is in front of it. Positions None: the empty studio."""
+        """Draw the mesh at `positions` (n, 3) and its contact shadow into `viewport` (one of
+        the frame's views; default: the whole frame), in the page's order after the backdrop:
+        the model, then the (transparent) shadow, hidden where the model is in front of it.
+        Positions None: the empty studio."""
         context = self.context
         viewport = viewport or (0, 0, self.width, self.height)
         self.framebuffer.viewport = viewport
         context.scissor = viewport
-        context.disable(moderngl.DEPTH_TEST | moderngl.BLEND)
-        self.backdrop["aspect"].value = viewport[2] / viewport[3]
-        self.backdrop_quad.render(moderngl.TRIANGLE_STRIP)
         context.enable(moderngl.DEPTH_TEST)
         if positions is not None:
             self._draw_model(positions, camera, look, normals)

@@ -106,7 +106,7 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
     try:
         streams = [_one_by_one(dance.frames(times)) for dance in dances]
         for frame in zip(*streams, strict=True):
-            renderer.clear()
+            renderer.begin(cells)
             for (positions, normals), camera, look, cell in zip(frame, cameras, looks, cells,
                                                                 strict=True):
                 renderer.draw(positions, camera, look, cell, normals)
