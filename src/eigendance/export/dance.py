@@ -122,9 +122,10 @@ class Dance:
         raise NotImplementedError
 
     def loudest_times(self, count: int) -> np.ndarray:
-        """`count` times the camera frames the dance at (besides its rest shape): here spread
-        evenly over the dance; a harmonic dance's are its song's loudest moments."""
-        return np.arange(count) * (self.duration / count)
+        """Times the camera frames the dance at (besides its rest shape). Without a
+        spectrogram to find the song's `count` loudest moments (a harmonic dance's), 8·count
+        times spread evenly over the dance, so the widest poses are held too."""
+        return np.arange(8 * count) * (self.duration / (8 * count))
 
     def positions(self, times) -> np.ndarray:
         """All positions (T, n, 3) float64 at `times` (for tests and short clips)."""
