@@ -18,7 +18,7 @@ import httpx
 import pytest
 import trimesh
 from starlette.testclient import TestClient
-from web_helpers import alive, descendants, free_port, write_icosphere, write_song
+from web_helpers import free_port, write_icosphere, write_song
 
 import eigendance.server.app as app_module
 from eigendance.server.app import JSON_LIMIT, create_app
@@ -30,7 +30,7 @@ from eigendance.server.serve import (
     sweep_library_folders,
     terminal_progress,
 )
-from helpers import fixture_path
+from helpers import alive, descendants, fixture_path
 
 PORT = 8765
 LOCAL = f"http://127.0.0.1:{PORT}"

@@ -20,33 +20,6 @@ def free_port() -> int:
         return probe.getsockname()[1]
 
 
-def parents() -> dict[int, int]:
-    """pid → parent pid of every live (non-zombie) process (Linux)."""
-    table = {}
-    for name in os.listdir("/proc"):
-        if name.isdigit():
-            try:
-                with open(f"/proc/{name}/stat") as file:
-                    fields = file.read().rsplit(")", 1)[1].split()
-            except OSError:
-                continue
-            if fields[0] != "Z":
-                table[int(name)] = int(fields[1])
-    return table
-
-
-def descendants(pid: int) -> set[int]:
-    table, found, frontier = parents(), set(), {pid}
-    while frontier:
-        frontier = {child for child, parent in table.items() if parent in frontier} - found
-        found |= frontier
-    return found
-
-
-def alive(pids: set[int]) -> set[int]:
-    return pids & set(parents())
-
-
 def write_icosphere(path, subdivisions=2) -> str:
     import trimesh
 
