@@ -12,6 +12,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 
 import httpx
@@ -30,6 +31,7 @@ from eigendance.server.serve import (
     sweep_library_folders,
     terminal_progress,
 )
+from eigendance.server.workers import Workers
 from helpers import alive, descendants, fixture_path
 
 PORT = 8765
@@ -455,6 +457,19 @@ def test_heavy_work_never_runs_on_the_event_loop(client, library, files, monkeyp
     client.post("/api/rig-gallery", json={"rig": hand, "song": song, "size": 2})
     client.post(f"/api/rigs/{hand}/stiffness", json={"scale": 2})
     assert seen == dict.fromkeys(seen, "thread") and len(seen) == 11, seen
+
+
+def test_worker_threads_hand_back_results_and_errors_and_never_hold_the_process():
+    workers = Workers(2)
+    assert asyncio.run(in_worker_of(workers, sum, [1, 2, 3])) == 6
+    with pytest.raises(ValueError, match="bad"):
+        asyncio.run(in_worker_of(workers, int, "bad"))
+    busy = [thread for thread in threading.enumerate() if thread.name.startswith("worker-")]
+    assert busy and all(thread.daemon for thread in busy)
+
+
+async def in_worker_of(workers, function, *args):
+    return await asyncio.wrap_future(workers.submit(function, *args))
 
 
 # --- the end of the server --------------------------------------------------------------------

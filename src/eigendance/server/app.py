@@ -3,9 +3,9 @@
 Every route is a module-level function; the state it serves is the `Library` on
 ``request.app.state.library``. Requests pass `server.guard` first (Host, origin, content type).
 Work heavier than a lookup (parsing a JSON body, decoding, galleries, breeding, rig analysis,
-bundles, answers of many numbers) runs in a worker thread, never on the event loop. Every error
-is one line of JSON, ``{"error": "…"}``: 4xx for bad input, 500 for a failure of ours; messages
-call uploads by their names, never by where they are stored.
+bundles, answers of many numbers) runs in a worker thread (`server.workers`), never on the
+event loop. Every error is one line of JSON, ``{"error": "…"}``: 4xx for bad input, 500 for a
+failure of ours; messages call uploads by their names, never by where they are stored.
 """
 
 from __future__ import annotations
@@ -47,6 +47,7 @@ from eigendance.music.mapping import Mapping
 from eigendance.server.binary import rig_meta
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library, RigItem, check_mapping_size
+from eigendance.server.workers import in_worker
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
                ".oga": "audio/ogg", ".opus": "audio/ogg", ".flac": "audio/flac",
@@ -133,7 +134,7 @@ async def json_body(request: Request):
         if size > JSON_LIMIT:
             raise too_large
         chunks.append(chunk)
-    return await asyncio.to_thread(parse_json, b"".join(chunks))
+    return await in_worker(parse_json, b"".join(chunks))
 
 
 def _json_integer(text: str) -> int:
@@ -170,7 +171,7 @@ def json_answer(document, status: int = 200) -> Response:
 
 async def answer(make, status: int = 200) -> Response:
     """make() → a JSON document, built and rendered in a worker thread."""
-    return await asyncio.to_thread(lambda: json_answer(make(), status))
+    return await in_worker(lambda: json_answer(make(), status))
 
 
 def gallery_size(value) -> int:
@@ -203,7 +204,7 @@ async def get_basis(request: Request):
     if dtype not in ("float32", "float16"):
         raise HTTPException(400, "dtype must be float32 or float16")
     if dtype == "float16":
-        bundle = await asyncio.to_thread(library_of(request).half_bundle, item)
+        bundle = await in_worker(library_of(request).half_bundle, item)
     else:
         bundle = item.bundle
     return Response(bundle, media_type="application/octet-stream",
@@ -268,7 +269,7 @@ async def upload(request: Request):
         if (why := sniff(name, head)) is not None:
             raise HTTPException(415, f"{name}: {why}")
         async with request.app.state.uploads:
-            item, new = await asyncio.to_thread(library.add_upload, stored, name, kind, digest)
+            item, new = await in_worker(library.add_upload, stored, name, kind, digest)
     finally:
         if os.path.exists(stored):
             os.unlink(stored)
@@ -353,7 +354,7 @@ async def save_mapping(request: Request):
     body = await json_body(request)
     name = os.path.basename(str(request.query_params.get("name", "mapping.json"))) or \
         "mapping.json"
-    item, new = await asyncio.to_thread(library_of(request).add_mapping, body, name)
+    item, new = await in_worker(library_of(request).add_mapping, body, name)
     return JSONResponse(item.as_json(), status_code=201 if new else 200)
 
 
@@ -381,7 +382,7 @@ def bundle_response(bundle: bytes) -> Response:
 
 async def ready_rig(request: Request) -> RigItem:
     """The rig of the path's id, analysed (built-in rigs are analysed on first use)."""
-    return await asyncio.to_thread(library_of(request).ready_rig, rig_of(request))
+    return await in_worker(library_of(request).ready_rig, rig_of(request))
 
 
 async def get_rig(request: Request):
@@ -413,7 +414,7 @@ async def rig_stiffness(request: Request):
         raise HTTPException(400, "scale must be a number ≥ 0")
     item = await ready_rig(request)
     values = body.get("joints", {})
-    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+    bundle = await in_worker(library_of(request).edit_rig, item,
                                      lambda skeleton: skeleton.with_stiffness(values, scale))
     return bundle_response(bundle)
 
@@ -432,7 +433,7 @@ async def rig_pose(request: Request):
                                  for v in rotation):
         raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
     item = await ready_rig(request)
-    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+    bundle = await in_worker(library_of(request).edit_rig, item,
                                      lambda skeleton: skeleton.rotate_joint(joint, rotation))
     return bundle_response(bundle)
 
@@ -440,7 +441,7 @@ async def rig_pose(request: Request):
 async def rig_reset(request: Request):
     """The rig as loaded again (pose and stiffness) → its bundle."""
     item = await ready_rig(request)
-    return bundle_response(await asyncio.to_thread(library_of(request).reset_rig, item))
+    return bundle_response(await in_worker(library_of(request).reset_rig, item))
 
 
 async def rig_gallery_route(request: Request):
@@ -452,7 +453,7 @@ async def rig_gallery_route(request: Request):
     item = item_of(request, "rig", body.get("rig"))
     song = song_of(request, str(body.get("song")))
     size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    await asyncio.to_thread(library.ready_rig, item)
+    await in_worker(library.ready_rig, item)
     rig = item.rig
     if rig.palette is None:
         raise HTTPException(409, f"{item.name}: the rig has no vibration mode; nothing to "

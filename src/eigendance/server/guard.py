@@ -23,6 +23,7 @@ line on stderr: no traceback reaches the client or the terminal.
 
 from __future__ import annotations
 
+import asyncio
 import ipaddress
 import json
 import socket
@@ -171,6 +172,10 @@ class Guard:
 
         try:
             await self.app(scope, receive, tracked)
+        except asyncio.CancelledError:  # the server is ending and stopped waiting for it
+            if not started:
+                await send_json(send, 503, "the server is stopping")
+            raise
         except Exception as error:  # noqa: BLE001 - every failure of ours ends in one line
             what = self.scrub(f"internal error ({type(error).__name__}: {one_line(error, 200)})")
             print(f"eigendance: {one_line(scope.get('method', ''))} "
