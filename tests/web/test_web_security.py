@@ -461,15 +461,11 @@ def test_heavy_work_never_runs_on_the_event_loop(client, library, files, monkeyp
 
 def test_worker_threads_hand_back_results_and_errors_and_never_hold_the_process():
     workers = Workers(2)
-    assert asyncio.run(in_worker_of(workers, sum, [1, 2, 3])) == 6
+    assert workers.submit(sum, [1, 2, 3]).result(timeout=10) == 6
     with pytest.raises(ValueError, match="bad"):
-        asyncio.run(in_worker_of(workers, int, "bad"))
+        workers.submit(int, "bad").result(timeout=10)
     busy = [thread for thread in threading.enumerate() if thread.name.startswith("worker-")]
     assert busy and all(thread.daemon for thread in busy)
-
-
-async def in_worker_of(workers, function, *args):
-    return await asyncio.wrap_future(workers.submit(function, *args))
 
 
 # --- the end of the server --------------------------------------------------------------------

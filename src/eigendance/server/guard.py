@@ -29,6 +29,8 @@ import json
 import socket
 import sys
 
+from starlette.requests import ClientDisconnect
+
 from eigendance.errors import one_line
 
 DEFAULT_HOST = "127.0.0.1"
@@ -172,6 +174,8 @@ class Guard:
 
         try:
             await self.app(scope, receive, tracked)
+        except ClientDisconnect:  # the client went away mid-request: nobody to answer
+            return
         except asyncio.CancelledError:  # the server is ending and stopped waiting for it
             if not started:
                 await send_json(send, 503, "the server is stopping")
