@@ -12,8 +12,6 @@ sys.path.insert(0, os.path.dirname(__file__))
 
 from web_helpers import (
     CAT,
-    CHROMIUM,
-    CHROMIUM_ARGS,
     E2E_K,
     REAL_SONG,
     free_port,
@@ -55,14 +53,3 @@ def live_server(web_files):
         process.kill()
     log.close()
 
-
-@pytest.fixture(scope="session")
-def browser():
-    if not os.path.exists(CHROMIUM):
-        pytest.skip("Chromium is not installed at /usr/bin/chromium")
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
