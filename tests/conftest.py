@@ -1,5 +1,12 @@
+import os
+import sys
+
 import numpy as np
 import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "web"))
+
+from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
 
 
 @pytest.fixture(autouse=True)
@@ -11,3 +18,17 @@ def isolated_cache(tmp_path, monkeypatch):
 @pytest.fixture
 def rng():
     return np.random.default_rng(7)
+
+
+@pytest.fixture(scope="session")
+def browser():
+    """Headless Chromium (/usr/bin/chromium), one per session: Playwright's sync API allows one
+    instance per thread, so tests/web and tests/export share it."""
+    if not os.path.exists(CHROMIUM):
+        pytest.skip("Chromium is not installed at /usr/bin/chromium")
+    from playwright.sync_api import sync_playwright  # heavy: only for the browser tests
+
+    with sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()

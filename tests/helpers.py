@@ -1,4 +1,5 @@
-"""Small meshes made by code and paths of the test fixtures."""
+"""Small meshes made by code, paths of the test fixtures, and the processes a process started
+(Linux /proc)."""
 
 import os
 
@@ -28,3 +29,30 @@ def bumpy_sphere(subdivisions=2) -> Mesh:
     x, y, z = icosphere.vertices.T
     vertices = vertices * (1 + 0.15 * np.sin(3 * x) * np.cos(2 * y) + 0.1 * z ** 2)[:, None]
     return Mesh.from_arrays(vertices, icosphere.faces, name="bumpy sphere")
+
+
+def parents() -> dict[int, int]:
+    """pid → parent pid of every live (non-zombie) process."""
+    table = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit():
+            try:
+                with open(f"/proc/{name}/stat") as file:
+                    fields = file.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if fields[0] != "Z":
+                table[int(name)] = int(fields[1])
+    return table
+
+
+def descendants(pid: int) -> set[int]:
+    table, found, frontier = parents(), set(), {pid}
+    while frontier:
+        frontier = {child for child, parent in table.items() if parent in frontier} - found
+        found |= frontier
+    return found
+
+
+def alive(pids: set[int]) -> set[int]:
+    return pids & set(parents())

@@ -11,7 +11,6 @@ import argparse
 import math
 import os
 import sys
-import tempfile
 import time
 import warnings
 
@@ -58,12 +57,13 @@ from eigendance.music.gallery import (
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, frame_times, save_picture
 from eigendance.server.app import create_app
-from eigendance.server.library import Library
+from eigendance.server.guard import exposure_warning
 from eigendance.server.serve import (
     DEFAULT_HOST,
     DEFAULT_PORT,
     DEMO_K,
     demo_paths,
+    library_session,
     listen,
     run,
     terminal_progress,
@@ -173,12 +173,17 @@ def run_basis(args) -> None:
 
 def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--host", default=DEFAULT_HOST,
-                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only)")
+                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only; "
+                             "another address lets other machines use the server, with no "
+                             "password)")
     parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
                         help=f"port (default {DEFAULT_PORT}; 0: any free port)")
     parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
     parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
                         help="largest file a page may upload, MiB (default 64)")
+    parser.add_argument("--max-memory-mb", type=number(16, 1 << 22, integer=True), default=4096,
+                        help="memory the library's meshes, songs and rigs may keep, MiB; the "
+                             "least recently used are removed beyond it (default 4096)")
 
 
 def add_serve(parser):
@@ -191,13 +196,7 @@ def add_serve(parser):
 
 
 def run_serve(args) -> None:
-    listening = listen(args.host, args.port)
-    library = new_library(args)
-    for path in args.files:
-        library.add_path(path)
-    terminal_progress(library)
-    run(create_app(library), listening,
-        announce=lambda port: f"eigendance: serving on {url(args.host, port)}")
+    serve(args, lambda: args.files, "eigendance: serving on {url}")
 
 
 def add_demo(parser):
@@ -205,18 +204,23 @@ def add_demo(parser):
 
 
 def run_demo(args) -> None:
+    serve(args, demo_paths, "eigendance demo: open {url} in a browser")
+
+
+def serve(args, paths, announce: str) -> None:
+    """Listen, fill a temporary library with the files of paths() and serve it until
+    interrupted; the library's folder is removed at the end (docs/design.md#server)."""
     listening = listen(args.host, args.port)
-    library = new_library(args)
-    terminal_progress(library)
-    for path in demo_paths():
-        library.add_path(path)
-    run(create_app(library), listening,
-        announce=lambda port: f"eigendance demo: open {url(args.host, port)} in a browser")
-
-
-def new_library(args) -> Library:
-    return Library(tempfile.mkdtemp(prefix="eigendance-library-"), k=args.k,
-                   max_upload_bytes=args.max_upload_mb << 20)
+    port = listening.getsockname()[1]
+    if warning := exposure_warning(args.host):
+        print(warning, file=sys.stderr)
+    with library_session(k=args.k, max_upload_bytes=args.max_upload_mb << 20,
+                         memory_budget=args.max_memory_mb << 20) as library:
+        terminal_progress(library)
+        for path in paths():
+            library.add_path(path)
+        run(create_app(library, args.host, port), listening, on_exit=library.stop,
+            announce=announce.format(url=url(args.host, port)))
 
 
 def url(host: str, port: int) -> str:

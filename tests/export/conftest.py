@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import os
-import sys
-
 import pytest
 from export_helpers import SONG, rig
 
@@ -14,10 +11,6 @@ from eigendance.harmonic.mesh import Mesh
 from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.spectrogram import Spectrogram
 from helpers import bumpy_sphere, fixture_path
-
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "web"))
-
-from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
 
 
 @pytest.fixture(scope="session")
@@ -60,13 +53,6 @@ def fox_lbs(song):
     return rig(fixture_path("rigged", "Fox.glb"), "lbs", song)
 
 
-@pytest.fixture(scope="module")  # one Playwright at a time: tests/web starts its own
-def chromium():
-    if not os.path.exists(CHROMIUM):
-        pytest.skip("Chromium is not installed at /usr/bin/chromium")
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
+@pytest.fixture
+def chromium(browser):
+    return browser

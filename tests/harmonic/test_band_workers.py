@@ -19,36 +19,9 @@ import trimesh
 
 from eigendance.harmonic.eigensolver import solve_bands
 from eigendance.harmonic.laplacian import laplacian
-from helpers import sphere
+from helpers import alive, descendants, sphere
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
-
-
-def parents() -> dict[int, int]:
-    """pid → parent pid of every live (non-zombie) process."""
-    table = {}
-    for name in os.listdir("/proc"):
-        if name.isdigit():
-            try:
-                with open(f"/proc/{name}/stat") as file:
-                    fields = file.read().rsplit(")", 1)[1].split()
-            except OSError:
-                continue
-            if fields[0] != "Z":
-                table[int(name)] = int(fields[1])
-    return table
-
-
-def descendants(pid: int) -> set[int]:
-    table, found, frontier = parents(), set(), {pid}
-    while frontier:
-        frontier = {child for child, parent in table.items() if parent in frontier} - found
-        found |= frontier
-    return found
-
-
-def alive(pids: set[int]) -> set[int]:
-    return pids & set(parents())
 
 
 @pytest.fixture(scope="module")

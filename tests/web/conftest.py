@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import subprocess
 import sys
 
 import pytest
@@ -12,11 +11,9 @@ sys.path.insert(0, os.path.dirname(__file__))
 
 from web_helpers import (
     CAT,
-    CHROMIUM,
-    CHROMIUM_ARGS,
     E2E_K,
     REAL_SONG,
-    free_port,
+    running_server,
     write_icosphere,
     write_song,
 )
@@ -34,35 +31,7 @@ def web_files(tmp_path_factory):
 def live_server(web_files):
     """`eigendance serve CAT SONG REAL_SONG -k 24` on a free port of 127.0.0.1, as a
     subprocess (SONG, generated, comes first: the page's default)."""
-    port = free_port()
-    env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
-    command = [sys.executable, "-m", "eigendance.cli", "serve", CAT, web_files["song"],
-               REAL_SONG, "-k", str(E2E_K), "--port", str(port)]
-    log = open(web_files["folder"] / "server.log", "w")  # noqa: SIM115 - closed below
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=log, text=True)
-    line = process.stdout.readline()
-    if "serving on" not in line:
-        process.kill()
-        log.close()
-        raise RuntimeError(f"server did not start: {line} "
-                           f"{(web_files['folder'] / 'server.log').read_text()}")
-    url = line.strip().split()[-1]
-    yield {"url": url, "port": port, "process": process, "announce": line}
-    process.terminate()
-    try:
-        process.wait(10)
-    except subprocess.TimeoutExpired:
-        process.kill()
-    log.close()
+    with running_server([CAT, web_files["song"], REAL_SONG, "-k", str(E2E_K)],
+                        web_files["folder"], web_files["cache"]) as server:
+        yield server
 
-
-@pytest.fixture(scope="session")
-def browser():
-    if not os.path.exists(CHROMIUM):
-        pytest.skip("Chromium is not installed at /usr/bin/chromium")
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()

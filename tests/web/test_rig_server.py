@@ -55,7 +55,7 @@ def client(files, tmp_path):
     library = Library(str(tmp_path / "library"), k=8, max_upload_bytes=2_000_000)
     for path in (files["song"], files["skeleton"], files["glb"]):
         library.add_path(path)
-    with TestClient(create_app(library)) as test_client:
+    with TestClient(create_app(library), base_url="http://localhost") as test_client:
         test_client.library = library
         yield test_client
     library.close()
@@ -247,12 +247,16 @@ def test_the_rig_gallery_is_the_python_one_and_breeds(client):
         "rig": hand, "song": song, "size": 40}), 400)
     error_of(client.post("/api/rig-gallery", json={"rig": "nope", "song": song}), 404)
     error_of(client.post("/api/rig-gallery", json={"rig": hand, "song": "nope"}), 404)
-    error_of(client.post("/api/rig-gallery", content=b"[1]"), 400)
+    error_of(client.post("/api/rig-gallery", content=b"[1]",
+                         headers={"Content-Type": "application/json"}), 400)
 
 
 def test_rig_uploads(client, files):
     with open(files["skeleton"], "rb") as file:
-        answer = client.post("/api/upload?name=my%20chain.json", content=file.read())
+        skeleton = file.read()
+    same = client.post("/api/upload?name=again.json", content=skeleton)  # the file given to serve
+    assert same.status_code == 200 and same.json()["item"]["id"] == rig_id(client, "chain.json")
+    answer = client.post("/api/upload?name=my%20chain.json", content=skeleton + b"\n")
     assert answer.status_code == 201 and answer.json()["kind"] == "rig"
     item = answer.json()["item"]
     assert item["name"] == "my chain.json" and item["ready"] and item["origin"] == "upload"

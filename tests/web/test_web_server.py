@@ -39,7 +39,7 @@ def client(files, tmp_path):
         library.add_path(path)
     app = create_app(library)
     assert library.wait(60)
-    with TestClient(app) as test_client:
+    with TestClient(app, base_url="http://localhost") as test_client:
         test_client.library = library
         yield test_client
     library.close()
@@ -136,10 +136,14 @@ def test_mesh_upload_runs_a_basis_job_with_server_sent_events(client, files):
 
 
 def test_song_and_mapping_uploads(client, files):
-    with open(files["song"], "rb") as file:
-        response = client.post("/api/upload?name=again.wav", content=file.read())
-    assert response.status_code == 201 and response.json()["kind"] == "song"
     mesh_id, song_id = ids(client)
+    with open(files["song"], "rb") as file:
+        song = file.read()
+    response = client.post("/api/upload?name=again.wav", content=song)  # the same bytes
+    assert response.status_code == 200 and response.json()["kind"] == "song"
+    assert response.json()["item"]["id"] == song_id
+    response = client.post("/api/upload?name=other.wav", content=song[:-400])  # 0.01 s shorter
+    assert response.status_code == 201 and response.json()["item"]["id"] != song_id
     mapping = client.post("/api/gallery", json={"mesh": mesh_id, "song": song_id,
                                                 "size": 2}).json()["mappings"][0]
     response = client.post("/api/upload?name=m.json", content=json.dumps(mapping).encode())
@@ -158,7 +162,7 @@ def error_of(response, status):
                                   "..\\..\\evil.obj"])
 def test_path_traversal_in_upload_names_stays_inside_the_library(client, files, tmp_path, name):
     with open(files["mesh"], "rb") as file:
-        data = file.read()
+        data = file.read() + f"# {name}\n".encode()  # not the library's ball.obj
     response = client.post(f"/api/upload?name={name}", content=data)
     assert response.status_code == 201
     assert response.json()["item"]["name"] == "evil.obj"
@@ -210,7 +214,8 @@ def test_unknown_ids_are_404_json(client, path):
 ])
 def test_malformed_requests_are_4xx_json(client, route, body, status):
     before = library_snapshot(client)
-    error_of(client.post(route, content=body), status)
+    error_of(client.post(route, content=body, headers={"Content-Type": "application/json"}),
+             status)
     assert library_snapshot(client) == before
 
 
@@ -233,7 +238,7 @@ def test_every_size_of_the_rule_works_odd_ones_too_and_others_are_refused(files,
     library.add_path(str(path))
     library.add_path(files["song"])
     assert library.wait(60)
-    with TestClient(create_app(library)) as test_client:
+    with TestClient(create_app(library), base_url="http://localhost") as test_client:
         data = test_client.get("/api/library").json()
         body = {"mesh": data["meshes"][0]["id"], "song": data["songs"][0]["id"]}
         for size in range(2, 17):

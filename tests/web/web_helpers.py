@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import socket
+import subprocess
+import sys
 import time
 
 CHROMIUM = "/usr/bin/chromium"
@@ -21,6 +24,33 @@ def free_port() -> int:
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))
         return probe.getsockname()[1]
+
+
+@contextlib.contextmanager
+def running_server(arguments, folder, cache):
+    """`eigendance serve ARGUMENTS --port P` as a subprocess on a free port of 127.0.0.1, its
+    log in FOLDER/server.log and its basis cache in CACHE: {url, port, process, announce}."""
+    port = free_port()
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache))
+    command = [sys.executable, "-m", "eigendance.cli", "serve", *arguments, "--port", str(port)]
+    log_path = os.path.join(folder, "server.log")
+    with open(log_path, "w") as log:
+        process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=log,
+                                   text=True)
+        line = process.stdout.readline()
+        if "serving on" not in line:
+            process.kill()
+            with open(log_path) as written:
+                raise RuntimeError(f"server did not start: {line} {written.read()}")
+        try:
+            yield {"url": line.strip().split()[-1], "port": port, "process": process,
+                   "announce": line}
+        finally:
+            process.terminate()
+            try:
+                process.wait(10)
+            except subprocess.TimeoutExpired:
+                process.kill()
 
 
 def write_icosphere(path, subdivisions=2) -> str:

@@ -64,6 +64,16 @@ export async function breed(parents: Mapping[], size: number, seed: number): Pro
   return (await postJSON<{ mappings: Mapping[] }>("api/breed", { parents, size, seed })).mappings;
 }
 
+/** Remove an item from the server's library (not its file on disk): the ids removed with it
+ * (a mesh takes the rig of its skin along). */
+export async function remove(kind: "mesh" | "song" | "mapping" | "rig", id: string):
+    Promise<string[]> {
+  const route = kind === "mesh" ? "meshes" : `${kind}s`;
+  const response = await checked(await fetch(`api/${route}/${encodeURIComponent(id)}`,
+    { method: "DELETE" }));
+  return (await response.json()).removed;
+}
+
 export async function upload(file: File): Promise<any> {
   const response = await fetch(`api/upload?name=${encodeURIComponent(file.name)}`, {
     method: "POST", body: file,

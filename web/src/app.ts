@@ -341,6 +341,9 @@ export class App {
         this.open(await api.getJSON<Mapping>(`api/mappings/${id}`), name);
       });
     });
+    for (const kind of ["mesh", "song", "mapping"] as const) {
+      $(`remove-${kind}`).addEventListener("click", () => void this.remove(kind));
+    }
     $("play").addEventListener("click", () => this.togglePlay());
     $("seek").addEventListener("input", (e) => {
       this.transport.seek(Number(valueOf(e)));
@@ -366,6 +369,25 @@ export class App {
     // A banner or a wrapped header moves the views: draw again where they are now.
     new ResizeObserver(() => this.viewer.requestDraw()).observe($("tiles"));
     new ResizeObserver(() => this.viewer.requestDraw()).observe($("player-area"));
+  }
+
+  /** Remove the item chosen in `kind`'s menu from the server's library (not from the disk);
+   * a removed model or song on screen gives way to the first one left. */
+  private async remove(kind: "mesh" | "song" | "mapping"): Promise<void> {
+    const menu = $<HTMLSelectElement>(kind === "mapping" ? "mapping-menu" : kind);
+    const id = menu.value;
+    const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
+    await this.guard(`Could not remove ${name}`, async () => {
+      await api.remove(kind, id);
+      const library = await this.library.refresh();
+      if (kind === "mesh" && id === this.library.meshId && library.meshes.length) {
+        await this.showMesh(library.meshes[0].id);
+      } else if (kind === "song" && id === this.library.songId && library.songs.length) {
+        this.transport.pause();
+        await this.changeSong(library.songs[0].id);
+      }
+      this.status(`${name} removed from the library`);
+    });
   }
 
   private togglePlay(): void {

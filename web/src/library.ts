@@ -39,6 +39,15 @@ export class Library {
     const chosen = mappings.value;
     fillSelect(mappings, items.mappings, chosen);
     (mappings.closest("label") ?? mappings).hidden = !items.mappings.length;
+    $("remove-mapping").hidden = !items.mappings.length;
+    // The page always shows a model and a song: the last one stays until another comes.
+    for (const [kind, count] of [["mesh", items.meshes.length], ["song", items.songs.length]]) {
+      const button = $<HTMLButtonElement>(`remove-${kind}`);
+      button.disabled = Number(count) < 2;
+      button.title = button.disabled ? `the only ${kind === "mesh" ? "model" : "song"}: add `
+        + "another before removing it" : `remove this ${kind === "mesh" ? "model" : "song"} from `
+        + "the library (its file on disk stays)";
+    }
     return items;
   }
 

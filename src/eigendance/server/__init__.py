@@ -1,7 +1,8 @@
 """`eigendance serve` / `eigendance demo`: the web app's HTTP server (docs/design.md#server).
 
-Routes (every error is a one-line JSON object ``{"error": "…"}``, 4xx for bad input, 500 for a
-failure of ours):
+Every request first passes `server.guard` (Host, origin and content-type checks); every error
+is a one-line JSON object ``{"error": "…"}``, 4xx for bad input, 500 for a failure of ours.
+Routes:
 
 - ``GET /api/config`` — rules shared with the page (gallery sizes).
 - ``GET /api/library`` — meshes (with basis state), songs and mappings.
@@ -12,6 +13,8 @@ failure of ours):
 - ``POST /api/gallery`` ``{mesh, song, size}`` and ``POST /api/breed`` ``{parents, size, seed}``
   — mappings from `eigendance.music` (the one implementation).
 - ``GET /api/mappings/{id}``, ``POST /api/mappings?name=`` — saved mappings.
+- ``DELETE /api/meshes/{id}``, ``/api/songs/{id}``, ``/api/mappings/{id}``, ``/api/rigs/{id}``
+  — remove an item (`Library.remove`).
 - ``GET /api/rigs/{id}`` (description), ``/rig.bin`` (`binary.rig_bundle`), ``/skeleton.json``;
   ``POST /api/rigs/{id}/stiffness``, ``/pose``, ``/reset`` (edits answering a new bundle);
   ``POST /api/rig-gallery`` ``{rig, song, size}`` — the initial gallery of mode mappings.

@@ -1,20 +1,25 @@
 """The HTTP API and the static web app (Starlette); routes are listed in `eigendance.server`.
 
 Every route is a module-level function; the state it serves is the `Library` on
-``request.app.state.library``. Work heavier than a lookup (decoding, galleries, breeding) runs in
-a worker thread, never on the event loop. Every error is one line of JSON, ``{"error": "…"}``:
-4xx for bad input, 500 for a failure of ours.
+``request.app.state.library``. Requests pass `server.guard` first (Host, origin, content type).
+Work heavier than a lookup (parsing a JSON body, decoding, galleries, breeding, rig analysis,
+bundles, answers of many numbers) runs in a worker thread (`server.workers`), never on the
+event loop. Every error is one line of JSON, ``{"error": "…"}``: 4xx for bad input, 500 for a
+failure of ours; messages call uploads by their names, never by where they are stored.
 """
 
 from __future__ import annotations
 
 import asyncio
+import hashlib
 import json
 import os
+import tempfile
 from importlib import resources
 
 from starlette.applications import Starlette
 from starlette.exceptions import HTTPException
+from starlette.middleware import Middleware
 from starlette.requests import Request
 from starlette.responses import (
     FileResponse,
@@ -26,8 +31,8 @@ from starlette.responses import (
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
-from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.files import kind_of, suffix_of
+from eigendance.errors import InputError, one_line
+from eigendance.files import JSON_INTEGER_DIGITS, kind_of, suffix_of
 from eigendance.modal.motion import default_mapping
 from eigendance.modal.rig import rig_gallery
 from eigendance.music.breeding import breed
@@ -39,13 +44,16 @@ from eigendance.music.gallery import (
     initial_gallery,
 )
 from eigendance.music.mapping import Mapping
-from eigendance.server.binary import basis_bundle, rig_meta
-from eigendance.server.library import Library, RigItem
+from eigendance.server.binary import rig_meta
+from eigendance.server.guard import DEFAULT_HOST, Guard
+from eigendance.server.library import Library, RigItem, check_mapping_size
+from eigendance.server.workers import in_worker
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
                ".oga": "audio/ogg", ".opus": "audio/ogg", ".flac": "audio/flac",
                ".m4a": "audio/mp4"}
-JSON_LIMIT = 4 << 20  # bytes of a JSON request body
+JSON_LIMIT = 8 << 20  # bytes of a JSON request body
+UPLOADS_AT_ONCE = 2  # uploads decoded at the same time (each may take hundreds of MB)
 
 
 def static_folder() -> str | None:
@@ -83,18 +91,20 @@ def library_of(request: Request) -> Library:
     return request.app.state.library
 
 
-def mesh_of(request: Request, mesh_id: str):
-    item = library_of(request).meshes.get(mesh_id)
+def item_of(request: Request, kind: str, item_id):
+    """The library's item of `kind` with `item_id`; 404 if there is none."""
+    item = library_of(request).get(kind, str(item_id))
     if item is None:
-        raise HTTPException(404, f"no mesh with id '{mesh_id}'")
+        raise HTTPException(404, f"no {kind} with id '{one_line(str(item_id), 40)}'")
     return item
+
+
+def mesh_of(request: Request, mesh_id: str):
+    return item_of(request, "mesh", mesh_id)
 
 
 def song_of(request: Request, song_id: str):
-    item = library_of(request).songs.get(song_id)
-    if item is None:
-        raise HTTPException(404, f"no song with id '{song_id}'")
-    return item
+    return item_of(request, "song", song_id)
 
 
 def ready_basis(request: Request, mesh_id: str):
@@ -109,13 +119,59 @@ def ready_basis(request: Request, mesh_id: str):
 
 
 async def json_body(request: Request):
-    body = await request.body()
-    if len(body) > JSON_LIMIT:
-        raise HTTPException(413, f"the request body is larger than {JSON_LIMIT >> 20} MiB")
+    """The request's JSON document: Content-Type application/json, at most JSON_LIMIT bytes
+    (refused before they are read), parsed in a thread by `parse_json`."""
+    content_type = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    if content_type != "application/json":
+        raise HTTPException(415, "send the request body as application/json")
+    too_large = HTTPException(413, f"the request body is larger than {JSON_LIMIT >> 20} MiB")
+    declared = request.headers.get("content-length", "")
+    if declared.isdigit() and int(declared) > JSON_LIMIT:
+        raise too_large
+    chunks, size = [], 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > JSON_LIMIT:
+            raise too_large
+        chunks.append(chunk)
+    return await in_worker(parse_json, b"".join(chunks))
+
+
+def _json_integer(text: str) -> int:
+    if len(text) > JSON_INTEGER_DIGITS:
+        raise InputError(f"the request body holds an integer of {len(text.lstrip('-'))} "
+                         f"digits (at most {JSON_INTEGER_DIGITS})")
+    return int(text)
+
+
+def _json_constant(name: str):
+    raise InputError(f"the request body holds {name}, which JSON does not allow")
+
+
+def parse_json(body: bytes):
+    """A JSON document with the rules of `files.read_json`: UTF-8, nesting within Python's
+    recursion limit, integers of at most JSON_INTEGER_DIGITS digits; no NaN or Infinity."""
     try:
-        return json.loads(body)
-    except ValueError:
-        raise HTTPException(400, "the request body is not valid JSON") from None
+        return json.loads(body, parse_int=_json_integer, parse_constant=_json_constant)
+    except InputError:
+        raise
+    except RecursionError:
+        raise InputError("the request body is nested too deeply") from None
+    except ValueError:  # UnicodeDecodeError and JSONDecodeError
+        raise InputError("the request body is not valid JSON") from None
+
+
+def json_answer(document, status: int = 200) -> Response:
+    """A JSON response (rendered as JSONResponse does); call it in a worker thread when the
+    document is large."""
+    return Response(json.dumps(document, ensure_ascii=False, allow_nan=False,
+                               separators=(",", ":")).encode(),
+                    status_code=status, media_type="application/json")
+
+
+async def answer(make, status: int = 200) -> Response:
+    """make() → a JSON document, built and rendered in a worker thread."""
+    return await in_worker(lambda: json_answer(make(), status))
 
 
 def gallery_size(value) -> int:
@@ -148,9 +204,7 @@ async def get_basis(request: Request):
     if dtype not in ("float32", "float16"):
         raise HTTPException(400, "dtype must be float32 or float16")
     if dtype == "float16":
-        if item.half_bundle is None:
-            item.half_bundle = await asyncio.to_thread(basis_bundle, item.basis, item.name, True)
-        bundle = item.half_bundle
+        bundle = await in_worker(library_of(request).half_bundle, item)
     else:
         bundle = item.bundle
     return Response(bundle, media_type="application/octet-stream",
@@ -171,7 +225,7 @@ async def get_audio(request: Request):
 def job_of(request: Request):
     job = library_of(request).jobs.get(request.path_params["id"])
     if job is None:
-        raise HTTPException(404, f"no job with id '{request.path_params['id']}'")
+        raise HTTPException(404, f"no job with id '{one_line(request.path_params['id'], 40)}'")
     return job
 
 
@@ -180,8 +234,10 @@ async def get_job(request: Request):
 
 
 async def job_events(request: Request):
-    """Server-sent events with the job's state until it is done or failed."""
+    """Server-sent events with the job's state until it is done or failed (or the server
+    stops)."""
     job = job_of(request)
+    stopping = library_of(request).stopping
 
     async def stream():
         last = None
@@ -192,7 +248,7 @@ async def job_events(request: Request):
                 last = state
             if state["state"] in ("done", "error"):
                 return
-            if await request.is_disconnected():
+            if stopping.is_set() or await request.is_disconnected():
                 return
             await asyncio.sleep(0.1)
 
@@ -201,34 +257,56 @@ async def job_events(request: Request):
 
 
 async def upload(request: Request):
-    """A raw file body named by ?name=FILE: a mesh, an audio file or a mapping JSON."""
+    """A raw file body named by ?name=FILE: a mesh, an audio file, a mapping or skeleton JSON.
+    201 with the new item; 200 with the item already there when the same content was."""
     library = library_of(request)
     name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
     if not name or name.startswith("."):
         raise HTTPException(400, "upload needs ?name=FILE with a file name and suffix")
     kind = kind_of(name)
-    limit = library.max_upload_bytes
-    declared = request.headers.get("content-length")
-    if declared and declared.isdigit() and int(declared) > limit:
-        raise HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
-    chunks, size = [], 0
-    async for chunk in request.stream():
-        size += len(chunk)
-        if size > limit:
-            raise HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
-        chunks.append(chunk)
-    data = b"".join(chunks)
-    if (why := sniff(name, data[:4096])) is not None:
-        raise HTTPException(415, f"{name}: {why}")
-    item = await asyncio.to_thread(library.add_upload, data, name, kind)
+    stored, digest, head = await receive_file(request, library, name)
+    try:
+        if (why := sniff(name, head)) is not None:
+            raise HTTPException(415, f"{name}: {why}")
+        async with request.app.state.uploads:
+            item, new = await in_worker(library.add_upload, stored, name, kind, digest)
+    finally:
+        if os.path.exists(stored):
+            os.unlink(stored)
     if isinstance(item, RigItem):  # a skeleton JSON
         kind = "rig"
-    answer = {"kind": "song" if kind == "audio" else kind, "item": item.as_json()}
+    reply = {"kind": "song" if kind == "audio" else kind, "item": item.as_json()}
     if kind == "mesh":
-        answer["job"] = item.job.as_json()
-        if item.rig is not None:  # a glTF with a skin is a rig too
-            answer["rig"] = library.rigs[item.rig].as_json()
-    return JSONResponse(answer, status_code=201)
+        reply["job"] = item.job.as_json()
+        if item.rig in library.rigs:  # a glTF with a skin is a rig too
+            reply["rig"] = library.rigs[item.rig].as_json()
+    return JSONResponse(reply, status_code=201 if new else 200)
+
+
+async def receive_file(request: Request, library: Library, name: str):
+    """Stream the body into a temporary file of the library folder, within the upload limit
+    (413 as soon as it is passed): (its path, its SHA-256, its first 4096 bytes)."""
+    limit = library.max_upload_bytes
+    too_large = HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
+    declared = request.headers.get("content-length", "")
+    if declared.isdigit() and int(declared) > limit:
+        raise too_large
+    os.makedirs(library.folder, exist_ok=True)  # a /tmp cleaner may have removed it meanwhile
+    handle, path = tempfile.mkstemp(dir=library.folder, prefix=".incoming-")
+    digest, head, size = hashlib.sha256(), b"", 0
+    try:
+        with os.fdopen(handle, "wb") as file:
+            async for chunk in request.stream():
+                size += len(chunk)
+                if size > limit:
+                    raise too_large
+                digest.update(chunk)
+                file.write(chunk)
+                head += chunk[:4096 - len(head)]
+    except BaseException:
+        os.unlink(path)
+        raise
+    return path, digest.hexdigest(), head
 
 
 async def gallery(request: Request):
@@ -239,8 +317,8 @@ async def gallery(request: Request):
     item = ready_basis(request, str(body.get("mesh")))
     song = song_of(request, str(body.get("song")))
     size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    items = await asyncio.to_thread(initial_gallery, item.basis, song.spectrogram, size)
-    return JSONResponse({"mappings": [m.to_json() for m in items]})
+    return await answer(lambda: {"mappings": [
+        m.to_json() for m in initial_gallery(item.basis, song.spectrogram, size)]})
 
 
 async def breed_route(request: Request):
@@ -254,33 +332,48 @@ async def breed_route(request: Request):
         raise HTTPException(400, "seed must be an integer from 0 to 2³² − 1")
     if not body["parents"]:
         raise HTTPException(400, "select at least one parent to breed")
-    parents = [Mapping.from_json(data, f"parent {index + 1}")
-               for index, data in enumerate(body["parents"])]
-    children = await asyncio.to_thread(breed, parents, size, seed)
-    return JSONResponse({"mappings": [m.to_json() for m in children]})
+    if len(body["parents"]) > MAX_GALLERY:
+        raise HTTPException(400, f"select at most {MAX_GALLERY} parents to breed")
+    for index, data in enumerate(body["parents"]):
+        check_mapping_size(data, f"parent {index + 1}")
+
+    def make():
+        parents = [Mapping.from_json(data, f"parent {index + 1}")
+                   for index, data in enumerate(body["parents"])]
+        return {"mappings": [m.to_json() for m in breed(parents, size, seed)]}
+
+    return await answer(make)
 
 
 async def get_mapping(request: Request):
-    item = library_of(request).mappings.get(request.path_params["id"])
-    if item is None:
-        raise HTTPException(404, f"no mapping with id '{request.path_params['id']}'")
-    return JSONResponse(item.data)
+    item = item_of(request, "mapping", request.path_params["id"])
+    return await answer(lambda: item.data)
 
 
 async def save_mapping(request: Request):
+    """A mapping document → 201 with the new item (200 with the same mapping already there)."""
     body = await json_body(request)
-    name = os.path.basename(str(request.query_params.get("name", "mapping.json")))
-    item = library_of(request).add_mapping(body, name)
-    return JSONResponse(item.as_json(), status_code=201)
+    name = os.path.basename(str(request.query_params.get("name", "mapping.json"))) or \
+        "mapping.json"
+    item, new = await in_worker(library_of(request).add_mapping, body, name)
+    return JSONResponse(item.as_json(), status_code=201 if new else 200)
+
+
+def removal(kind: str):
+    """The DELETE route of an item of `kind`: {removed: [ids]} (a mesh takes the rig of its
+    skin with it); 404 for an unknown id, 409 for a built-in rig."""
+    async def remove(request: Request):
+        removed = library_of(request).remove(kind, request.path_params["id"])
+        return JSONResponse({"removed": removed})
+
+    remove.__name__ = f"remove_{kind}"
+    return remove
 
 
 # --- rigs (docs/web.md#rig-api) -----------------------------------------------------------------
 
 def rig_of(request: Request) -> RigItem:
-    item = library_of(request).rigs.get(request.path_params["id"])
-    if item is None:
-        raise HTTPException(404, f"no rig with id '{request.path_params['id']}'")
-    return item
+    return item_of(request, "rig", request.path_params["id"])
 
 
 def bundle_response(bundle: bytes) -> Response:
@@ -290,13 +383,14 @@ def bundle_response(bundle: bytes) -> Response:
 
 async def ready_rig(request: Request) -> RigItem:
     """The rig of the path's id, analysed (built-in rigs are analysed on first use)."""
-    return await asyncio.to_thread(library_of(request).ready_rig, rig_of(request))
+    return await in_worker(library_of(request).ready_rig, rig_of(request))
 
 
 async def get_rig(request: Request):
     """The rig's description: the rig bundle's `meta` and the item's state."""
     item = await ready_rig(request)
-    return JSONResponse({**item.as_json(), **rig_meta(item.rig, item.name, item.revision)})
+    return await answer(lambda: {**item.as_json(), **rig_meta(item.rig, item.name,
+                                                              item.revision)})
 
 
 async def get_rig_bundle(request: Request):
@@ -306,7 +400,7 @@ async def get_rig_bundle(request: Request):
 async def get_rig_skeleton(request: Request):
     """The current skeleton as a skeleton JSON document (the edits included)."""
     item = await ready_rig(request)
-    return JSONResponse(item.rig.skeleton.to_dict())
+    return await answer(item.rig.skeleton.to_dict)
 
 
 async def rig_stiffness(request: Request):
@@ -321,7 +415,7 @@ async def rig_stiffness(request: Request):
         raise HTTPException(400, "scale must be a number ≥ 0")
     item = await ready_rig(request)
     values = body.get("joints", {})
-    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+    bundle = await in_worker(library_of(request).edit_rig, item,
                                      lambda skeleton: skeleton.with_stiffness(values, scale))
     return bundle_response(bundle)
 
@@ -340,7 +434,7 @@ async def rig_pose(request: Request):
                                  for v in rotation):
         raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
     item = await ready_rig(request)
-    bundle = await asyncio.to_thread(library_of(request).edit_rig, item,
+    bundle = await in_worker(library_of(request).edit_rig, item,
                                      lambda skeleton: skeleton.rotate_joint(joint, rotation))
     return bundle_response(bundle)
 
@@ -348,7 +442,7 @@ async def rig_pose(request: Request):
 async def rig_reset(request: Request):
     """The rig as loaded again (pose and stiffness) → its bundle."""
     item = await ready_rig(request)
-    return bundle_response(await asyncio.to_thread(library_of(request).reset_rig, item))
+    return bundle_response(await in_worker(library_of(request).reset_rig, item))
 
 
 async def rig_gallery_route(request: Request):
@@ -357,12 +451,10 @@ async def rig_gallery_route(request: Request):
     if not isinstance(body, dict):
         raise HTTPException(400, "expected a JSON object {rig, song, size}")
     library = library_of(request)
-    item = library.rigs.get(str(body.get("rig")))
-    if item is None:
-        raise HTTPException(404, f"no rig with id '{body.get('rig')}'")
+    item = item_of(request, "rig", body.get("rig"))
     song = song_of(request, str(body.get("song")))
     size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    await asyncio.to_thread(library.ready_rig, item)
+    await in_worker(library.ready_rig, item)
     rig = item.rig
     if rig.palette is None:
         raise HTTPException(409, f"{item.name}: the rig has no vibration mode; nothing to "
@@ -374,7 +466,7 @@ async def rig_gallery_route(request: Request):
         default = default_mapping(song.spectrogram, len(rig.palette.selected))
         return {"mappings": [m.to_json() for m in items], "default": default.to_json()}
 
-    return JSONResponse(await asyncio.to_thread(make))
+    return await answer(make)
 
 
 async def api_missing(request: Request):
@@ -388,29 +480,25 @@ async def no_front_end(request: Request):
 
 # --- errors ---------------------------------------------------------------------------------------
 
-def error_response(status: int, message: str) -> JSONResponse:
-    return JSONResponse({"error": one_line(message)}, status_code=status)
+def error_response(request: Request, status: int, message: str) -> JSONResponse:
+    """One line of JSON; uploads called by their names, no path of the library folder."""
+    return JSONResponse({"error": one_line(library_of(request).public(message))},
+                        status_code=status)
 
 
 async def on_http_error(request: Request, problem: HTTPException):
-    return error_response(problem.status_code, str(problem.detail))
+    return error_response(request, problem.status_code, str(problem.detail))
 
 
 async def on_input_error(request: Request, problem: InputError):
-    return error_response(problem.status, str(problem))
-
-
-async def on_failure(request: Request, problem: Exception):
-    """A failure of ours (an InternalError or a bug): 500 with one line of JSON."""
-    what = str(problem) if isinstance(problem, EigendanceError) else \
-        f"internal error ({type(problem).__name__}: {one_line(problem, 200)})"
-    return error_response(500, what)
+    return error_response(request, problem.status, str(problem))
 
 
 API_ROUTES = [
     Route("/api/config", get_config),
     Route("/api/library", get_library),
     Route("/api/meshes/{id}", get_mesh),
+    Route("/api/meshes/{id}", removal("mesh"), methods=["DELETE"]),
     Route("/api/meshes/{id}/basis.bin", get_basis),
     Route("/api/songs/{id}/spectrogram.bin", get_spectrogram),
     Route("/api/songs/{id}/audio", get_audio),
@@ -421,7 +509,10 @@ API_ROUTES = [
     Route("/api/breed", breed_route, methods=["POST"]),
     Route("/api/mappings", save_mapping, methods=["POST"]),
     Route("/api/mappings/{id}", get_mapping),
+    Route("/api/mappings/{id}", removal("mapping"), methods=["DELETE"]),
+    Route("/api/songs/{id}", removal("song"), methods=["DELETE"]),
     Route("/api/rigs/{id}", get_rig),
+    Route("/api/rigs/{id}", removal("rig"), methods=["DELETE"]),
     Route("/api/rigs/{id}/rig.bin", get_rig_bundle),
     Route("/api/rigs/{id}/skeleton.json", get_rig_skeleton),
     Route("/api/rigs/{id}/stiffness", rig_stiffness, methods=["POST"]),
@@ -432,13 +523,15 @@ API_ROUTES = [
 ]
 
 
-def create_app(library: Library) -> Starlette:
-    """The web app serving `library` (see `eigendance.server` for the routes)."""
+def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = None) -> Starlette:
+    """The web app serving `library` (see `eigendance.server` for the routes) on `host`:`port`
+    (the Host headers it answers; port None: any port)."""
     static = static_folder()
     front_end = Mount("/", StaticFiles(directory=static, html=True)) if static else \
         Route("/", no_front_end)
     app = Starlette(routes=[*API_ROUTES, front_end],
-                    exception_handlers={HTTPException: on_http_error, InputError: on_input_error,
-                                        Exception: on_failure})
+                    middleware=[Middleware(Guard, host=host, port=port, scrub=library.public)],
+                    exception_handlers={HTTPException: on_http_error, InputError: on_input_error})
     app.state.library = library
+    app.state.uploads = asyncio.Semaphore(UPLOADS_AT_ONCE)
     return app

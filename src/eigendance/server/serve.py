@@ -1,33 +1,71 @@
-"""Running the web app: the address, the demo's files and progress on the terminal
-(docs/design.md#server)."""
+"""Running the web app: the address, the library's temporary folder, the end of the process,
+the demo's files and progress on the terminal (docs/design.md#server).
+
+The library lives in a folder of the system's temporary folder, removed when the server ends:
+normally, by Ctrl-C, SIGTERM or SIGHUP. A server killed outright (SIGKILL) cannot remove it;
+the next server removes such folders (those whose lock nobody holds any more). The first
+Ctrl-C or SIGTERM stops the solve in progress at once (`Library.stop`) and ends the server
+within a second, open connections (server-sent events) included.
+"""
 
 from __future__ import annotations
 
+import contextlib
 import errno
+import fcntl
 import os
+import shutil
+import signal
 import socket
 import sys
+import tempfile
+import threading
 import time
+from collections.abc import Iterator
 from importlib import resources
 
 import uvicorn
 from tqdm import tqdm
 
-from eigendance.errors import InputError
+from eigendance.errors import InputError, one_line
+from eigendance.files import FRESH_SECONDS
 from eigendance.harmonic.cache import cache_folder
 from eigendance.music.demo_music import write_demo_wav
+from eigendance.server.guard import DEFAULT_HOST
+from eigendance.server.library import Library
 
-DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8765
 DEMO_K = 150
+FOLDER_PREFIX = "eigendance-library-"
+LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
+GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
+
+__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "demo_paths", "library_session", "listen",
+           "run", "terminal_progress"]
 
 
-def run(app, listening: socket.socket, announce=None) -> None:
+class _Server(uvicorn.Server):
+    """uvicorn's server, calling `on_exit` (in a thread) at the first Ctrl-C or SIGTERM."""
+
+    def __init__(self, config, on_exit=None):
+        super().__init__(config)
+        self.on_exit = on_exit
+
+    def handle_exit(self, sig, frame):
+        if self.on_exit is not None and not self.should_exit:
+            # A signal handler must not wait for locks the interrupted code may hold.
+            threading.Thread(target=self.on_exit, name="stop", daemon=True).start()
+        super().handle_exit(sig, frame)
+
+
+def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
     """Serve `app` on a socket from `listen` until interrupted; print `announce` (one line)
-    once it serves. announce: the line, or a callable(port) that makes it."""
+    once it serves. announce: the line, or a callable(port) that makes it. on_exit: called
+    at the first Ctrl-C or SIGTERM (e.g. `Library.stop`)."""
     host, bound = listening.getsockname()[:2]
-    config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False)
-    server = uvicorn.Server(config)
+    config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
+                            proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS)
+    server = _Server(config, on_exit)
     if announce:
         original = server.startup
 
@@ -37,8 +75,12 @@ def run(app, listening: socket.socket, announce=None) -> None:
                 print(announce(bound) if callable(announce) else announce, flush=True)
 
         server.startup = startup
-    with listening:
+    hung_up = []
+    with listening, _handling({signal.SIGHUP: lambda number, frame: hung_up.append(number) or
+                               server.handle_exit(number, frame)}):
         server.run(sockets=[listening])
+    if hung_up:  # uvicorn ends gracefully at SIGINT and SIGTERM only; SIGHUP the same way
+        raise SystemExit(128 + signal.SIGHUP)
     if not server.started:
         raise InputError(f"cannot serve on {host}:{bound}: the app did not start")
 
@@ -69,15 +111,81 @@ def listen(host: str, port: int) -> socket.socket:
     return listening
 
 
+@contextlib.contextmanager
+def library_session(**options) -> Iterator[Library]:
+    """A `Library` in a new temporary folder, for as long as the block runs; then its work is
+    stopped and the folder removed, however the block ends (SIGTERM and SIGHUP end it as an
+    exception, `SystemExit(128 + signal)`). options: those of `Library`."""
+    sweep_library_folders()
+    folder = tempfile.mkdtemp(prefix=FOLDER_PREFIX)
+    try:
+        with open(os.path.join(folder, LOCK_NAME), "wb") as lock, \
+                _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            library = Library(folder, **options)
+            try:
+                yield library
+            finally:
+                library.close()
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def sweep_library_folders(parent: str | None = None) -> int:
+    """Remove the library folders that killed servers left in `parent` (default: the system's
+    temporary folder); returns how many. A folder is left alone while its lock is held, when it
+    has no lock file (not ours to judge) and while it is younger than FRESH_SECONDS (its
+    server may be about to take the lock)."""
+    parent = parent or tempfile.gettempdir()
+    removed = 0
+    try:
+        entries = [entry for entry in os.scandir(parent) if entry.name.startswith(FOLDER_PREFIX)
+                   and entry.is_dir(follow_symlinks=False)]
+    except OSError:
+        return 0
+    for entry in entries:
+        try:
+            if time.time() - entry.stat(follow_symlinks=False).st_mtime < FRESH_SECONDS:
+                continue
+            with open(os.path.join(entry.path, LOCK_NAME), "rb") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)  # OSError while a server runs
+                shutil.rmtree(entry.path)
+                removed += 1
+        except OSError:
+            continue
+    return removed
+
+
+@contextlib.contextmanager
+def _handling(handlers: dict):
+    """{signal: handler} while the block runs (in the main thread; elsewhere nothing)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {number: signal.signal(number, handler) for number, handler in handlers.items()}
+    try:
+        yield
+    finally:
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+
+
+def _leave(number, frame):
+    """SIGTERM and SIGHUP end the process as SystemExit(128 + signal), which runs every
+    `finally` on the way (their default action would end it without removing anything)."""
+    raise SystemExit(128 + number)
+
+
 def terminal_progress(library) -> None:
     """Show basis jobs on stderr: a tqdm bar on a terminal, and one line when each finishes."""
     bars = {}
 
     def listener(job):
         bar = bars.get(job.id)
+        name = one_line(job.name, 120)  # an upload's name may hold terminal escapes
         if bar is None:
             if job.state == "running" and not job.cached:
-                print(f"eigendance: computing the basis of {job.name} (k = {job.total}; "
+                print(f"eigendance: computing the basis of {name} (k = {job.total}; "
                       "cached for the next run)…", file=sys.stderr)
             bar = bars[job.id] = tqdm(total=job.total, desc="basis eigenpairs", unit="pair",
                                       file=sys.stderr, disable=not sys.stderr.isatty(),
@@ -86,7 +194,9 @@ def terminal_progress(library) -> None:
         if job.state in ("done", "error") and not getattr(bar, "reported", False):
             bar.reported = True
             bar.close()
-            name = job.message if job.state == "error" else job.name
+            if library.stopping.is_set():
+                return  # the server is ending: "interrupted" says it
+            name = one_line(job.message) if job.state == "error" else name
             seconds = time.time() - job.started
             if job.state == "error":
                 print(f"eigendance: basis failed: {name}", file=sys.stderr)

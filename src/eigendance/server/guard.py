@@ -1,0 +1,188 @@
+"""What a request must be before the app sees it, so that no web page can use the server
+(docs/design.md#server).
+
+A page the user visits on another site can make the browser send requests to 127.0.0.1; the
+browser only keeps it from reading most answers. So, for every request:
+
+- Host: must name the address the server listens on — localhost, 127.0.0.1 or [::1] (and
+  the name or address given to ``--host``) with the server's port. A site that makes its own
+  name resolve to 127.0.0.1 (DNS rebinding) sends its own name and is refused (400).
+- Fetch metadata: a request to ``/api/`` that the browser marks as coming from another site
+  (``Sec-Fetch-Site: cross-site`` or ``same-site``: another port or subdomain) is refused
+  (403), reads included (an ``<img>`` or ``<script>`` of another page).
+- Requests that change the library (any method but GET, HEAD, OPTIONS): an ``Origin`` header,
+  where sent, must be this server's own; the content type must not be one a plain HTML form or
+  a "simple" cross-origin fetch can send (``text/*``, ``multipart/form-data``,
+  ``application/x-www-form-urlencoded``: 415) — the JSON routes ask for ``application/json``.
+  Clients other than browsers (curl, scripts) send neither Origin nor Sec-Fetch-Site.
+- A path with control characters (``%00``) is refused (400).
+
+Any exception the app does not turn into an answer becomes a 500 with one line of JSON, and one
+line on stderr: no traceback reaches the client or the terminal.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import ipaddress
+import json
+import socket
+import sys
+
+from starlette.requests import ClientDisconnect
+
+from eigendance.errors import one_line
+
+DEFAULT_HOST = "127.0.0.1"
+LOOPBACK_NAMES = ("localhost", "127.0.0.1", "[::1]")
+WILDCARDS = ("", "0.0.0.0", "::")
+SAFE_METHODS = ("GET", "HEAD", "OPTIONS")
+# Content types a cross-origin page can send without asking first (no CORS preflight).
+FORM_TYPES = ("application/x-www-form-urlencoded", "multipart/form-data", "text/plain")
+
+
+def is_loopback(host: str) -> bool:
+    """Whether `host` (a --host value) reaches only this machine."""
+    if host.lower() == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+def exposure_warning(host: str) -> str | None:
+    """The warning to print when the server listens where other machines can reach it."""
+    if is_loopback(host):
+        return None
+    where = "every address of this machine" if host in WILDCARDS else host
+    return (f"eigendance: warning: listening on {where}: anyone who can reach this machine on "
+            "the network can upload files, start solves and read the library (there is no "
+            f"password); leave out --host to listen on {DEFAULT_HOST} only")
+
+
+def bracketed(name: str) -> str:
+    """An IPv6 address as a Host header writes it ([::1]); other names as they are."""
+    return f"[{name}]" if ":" in name and not name.startswith("[") else name
+
+
+class Hosts:
+    """The Host header values the server answers: its names with its port.
+
+    host: the --host value. Loopback names are always accepted; a non-loopback address adds
+    itself, and a wildcard (0.0.0.0, ::) adds any IP address and this machine's own names
+    (names a rebinding site cannot send). port: the listening port, or None for any.
+    """
+
+    def __init__(self, host: str = DEFAULT_HOST, port: int | None = None):
+        self.port = port
+        self.names = {*LOOPBACK_NAMES, bracketed(host.lower())}
+        self.any_address = host in WILDCARDS
+        if self.any_address:
+            self.names |= {name.lower() for name in (socket.gethostname(), socket.getfqdn())
+                           if name}
+
+    def accepts(self, header: str) -> bool:
+        name, port = split_host(header)
+        if name is None or (self.port is not None and port != self.port):
+            return False
+        if name in self.names:
+            return True
+        if self.any_address:
+            try:
+                ipaddress.ip_address(name.strip("[]"))
+                return True
+            except ValueError:
+                return False
+        return False
+
+
+def split_host(header: str) -> tuple[str | None, int | None]:
+    """'Name:port' → ('name', port); port 80 when absent; (None, None) when malformed."""
+    header = header.strip().lower()
+    if header.endswith("]") or ":" not in header:
+        name, port = header, "80"
+    else:
+        name, _, port = header.rpartition(":")
+    if not name or not port.isdigit() or len(port) > 5:
+        return None, None
+    return name, int(port)
+
+
+def header_of(scope, wanted: bytes) -> str | None:
+    for key, value in scope.get("headers", ()):
+        if key == wanted:
+            return value.decode("latin-1")
+    return None
+
+
+def refusal(scope, hosts: Hosts) -> tuple[int, str] | None:
+    """(status, message) when the request must be refused, else None."""
+    path = scope.get("path", "")
+    if any(ord(character) < 32 or ord(character) == 127 for character in path):
+        return 400, "the path holds control characters"
+    host = header_of(scope, b"host")
+    if host is None or not hosts.accepts(host):
+        shown = one_line(host or "(none)", 80)
+        return 400, (f"Host '{shown}' is not an address of this server (a page of another "
+                     "site reached it through its own name)")
+    site = (header_of(scope, b"sec-fetch-site") or "").lower()
+    if path.startswith("/api/") and site in ("cross-site", "same-site"):
+        return 403, "requests from other sites are refused"
+    if scope.get("method") in SAFE_METHODS:
+        return None
+    origin = header_of(scope, b"origin")
+    if origin is not None and origin.lower() != f"{scope.get('scheme', 'http')}://{host.lower()}":
+        return 403, f"requests from other sites are refused (Origin {one_line(origin, 80)})"
+    content_type = (header_of(scope, b"content-type") or "").split(";")[0].strip().lower()
+    if content_type in FORM_TYPES or content_type.startswith("text/"):
+        return 415, (f"content type '{one_line(content_type, 60)}' is refused (send "
+                     "application/json, or application/octet-stream for uploads)")
+    return None
+
+
+async def send_json(send, status: int, message: str) -> None:
+    body = json.dumps({"error": one_line(message)}, separators=(",", ":")).encode()
+    await send({"type": "http.response.start", "status": status,
+                "headers": [(b"content-type", b"application/json"),
+                            (b"content-length", str(len(body)).encode())]})
+    await send({"type": "http.response.body", "body": body})
+
+
+class Guard:
+    """ASGI middleware: `refusal` before the app, one line of JSON for any failure after.
+
+    scrub: callable(str) → str applied to failure messages (no library paths).
+    """
+
+    def __init__(self, app, host: str = DEFAULT_HOST, port: int | None = None,
+                 scrub=lambda text: text):
+        self.app, self.hosts, self.scrub = app, Hosts(host, port), scrub
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        refused = refusal(scope, self.hosts)
+        if refused is not None:
+            return await send_json(send, *refused)
+        started = False
+
+        async def tracked(message):
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, receive, tracked)
+        except ClientDisconnect:  # the client went away mid-request: nobody to answer
+            return
+        except asyncio.CancelledError:  # the server is ending and stopped waiting for it
+            if not started:
+                await send_json(send, 503, "the server is stopping")
+            raise
+        except Exception as error:  # noqa: BLE001 - every failure of ours ends in one line
+            what = self.scrub(f"internal error ({type(error).__name__}: {one_line(error, 200)})")
+            print(f"eigendance: {one_line(scope.get('method', ''))} "
+                  f"{one_line(scope.get('path', ''), 100)}: {one_line(what)}", file=sys.stderr)
+            if not started:
+                await send_json(send, 500, what)
