@@ -1,5 +1,8 @@
 // Recording what is on screen, with the music, as WebM (MediaRecorder): the canvas's stream
-// plus a tap on the transport's output.
+// plus a tap on the transport's output. MediaRecorder writes a live stream, without the
+// Segment's Duration: players could not seek it, so the duration measured while recording is
+// written into the file (fix-webm-duration) before it is offered.
+import fixWebmDuration from "fix-webm-duration";
 import { saveBlob } from "./dom";
 import type { AudioTransport } from "./transport";
 
@@ -7,6 +10,9 @@ const TYPES = ["video/webm;codecs=vp9,opus", "video/webm;codecs=vp8,opus", "vide
 
 export class Recorder {
   private recorder: MediaRecorder | null = null;
+  /** performance.now() when the recording started and stopped (ms) */
+  private started = 0;
+  private stopped = 0;
 
   constructor(private readonly canvas: HTMLCanvasElement,
               private readonly transport: AudioTransport,
@@ -20,7 +26,11 @@ export class Recorder {
 
   /** Start recording (and playing), or stop and download `eigendance.webm`. */
   toggle(): void {
-    if (this.recorder) { this.recorder.stop(); return; }
+    if (this.recorder) {
+      this.stopped = performance.now();
+      this.recorder.stop();
+      return;
+    }
     const stream = this.canvas.captureStream(30);
     const audio = this.transport.tap();
     audio.stream.getAudioTracks().forEach((track) => stream.addTrack(track));
@@ -28,12 +38,19 @@ export class Recorder {
     const chunks: Blob[] = [];
     const recorder = new MediaRecorder(stream, { mimeType });
     recorder.ondataavailable = (event) => { if (event.data.size) chunks.push(event.data); };
-    recorder.onstop = () => {
+    recorder.onstop = async () => {
+      // The recording's timeline runs from start() to stop() (ms, as the Duration counts).
+      const duration = this.stopped - this.started;
       this.transport.untap(audio);
-      saveBlob(new Blob(chunks, { type: "video/webm" }), "eigendance.webm");
       this.recorder = null;
       this.button.textContent = "● record";
+      const recorded = new Blob(chunks, { type: "video/webm" });
+      // A file without the duration is still a recording: keep it if the fix fails.
+      const seekable = await fixWebmDuration(recorded, duration, { logger: false })
+        .catch(() => recorded);
+      saveBlob(seekable, "eigendance.webm");
     };
+    this.started = performance.now();
     recorder.start(250);
     this.recorder = recorder;
     this.button.textContent = "■ stop";

@@ -121,6 +121,12 @@ class Dance:
         rest normals hold) for `times`, chunk by chunk."""
         raise NotImplementedError
 
+    def loudest_times(self, count: int) -> np.ndarray:
+        """Times the camera frames the dance at (besides its rest shape). Without a
+        spectrogram to find the song's `count` loudest moments (a harmonic dance's), 8·count
+        times spread evenly over the dance, so the widest poses are held too."""
+        return np.arange(8 * count) * (self.duration / (8 * count))
+
     def positions(self, times) -> np.ndarray:
         """All positions (T, n, 3) float64 at `times` (for tests and short clips)."""
         times = np.asarray(times, dtype=np.float64).reshape(-1)
@@ -160,6 +166,21 @@ class HarmonicDance(Dance):
         values = self.spectrogram.smoothed(self.mapping.smoothing).at(
             np.asarray(times, dtype=np.float64))
         return self.mapping.filter(values, self.basis.k)
+
+    def loudest_times(self, count: int) -> np.ndarray:
+        """The song's `count` loudest moments (largest sum over bands of a spectrogram frame),
+        at least 0.25 s apart, loudest first: the poses the page frames a model in
+        (web/src/motion.ts `loudestTimes`)."""
+        values = self.spectrogram.values
+        order = np.argsort(-values.sum(axis=1, dtype=np.float64), kind="stable")
+        times: list[float] = []
+        for frame in order:  # stops after `count` picks: a few frames, not the song
+            if len(times) == count:
+                break
+            t = frame / self.spectrogram.rate
+            if all(abs(t - other) >= 0.25 for other in times):
+                times.append(t)
+        return np.array(times)
 
     def driven(self) -> np.ndarray:
         """The harmonics ν the mapping moves: targets of some band with a non-zero

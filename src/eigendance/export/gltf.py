@@ -23,8 +23,8 @@ from scipy.spatial.transform import Rotation
 
 from eigendance.export.dance import Dance, HarmonicDance, RigDance
 
-# The player's first tile colour (web/src/deform.ts TILE_COLORS[0]), as sRGB bytes.
-BASE_COLOR = (0xE8, 0xA8, 0x7C)
+# The models' clay colour on the page (web/src/deform.ts CLAY), as sRGB bytes.
+BASE_COLOR = (0xD9, 0xA4, 0x7F)
 WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is renormalised)
 
 

@@ -2,17 +2,22 @@
 
 OpenGL 3.3 through moderngl on an EGL context (Mesa's llvmpipe when there is no GPU), drawing
 into an RGBA8 framebuffer that is read back as RGBA rows for the encoder. The look is the page's
-(web/src/shaders.ts, web/src/viewer.ts), ported line for line:
+(web/src/shaders.ts, web/src/studio.ts, web/src/viewer.ts), ported line for line:
 
-- background #15171c; tile colours TILE_COLORS, converted from sRGB to linear as three.js does
-  for a colour uniform, and written out unconverted, as the page's ShaderMaterial does;
-- per fragment, the flat normal of the deformed triangle (screen derivatives of the view-space
-  position) blended with the vertex normal by the normal-blend weight (0 for flat shading), a key
-  and a fill light, a rim and a specular term; wireframe draws the edges in the flat colour;
-- cameras as the page frames a mesh: looking at the centre of the bounding box from direction
-  (0.55, 0.35, 1) at distance 1.15·r/sin 16° (r the largest distance of a rest vertex from the
-  centre), with a vertical field of view of 35° and 0.95 of that distance in the player, 32° in a
-  gallery tile; near and far planes 0.05 and 50 in units of the mesh's half size.
+- the frame cleared to #15171c (between a gallery's tiles); in each view the studio backdrop
+  (a vertical gradient #121418 → #2b303b with a faint light pool) and a soft contact shadow on
+  the floor plane under the rest shape;
+- the model in one clay colour (#d9a47f) for every tile; per fragment, normals as thesis
+  Fig. 6.4(d): the flat normal of the deformed triangle (screen derivatives of the view-space
+  position) weighted `deformed_normal_weight` (0.4) against the original vertex normal (1 for
+  flat shading); a camera-fixed studio light rig (sky/ground ambient, wrapped key, cool fill,
+  rim, broad specular), a soft shoulder and gamma 2.2; colour uniforms converted from sRGB to
+  linear as three.js does, outputs written unconverted, as the page's ShaderMaterials do;
+  wireframe draws the edges in the gamma-encoded clay;
+- cameras as the page frames a model (studio.ts `framing`): a 30° vertical field of view, looking
+  along −(0.42, 0.28, 1), standing where the rest shape and its rim (the 2000 vertices reaching
+  farthest) in the song's six loudest moments fit the view with 8% to spare; near and far planes
+  0.05 and 100 in units of the mesh's half size (the page's normalised coordinates).
 """
 
 from __future__ import annotations
@@ -25,11 +30,15 @@ import numpy as np
 
 from eigendance.errors import InputError, one_line
 
-BACKGROUND = (0x15, 0x17, 0x1C)
-TILE_COLORS = (0xE8A87C, 0x85CDCA, 0xD8C35B, 0xC38D9E, 0x8FB4E3, 0xA3D96B, 0xF2B5D4, 0xB8A1E6,
-               0xE6C189, 0x7FD1B9, 0xF28F6B, 0x9CB4CC)
-DIRECTION = np.array([0.55, 0.35, 1.0]) / np.linalg.norm([0.55, 0.35, 1.0])
-PLAYER_FOV, TILE_FOV = 35.0, 32.0
+BACKGROUND = (0x15, 0x17, 0x1C)  # the canvas's clear colour (viewer.ts), bytes
+CLAY = 0xD9A47F  # the models' colour, sRGB (deform.ts)
+BACKDROP_TOP, BACKDROP_BOTTOM = 0x2B303B, 0x121418  # sRGB (studio.ts)
+SHADOW_STRENGTH = 0.55
+VIEW_DIRECTION = np.array([0.42, 0.28, 1.0]) / np.linalg.norm([0.42, 0.28, 1.0])
+FIELD_OF_VIEW = 30.0  # degrees, vertical, the player's and the tiles'
+MOTION_MARGIN = 1.08  # room around the poses framed
+POSES, RIM = 6, 2000  # the loudest poses framed, by the rim vertices reaching farthest
+NEAR, FAR = 0.05, 100.0  # in units of the mesh's half size
 GALLERY_PADDING, GALLERY_GAP = 10, 6  # pixels, as the page's tiles grid
 
 VERTEX = """
@@ -53,48 +62,155 @@ void main() {
 FRAGMENT = """
 #version 330
 uniform vec3 baseColor;
-uniform float normalBlend;
+uniform float deformedNormalWeight;
 uniform bool wire;
 in vec3 vViewPosition;
 in vec3 vNormal;
 out vec4 fragColor;
 void main() {
-  vec3 color = baseColor;
-  if (wire) { fragColor = vec4(color, 1.0); return; }
+  vec3 albedo = baseColor; // linear
+  if (wire) { fragColor = vec4(pow(albedo, vec3(1.0 / 2.2)), 1.0); return; }
   vec3 flatNormal = normalize(cross(dFdx(vViewPosition), dFdy(vViewPosition)));
-  vec3 smoothNormal = normalize(vNormal);
-  if (dot(smoothNormal, flatNormal) < 0.0) smoothNormal = -smoothNormal;
-  vec3 n = normalize(mix(flatNormal, smoothNormal, normalBlend));
+  vec3 vertexNormal = normalize(vNormal);
+  if (dot(vertexNormal, flatNormal) < 0.0) vertexNormal = -vertexNormal;
+  vec3 n = normalize(mix(vertexNormal, flatNormal, deformedNormalWeight));
   vec3 view = normalize(vViewPosition);
-  vec3 key = normalize(vec3(0.5, 0.8, 0.6));
-  vec3 fill = normalize(vec3(-0.7, -0.2, 0.4));
-  float diffuse = max(dot(n, key), 0.0) * 0.75 + max(dot(n, fill), 0.0) * 0.25;
-  // pow(x, 3) and pow(x, 40) by multiplication: the same numbers, cheaper on a software GPU.
-  float edge = 1.0 - max(dot(n, view), 0.0);
-  float rim = edge * edge * edge * 0.25;
-  float h = max(dot(n, normalize(key + view)), 0.0);
-  float h5 = h * h * h * h * h, h10 = h5 * h5, h20 = h10 * h10;
-  float spec = h20 * h20 * 0.25;
-  fragColor = vec4(color * (0.22 + diffuse) + vec3(spec + rim), 1.0);
+  vec3 key = normalize(vec3(-0.5, 0.75, 0.45));
+  vec3 fill = normalize(vec3(0.8, 0.05, 0.55));
+  vec3 back = normalize(vec3(0.3, 0.6, -0.75));
+  vec3 ambient = mix(vec3(0.045, 0.040, 0.038), vec3(0.16, 0.17, 0.20), 0.5 + 0.5 * n.y);
+  float wrapped = max((dot(n, key) + 0.3) / 1.3, 0.0);
+  vec3 light = ambient + vec3(1.0, 0.93, 0.84) * 1.05 * wrapped * wrapped
+    + vec3(0.55, 0.65, 0.85) * 0.35 * max(dot(n, fill), 0.0);
+  // pow(x, 4) and pow(x, 24) by multiplication: the same numbers, cheaper on a software GPU.
+  float edge = 1.0 - max(dot(n, view), 0.0), edge2 = edge * edge;
+  float fresnel = edge2 * edge2;
+  vec3 rim = vec3(0.75, 0.82, 1.0) * (0.35 * max(dot(n, back), 0.0) + 0.25) * fresnel;
+  float h = max(dot(n, normalize(key + view)), 0.0), h3 = h * h * h, h6 = h3 * h3;
+  float h12 = h6 * h6;
+  float spec = h12 * h12 * 0.18;
+  vec3 color = albedo * light + rim + vec3(spec);
+  color = color / (1.0 + 0.25 * color); // soft shoulder: highlights never clip hard
+  fragColor = vec4(pow(color * 1.25, vec3(1.0 / 2.2)), 1.0);
+}
+"""
+
+# web/src/shaders.ts BACKDROP_*: a full-view quad behind everything.
+BACKDROP_VERTEX = """
+#version 330
+in vec2 position;
+out vec2 vUv;
+void main() {
+  vUv = position.xy * 0.5 + 0.5;
+  gl_Position = vec4(position.xy, 0.999, 1.0);
+}
+"""
+
+BACKDROP_FRAGMENT = """
+#version 330
+uniform vec3 top;
+uniform vec3 bottom;
+uniform float aspect;
+in vec2 vUv;
+out vec4 fragColor;
+void main() {
+  vec3 color = mix(bottom, top, smoothstep(0.0, 1.0, vUv.y));
+  vec2 p = (vUv - vec2(0.5, 0.58)) * vec2(aspect, 1.0);
+  color += vec3(0.012, 0.011, 0.010) * exp(-3.5 * dot(p, p));
+  fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+}
+"""
+
+# web/src/shaders.ts SHADOW_*: the unit square of the floor plane (x, z in [-1, 1]) placed by
+# `model`, blended over what is drawn (three.js NormalBlending).
+SHADOW_VERTEX = """
+#version 330
+uniform mat4 modelView;
+uniform mat4 projection;
+in vec2 position;
+out vec2 vPlane;
+void main() {
+  vPlane = position;
+  gl_Position = projection * modelView * vec4(position.x, 0.0, position.y, 1.0);
+}
+"""
+
+SHADOW_FRAGMENT = """
+#version 330
+uniform float strength;
+in vec2 vPlane;
+out vec4 fragColor;
+void main() {
+  float r = dot(vPlane, vPlane);
+  fragColor = vec4(0.0, 0.0, 0.0, strength * exp(-3.0 * r) * (1.0 - smoothstep(0.7, 1.0, r)));
 }
 """
 
 
+def linear(value: int) -> tuple[float, float, float]:
+    """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`)."""
+    srgb = np.array([(value >> 16) & 255, (value >> 8) & 255, value & 255]) / 255
+    out = np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
+    return tuple(float(c) for c in out)
+
+
 @dataclass
 class Look:
-    """How a surface is shaded: shading "smooth" | "flat" | "wireframe", the weight of the
-    vertex normal against the deformed triangle's flat normal, and the tile colour's index."""
+    """How a surface is shaded (a mapping's `look`): shading "smooth" | "flat" | "wireframe",
+    and the weight of the deformed triangle's flat normal against the original vertex normal
+    (thesis Fig. 6.4(d): 0.4)."""
 
     shading: str = "smooth"
-    normal_blend: float = 0.4
-    color_index: int = 0
+    deformed_normal_weight: float = 0.4
 
     @property
-    def color(self) -> np.ndarray:
-        """The colour uniform: TILE_COLORS[index] from sRGB to linear (three.js Color)."""
-        value = TILE_COLORS[self.color_index % len(TILE_COLORS)]
-        srgb = np.array([(value >> 16) & 255, (value >> 8) & 255, value & 255]) / 255
-        return np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
+    def normal_weight(self) -> float:
+        """The flat normal's weight drawn: 1 for flat shading (viewer.ts drawShot)."""
+        return 1.0 if self.shading == "flat" else float(self.deformed_normal_weight)
+
+
+def _axes(direction: np.ndarray) -> np.ndarray:
+    """(3, 3) rows forward, right, up of a camera looking along −direction, up near +y."""
+    forward = direction / np.linalg.norm(direction)
+    right = np.cross([0.0, 1.0, 0.0], forward)
+    right /= np.linalg.norm(right)
+    return np.stack([forward, right, np.cross(forward, right)])
+
+
+def silhouette(points: np.ndarray) -> np.ndarray:
+    """(N, 3) points seen along VIEW_DIRECTION: rows (s, x, y), depth s toward the camera and
+    position across the view (studio.ts `silhouette`)."""
+    return np.asarray(points, dtype=np.float64).reshape(-1, 3) @ _axes(VIEW_DIRECTION).T
+
+
+def _middle(shape: np.ndarray) -> tuple[float, float]:
+    return ((shape[:, 1].min() + shape[:, 1].max()) / 2,
+            (shape[:, 2].min() + shape[:, 2].max()) / 2)
+
+
+def rim(rest: np.ndarray) -> np.ndarray:
+    """Indices of the vertices that frame the model (studio.ts `rim`): the RIM of them reaching
+    farthest, by depth plus distance from the middle of the view (all of a small model)."""
+    shape = silhouette(rest)
+    n = len(shape)
+    cx, cy = _middle(shape)
+    reach = shape[:, 0] + np.maximum(np.abs(shape[:, 1] - cx), np.abs(shape[:, 2] - cy))
+    count = max(1, math.ceil(min(1.0, RIM / n) * n))
+    return np.argsort(-reach, kind="stable")[:count]
+
+
+def framing(points: np.ndarray, aspect: float) -> tuple[np.ndarray, float]:
+    """Where the camera stands so that every point (N, 3) fits a view of this aspect with
+    MOTION_MARGIN to spare (studio.ts `framing`): the target and the distance from it along
+    VIEW_DIRECTION. The page frames views by their aspect rounded to 1/50."""
+    aspect = math.floor(aspect * 50 + 0.5) / 50
+    shape = silhouette(points)
+    _, right, up = _axes(VIEW_DIRECTION)
+    cx, cy = _middle(shape)
+    tan_v = math.tan(math.radians(FIELD_OF_VIEW) / 2) / MOTION_MARGIN
+    tan_h = tan_v * aspect
+    reach = np.maximum(np.abs(shape[:, 2] - cy) / tan_v, np.abs(shape[:, 1] - cx) / tan_h)
+    return right * cx + up * cy, float((shape[:, 0] + reach).max())
 
 
 @dataclass
@@ -105,26 +221,32 @@ class Camera:
     projection: np.ndarray
 
     @classmethod
-    def framing(cls, center, radius: float, scale: float, aspect: float,
-                player: bool = True) -> Camera:
-        """The page's camera for a mesh: centre, largest distance r of a vertex from it and
-        half size `scale`; the player's (35°, 0.95 of the distance) or a tile's (32°)."""
-        fov = PLAYER_FOV if player else TILE_FOV
-        distance = radius * 1.15 / math.sin(math.radians(16)) * (0.95 if player else 1.0)
-        eye = np.asarray(center, dtype=np.float64) + DIRECTION * distance
-        z = DIRECTION
-        x = np.cross([0.0, 1.0, 0.0], z)
-        x /= np.linalg.norm(x)
-        y = np.cross(z, x)
+    def framing(cls, rest: np.ndarray, poses: np.ndarray, scale: float,
+                aspect: float) -> Camera:
+        """The page's camera for a model (viewer.ts `aim`): framed on the rest shape (n, 3) and
+        the rim in the loudest poses (P, r, 3); `scale` the half size of the model file's
+        coordinates (the page's unit) for the near and far planes."""
+        target, distance = framing(np.concatenate([rest, np.reshape(poses, (-1, 3))]), aspect)
+        eye = target + VIEW_DIRECTION * distance
         view = np.eye(4)
-        view[:3, :3] = np.stack([x, y, z])
+        view[:3, :3] = _axes(VIEW_DIRECTION)[[1, 2, 0]]  # x right, y up, z toward the camera
         view[:3, 3] = -view[:3, :3] @ eye
-        near, far = 0.05 * scale, 50 * scale
-        top = 1 / math.tan(math.radians(fov) / 2)
+        near, far = NEAR * scale, FAR * scale
+        top = 1 / math.tan(math.radians(FIELD_OF_VIEW) / 2)
         projection = np.array([[top / aspect, 0, 0, 0], [0, top, 0, 0],
                                [0, 0, (far + near) / (near - far), 2 * far * near / (near - far)],
                                [0, 0, -1, 0]])
         return cls(view, projection)
+
+
+def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
+    """(4, 4) placing the contact shadow's unit square under the rest shape (studio.ts
+    `placeShadow`): on the plane just below its lowest point, as wide as its footprint."""
+    low, high = rest.min(axis=0), rest.max(axis=0)
+    size = high - low
+    model = np.diag([0.62 * size[0] + 0.05 * scale, 1.0, 0.62 * size[2] + 0.05 * scale, 1.0])
+    model[:3, 3] = ((low[0] + high[0]) / 2, low[1] - 0.01 * size[1], (low[2] + high[2]) / 2)
+    return model
 
 
 def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, int, int]]:
@@ -169,17 +291,25 @@ def create_context() -> moderngl.Context:
                          "libegl-mesa0 libgl1-mesa-dri") from None
 
 
+def _matrix(value: np.ndarray) -> bytes:
+    """A matrix as a GLSL uniform (column-major float32)."""
+    return np.ascontiguousarray(value.T, dtype=np.float32).tobytes()
+
+
 class Renderer:
-    """Draws meshes into an offscreen frame of `width`×`height` pixels and reads it back.
+    """Draws a mesh in the studio into an offscreen frame of `width`×`height` pixels and reads
+    it back.
 
     Parameters
     ----------
     width, height : the frame's size in pixels.
     faces : (m, 3) triangles of the mesh every draw uses.
     normals : (n, 3) its vertex normals (replaced per draw when a dance turns them).
+    rest : (n, 3) its rest shape, and `scale` its half size: where the contact shadow lies.
     """
 
-    def __init__(self, width: int, height: int, faces: np.ndarray, normals: np.ndarray):
+    def __init__(self, width: int, height: int, faces: np.ndarray, normals: np.ndarray,
+                 rest: np.ndarray, scale: float):
         self.width, self.height = int(width), int(height)
         self.context = context = create_context()
         self.framebuffer = context.framebuffer(
@@ -194,22 +324,71 @@ class Renderer:
         self.vertex_array = context.vertex_array(
             self.program, [(self.positions, "3f", "position"), (self.normals, "3f", "normal")],
             self.indices)
+        self.program["baseColor"].value = linear(CLAY)
+        square = context.buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], dtype=np.float32))
+        self.backdrop = context.program(vertex_shader=BACKDROP_VERTEX,
+                                        fragment_shader=BACKDROP_FRAGMENT)
+        self.backdrop["top"].value = linear(BACKDROP_TOP)
+        self.backdrop["bottom"].value = linear(BACKDROP_BOTTOM)
+        self.backdrop_quad = context.vertex_array(self.backdrop, [(square, "2f", "position")])
+        self.shadow = context.program(vertex_shader=SHADOW_VERTEX, fragment_shader=SHADOW_FRAGMENT)
+        self.shadow["strength"].value = SHADOW_STRENGTH
+        self.shadow_quad = context.vertex_array(self.shadow, [(square, "2f", "position")])
+        self.shadow_model = shadow_model(np.asarray(rest, dtype=np.float64), scale)
+        self.studio = context.framebuffer(
+            color_attachments=[context.renderbuffer((self.width, self.height))])
+        self.studio_views: tuple | None = None  # the views whose backdrops `studio` holds
         self.turned = False
         self.framebuffer.use()
 
-    def clear(self) -> None:
+    def begin(self, views: list[tuple[int, int, int, int]]) -> None:
+        """Start a frame of these views (x, y, w, h): the canvas's clear colour between them
+        and the studio backdrop in each. The backdrop depends on the views only, so it is drawn
+        once and copied into every frame (a per-pixel gradient is most of a frame's cost on
+        llvmpipe otherwise)."""
+        context = self.context
+        views = tuple(tuple(int(v) for v in view) for view in views)
+        context.scissor = None
+        if views != self.studio_views:
+            self.studio.use()
+            self.studio.clear(*(c / 255 for c in BACKGROUND), 1.0)
+            context.disable(moderngl.DEPTH_TEST | moderngl.BLEND)
+            for view in views:
+                self.studio.viewport = view
+                context.scissor = view
+                self.backdrop["aspect"].value = view[2] / view[3]
+                self.backdrop_quad.render(moderngl.TRIANGLE_STRIP)
+            context.scissor = None
+            self.studio_views = views
         self.framebuffer.use()
-        self.context.scissor = None
-        self.framebuffer.clear(*(c / 255 for c in BACKGROUND), 1.0, depth=1.0)
-        self.context.enable(moderngl.DEPTH_TEST)
+        self.framebuffer.clear(depth=1.0)
+        context.copy_framebuffer(self.framebuffer, self.studio)  # colour only
 
-    def draw(self, positions: np.ndarray, camera: Camera, look: Look,
+    def draw(self, positions: np.ndarray | None, camera: Camera, look: Look,
              viewport: tuple[int, int, int, int] | None = None,
              normals: np.ndarray | None = None) -> None:
-        """Draw the mesh at `positions` (n, 3) into `viewport` (default: the whole frame)."""
+        """Draw the mesh at `positions` (n, 3) and its contact shadow into `viewport` (one of
+        the frame's views; default: the whole frame), in the page's order after the backdrop:
+        the model, then the (transparent) shadow, hidden where the model is in front of it.
+        Positions None: the empty studio."""
+        context = self.context
         viewport = viewport or (0, 0, self.width, self.height)
         self.framebuffer.viewport = viewport
-        self.context.scissor = viewport
+        context.scissor = viewport
+        context.enable(moderngl.DEPTH_TEST)
+        if positions is not None:
+            self._draw_model(positions, camera, look, normals)
+        # The shadow comes last in its view, so its depth never hides anything.
+        self.shadow["modelView"].write(_matrix(camera.view @ self.shadow_model))
+        self.shadow["projection"].write(_matrix(camera.projection))
+        context.enable(moderngl.BLEND)
+        context.blend_func = (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA,
+                              moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
+        self.shadow_quad.render(moderngl.TRIANGLE_STRIP)
+        context.disable(moderngl.BLEND)
+
+    def _draw_model(self, positions, camera, look, normals) -> None:
+        context = self.context
         self.positions.write(np.ascontiguousarray(positions, dtype=np.float32))
         if normals is not None:
             self.normals.write(np.ascontiguousarray(normals, dtype=np.float32))
@@ -217,16 +396,15 @@ class Renderer:
         elif self.turned:
             self.normals.write(self.rest_normals)
             self.turned = False
-        normal_matrix = np.linalg.inv(camera.view[:3, :3]).T
         program = self.program
-        program["modelView"].write(camera.view.T.astype(np.float32).tobytes())
-        program["projection"].write(camera.projection.T.astype(np.float32).tobytes())
-        program["normalMatrix"].write(normal_matrix.T.astype(np.float32).tobytes())
-        program["baseColor"].value = tuple(float(c) for c in look.color)
-        program["normalBlend"].value = 0.0 if look.shading == "flat" else float(look.normal_blend)
+        program["modelView"].write(_matrix(camera.view))
+        program["projection"].write(_matrix(camera.projection))
+        program["normalMatrix"].write(_matrix(np.linalg.inv(camera.view[:3, :3]).T))
+        program["deformedNormalWeight"].value = look.normal_weight
         program["wire"].value = look.shading == "wireframe"
-        self.context.wireframe = look.shading == "wireframe"
+        context.wireframe = look.shading == "wireframe"
         self.vertex_array.render(moderngl.TRIANGLES)
+        context.wireframe = False
 
     def read(self) -> bytes:
         """The frame as RGBA rows from the bottom up (OpenGL's order), 4·width·height bytes

@@ -28,7 +28,7 @@ import numpy as np
 from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs
-from eigendance.export.renderer import Camera, Look, Renderer, gallery_cells, gl_started
+from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
 from eigendance.music.decode import open_audio
 
 MAX_SIDE = 7680  # pixels (8K)
@@ -91,31 +91,38 @@ def _one_by_one(chunks):
 def render_frames(dances: list[Dance], looks: list[Look], times, width: int, height: int):
     """Draw each frame at `times`: yields the RGBA bytes (bottom row first) of each.
 
-    One dance fills the frame with the player's camera; several (a gallery of the same mesh)
-    share it in the page's grid with the tile camera.
+    One dance fills the frame as the player shows it; several (a gallery of the same mesh)
+    share it in the page's grid. Each view's camera frames its dance as the page does: the rest
+    shape and the rim in the loudest poses.
     """
     first = dances[0]
     if any(dance.n != first.n or len(dance.faces) != len(first.faces) for dance in dances):
         raise InputError("a gallery's dances must share one mesh")
-    center, scale = first.center, first.scale
-    radius = float(np.linalg.norm(first.rest - center, axis=1).max())
-    if len(dances) == 1:
-        cells = [(0, 0, width, height)]
-    else:
-        cells = gallery_cells(len(dances), width, height)
-    cameras = [Camera.framing(center, radius, scale, w / h, player=len(dances) == 1)
-               for _, _, w, h in cells]
-    renderer = Renderer(width, height, first.faces, first.rest_normals())
+    cells = [(0, 0, width, height)] if len(dances) == 1 else \
+        gallery_cells(len(dances), width, height)
+    cameras = view_cameras(dances, cells)
+    renderer = Renderer(width, height, first.faces, first.rest_normals(), first.rest,
+                        first.scale)
     try:
         streams = [_one_by_one(dance.frames(times)) for dance in dances]
         for frame in zip(*streams, strict=True):
-            renderer.clear()
+            renderer.begin(cells)
             for (positions, normals), camera, look, cell in zip(frame, cameras, looks, cells,
                                                                 strict=True):
                 renderer.draw(positions, camera, look, cell, normals)
             yield renderer.read()
     finally:
         renderer.release()
+
+
+def view_cameras(dances: list[Dance], cells) -> list[Camera]:
+    """The camera of each dance's view (x, y, w, h): framed as the page frames it, on the rest
+    shape and the rim in the dance's loudest poses (`renderer.Camera.framing`)."""
+    first = dances[0]
+    framed = rim(first.rest)
+    return [Camera.framing(first.rest, dance.positions(dance.loudest_times(POSES))[:, framed],
+                           first.scale, w / h)
+            for dance, (_, _, w, h) in zip(dances, cells, strict=True)]
 
 
 def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, height: int,
