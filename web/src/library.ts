@@ -34,6 +34,7 @@ export class Library {
     const items = await api.library();
     this.items = items;
     fillSelect($<HTMLSelectElement>("mesh"), items.meshes, this.meshId);
+    addRigs($<HTMLSelectElement>("mesh"), items.rigs ?? []);
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
     const mappings = $<HTMLSelectElement>("mapping-menu");
     const chosen = mappings.value;
@@ -101,4 +102,13 @@ function fillSelect(select: HTMLSelectElement, items: { id: string; name: string
                     chosen: string): void {
   select.innerHTML = "";
   for (const item of items) select.add(new Option(item.name, item.id, false, item.id === chosen));
+}
+
+/** The library's rigs (articulated models) as a group of the model menu, values `rig:ID`. */
+function addRigs(select: HTMLSelectElement, rigs: { id: string; name: string }[]): void {
+  if (!rigs.length) return;
+  const group = document.createElement("optgroup");
+  group.label = "rigs (vibration modes)";
+  for (const rig of rigs) group.appendChild(new Option(rig.name, `rig:${rig.id}`));
+  select.appendChild(group);
 }
