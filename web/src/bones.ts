@@ -101,10 +101,10 @@ export class RigFigure {
     this.skinned.visible = what.lbs;
     this.bones.visible = this.joints.visible = what.bones || what.joint >= 0;
     this.picked.visible = what.joint >= 0;
-    if (what.joint >= 0) {
+    if (what.joint >= 0) { // where the joint is drawn now (posed)
       const at = this.picked.geometry.getAttribute("position") as THREE.BufferAttribute;
-      at.setXYZ(0, this.rig.jointPositions[3 * what.joint], this.rig.jointPositions[3 * what.joint + 1],
-        this.rig.jointPositions[3 * what.joint + 2]);
+      const joints = this.joints.geometry.getAttribute("position") as THREE.BufferAttribute;
+      at.setXYZ(0, joints.getX(what.joint), joints.getY(what.joint), joints.getZ(what.joint));
       at.needsUpdate = true;
     }
   }

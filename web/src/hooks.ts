@@ -169,6 +169,12 @@ function rigHooks(app: App) {
     setView: (view: View) => app.setView(view),
     setMode: (mode: "modes" | "dances") => rigs.gallery.setMode(mode),
     page: (page: number) => rigs.gallery.setPage(page),
+    /** Show at most `size` mode tiles a page (the gallery of NM tiles of Table 7.2). */
+    pageSize: (size: number) => {
+      rigs.gallery.pageSize = size;
+      rigs.gallery.setMode("modes");
+      rigs.gallery.setPage(0);
+    },
     select: (index: number) => rigs.gallery.toggle(index),
     combine: () => rigs.combine(rigs.gallery.selection),
     breed: (seed?: number) => app.guard("Breeding failed", () => rigs.gallery.breed(seed)),
