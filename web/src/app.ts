@@ -71,7 +71,7 @@ export class App {
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
     this.rigs = new RigStage(this.motion, this.transport, antialias, {
       status, loading: (text) => this.loading(text), guard: (what, task) => this.guard(what, task),
-      songId: () => this.library.songId }, options.path, options.batch);
+      songId: () => this.library.songId }, options.path, options.batch, !options.render);
     this.transport.onChange = (playing) => {
       $("play").textContent = playing ? "❚❚" : "▶";
       this.slowSince = null;

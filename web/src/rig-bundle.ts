@@ -114,12 +114,7 @@ export function toFileUnits(rig: Rig, positions: Float32Array): Float32Array {
 async function bundleOf(url: string, id: string, body?: unknown): Promise<Rig> {
   const init: RequestInit | undefined = body === undefined ? undefined : {
     method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) };
-  const response = await fetch(url, init);
-  if (!response.ok) {
-    let message = `${response.status} ${response.statusText}`;
-    try { message = (await response.json()).error ?? message; } catch { /* not JSON */ }
-    throw new Error(message);
-  }
+  const response = await api.checked(await fetch(url, init));
   return rigFromBundle(await response.arrayBuffer(), id);
 }
 

@@ -81,13 +81,17 @@ export class RigPlayerView {
         $(`rig-turn-${axis}-out`).textContent = `${input.value}°`;
       });
       input.addEventListener("change", () => {
-        const delta = Number(input.value) - this.turned[a];
+        const value = Number(input.value), delta = value - this.turned[a];
         if (this.joint < 0 || delta === 0) return;
         const rotation: [number, number, number] = [0, 0, 0];
         rotation[a] = delta * DEGREES;
-        this.turned[a] = Number(input.value);
-        void this.events.guard("Could not turn the joint",
-          () => this.events.pose(this.joint, rotation));
+        void this.events.guard("Could not turn the joint", async () => {
+          await this.events.pose(this.joint, rotation);
+          this.turned[a] = value;
+        }).then(() => { // a refused turn (a joint closing a loop) puts the slider back
+          input.value = String(this.turned[a]);
+          $(`rig-turn-${axis}-out`).textContent = `${this.turned[a]}°`;
+        });
       });
     });
     $("rig-reset").addEventListener("click", () => {

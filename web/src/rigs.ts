@@ -36,7 +36,8 @@ export class RigStage {
   private defaultMapping: Mapping | null = null;
 
   constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
-              private readonly path: DeformationPath | null, private readonly batch: number) {
+              private readonly path: DeformationPath | null, private readonly batch: number,
+              live: boolean) {
     this.motion = new RigMotion(music);
     this.viewer = new Viewer($<HTMLCanvasElement>("rig-gl"), $("rig-player-area"), this.motion,
       clock, () => this.stage(), antialias);
@@ -52,6 +53,7 @@ export class RigStage {
       stiffness: (joint, value) => this.stiffness(joint, value),
       reset: () => this.reset() });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
+    if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
 
   /** Open rig `id` (its bundle; the dances calibrated on the current song) in its gallery of
@@ -94,6 +96,7 @@ export class RigStage {
   }
 
   stage(): Stage {
+    if (!this.active) return { view: this.view, tiles: [], player: null, explorer: { harmonic: -1, scale: 1 } };
     const player = this.player.shot($("rig-player-area"));
     return { view: this.view, tiles: this.view === "gallery" ? this.gallery.shots() : [], player,
       explorer: { harmonic: -1, scale: 1 } };
