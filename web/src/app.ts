@@ -340,6 +340,7 @@ export class App {
   private async changeSong(songId: string): Promise<void> {
     await this.library.loadSong(songId);
     await this.newGallery();
+    await this.rigs.songChanged();
     this.viewer.requestDraw();
   }
 

@@ -78,6 +78,14 @@ export class RigStage {
     }
   }
 
+  /** A new song: the dances and the combined modes' mapping are calibrated on it again. */
+  async songChanged(): Promise<void> {
+    if (!this.active || !this.rig) return;
+    const gallery = await rigGallery(this.rig.id, this.events.songId(), null);
+    this.defaultMapping = gallery.default;
+    this.gallery.setDances(gallery.mappings);
+  }
+
   /** Back to the harmonics (another model chosen). */
   leave(): void {
     this.active = false;
