@@ -53,6 +53,7 @@ export class App {
     this.viewer = new Viewer($<HTMLCanvasElement>("gl"), $("player-area"), this.motion,
       this.transport, () => this.stage(), antialias);
     this.viewer.onFrame = (t) => {
+      if (this.rigs?.active) this.rigs.viewer.requestDraw(); // a seek or a rewind moves rigs too
       this.showFrame(t);
       drawSpectrum($("spectrum"), this.motion.bandValuesAt(t));
     };

@@ -39,8 +39,11 @@ export class RigStage {
               private readonly path: DeformationPath | null, private readonly batch: number,
               live: boolean) {
     this.motion = new RigMotion(music);
+    // The page's own loop handles the end of the song (rewind, the seek bar); this one follows.
+    const follower: Clock = { get playing() { return clock.playing; }, now: () => clock.now(),
+      ended: () => false, rewind: () => {} };
     this.viewer = new Viewer($<HTMLCanvasElement>("rig-gl"), $("rig-player-area"), this.motion,
-      clock, () => this.stage(), antialias);
+      follower, () => this.stage(), antialias);
     this.viewer.onFrame = (t) => this.beforeFrame(t);
     const requestDraw = () => this.viewer.requestDraw();
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
