@@ -162,3 +162,29 @@ def test_linear_blend_skinning_differs_only_to_second_order(page, rig_ids):
     page.evaluate("window.eigendance.rig.renderAt(1.3)")
     modal = np.array(page.evaluate("window.eigendance.rig.playerPixels(3)"), dtype=float)
     assert np.mean(np.abs(lbs - modal) > 40) < 0.01
+
+
+def test_combined_modes_save_a_mapping_python_plays_the_same_and_dances_breed(page, rig_ids,
+                                                                              song):
+    """Modes 1 and 3 combined: the saved mapping (version 2, `modes` and `offset`) gives
+    `rig_coefficients` the page's coefficients; the dances breed a new generation."""
+    info = open_rig(page, rig_ids, "loop8")
+    page.evaluate("window.eigendance.rig.setMusic(true)")  # an earlier test turned it off
+    page.evaluate("window.eigendance.rig.select(0); window.eigendance.rig.select(2); "
+                  "window.eigendance.rig.combine()")
+    saved = page.evaluate("window.eigendance.rig.playerMapping()")
+    assert saved["version"] == 2 and saved["offset"] == 0 and saved["modes"]["selected"] == [0, 2]
+    mapping = Mapping.from_json(saved)
+    model = Rig.from_skeleton(sample_rig("loop8"), dtype=np.float64).model
+    expected = rig_coefficients(model, song, mapping, TIMES)
+    shown = [page.evaluate(f"window.eigendance.rig.coefficients('player', {t})") for t in TIMES]
+    np.testing.assert_allclose(shown, expected, atol=1e-5 * np.abs(expected).max())
+    assert np.abs(expected[:, [1, 3, 4]]).max() == 0 and np.abs(expected).max() > 0
+    page.evaluate("window.eigendance.rig.setView('gallery'); "
+                  "window.eigendance.rig.setMode('dances')")
+    count = page.evaluate("window.eigendance.rig.info().tiles")
+    page.evaluate("window.eigendance.rig.select(0); window.eigendance.rig.select(1)")
+    assert page.evaluate("window.eigendance.rig.breed(5)") is None
+    bred = page.evaluate("window.eigendance.rig.info()")
+    assert bred["generations"] == 2 and bred["tiles"] == count and bred["error"] is None
+    assert info["k"] == 5
