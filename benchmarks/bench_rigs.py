@@ -17,9 +17,10 @@ transforms (the obvious per-frame path) for the frames. Beside them, the thesis'
 modes), mão = hand, zebra ≈ quaternius_Horse (a quadruped), smurf ≈ quaternius_men_Casual (a
 humanoid).
 
-Browser frames per second (the page's modal skinning on the GPU with NM tiles) are measured by
-the web page's benchmark; give them with --browser, a JSON file {"rig name": {"1": fps, "9":
-fps}} (rig names as printed), and they fill the last columns ("—" until then).
+Browser frames per second (the page's modal skinning on the GPU with NM tiles, drawn) are
+measured in headless Chromium with --measure-browser (browser_rigs.py: WebGL without a GPU here,
+SwiftShader), or given with --browser, a JSON file {"rig name": {"1": fps, "9": fps}} (rig names
+as printed); they fill the last columns ("—" otherwise).
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from bench_modal import baseline_modal, best_of
+from browser_rigs import browser_fps
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_transforms, mode_coefficients
 from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
@@ -120,9 +122,14 @@ def main():
     parser.add_argument("--frames", type=int, default=30, help="frames timed per figure")
     parser.add_argument("--browser", help="JSON {rig: {\"1\": fps, \"9\": fps}} measured in "
                                           "the page")
+    parser.add_argument("--measure-browser", action="store_true",
+                        help="measure the page's frames per second in headless Chromium")
     args = parser.parse_args()
     browser = {}
-    if args.browser:
+    if args.measure_browser:
+        browser = browser_fps(sorted(glob.glob(shared_path("rigged", "*.glb"))))
+        print(f"browser: headless Chromium, {browser.pop('renderer')}, 1024×768")
+    elif args.browser:
         with open(args.browser, encoding="utf-8") as file:
             browser = json.load(file)
     print("Table 7.2 — thesis: 3.06 GHz CPU + GeForce GT 130, rendered 1024×768; ours: this "

@@ -19,3 +19,14 @@ def test_committed_fixtures_match_the_python_reference():
         np.testing.assert_allclose(old["phi"], new["phi"], rtol=1e-5, atol=1e-6)
         # Positions do not depend on eigenvector signs; allow solver round-off.
         np.testing.assert_allclose(old["positions"], new["positions"], atol=1e-6)
+
+
+def test_committed_rig_fixtures_match_the_python_reference():
+    fresh = json.loads(build()["rig.json"])
+    with open(os.path.join(FOLDER, "rig.json")) as file:
+        committed = json.load(file)
+    assert committed["times"] == fresh["times"]
+    for old, new in zip(committed["cases"], fresh["cases"], strict=True):
+        assert old["mapping"]["modes"] == new["mapping"]["modes"]
+        for key in ("coefficients", "positions", "rotations", "centres"):
+            np.testing.assert_allclose(old[key], new[key], atol=1e-6, err_msg=key)

@@ -16,11 +16,14 @@ import trimesh
 
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
+from eigendance.modal.motion import body_poses, default_mapping, rig_coefficients
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import open_chain
 from eigendance.music.demo_music import demo_track
 from eigendance.music.gallery import initial_gallery
-from eigendance.music.mapping import Mapping
+from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
-from eigendance.server.binary import basis_bundle, spectrogram_bundle
+from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 FOLDER = os.path.join(os.path.dirname(__file__), "..", "..", "web", "test", "fixtures")
 TIMES = [0.0, 0.137, 0.5, 1.2345, 1.99]
@@ -47,10 +50,35 @@ def build():
                  "vertices": basis.vertices.ravel().tolist(),
                  "eigenvectors": basis.eigenvectors.ravel().tolist(),
                  "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
-    return {"reference.json": json.dumps(reference, indent=0).encode(),
+    rig_files = rig_reference(spectrogram, values)
+    return {**rig_files, "reference.json": json.dumps(reference, indent=0).encode(),
             "basis.bin": basis_bundle(basis, "ellipsoid"),
             "basis16.bin": basis_bundle(basis, "ellipsoid", half=True),
             "spectrogram.bin": spectrogram_bundle(spectrogram, "demo-2s")}
+
+
+def rig_reference(spectrogram, values):
+    """A 3-body spherical chain (6 modes, G = 2) and the page's rig motion from Python: mode
+    coefficients (`rig_coefficients`), modal-skinned positions and body poses for a default
+    mapping (offset 0.25, gain 1.5) and one with an explicit palette given out of order."""
+    rig = Rig.from_skeleton(open_chain(3, "spherical"))
+    default = default_mapping(spectrogram, len(rig.palette.selected))
+    default.offset, default.gain = 0.25, 1.5
+    chosen = default_mapping(spectrogram, 2)
+    chosen.modes = ModeSettings(np.array([4, 1]), np.array([0.3, 0.2]), np.array([1.0, 2.5]),
+                                0.7)
+    cases = []
+    for mapping in (default, chosen):
+        c = rig_coefficients(rig.model, spectrogram, mapping, np.array(TIMES))
+        rotations, centres = body_poses(rig.model, c)
+        positions = rig.skin.positions(c).reshape(len(TIMES), -1)
+        cases.append({"mapping": mapping.to_json(), "coefficients": c.tolist(),
+                      "positions": np.round(positions, 8).tolist(),
+                      "rotations": rotations.reshape(len(TIMES), -1).tolist(),
+                      "centres": centres.reshape(len(TIMES), -1).tolist()})
+    reference = {"times": TIMES, "values": values.tolist(), "cases": cases}
+    return {"rig.json": json.dumps(reference, indent=0).encode(),
+            "rig.bin": rig_bundle(rig, "chain3")}
 
 
 def write(folder=FOLDER):

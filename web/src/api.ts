@@ -9,9 +9,10 @@ export interface MeshInfo { id: string; name: string; k: number; vertices: numbe
   job: Job | null; }
 export interface SongInfo { id: string; name: string; duration: number; }
 export interface Library { meshes: MeshInfo[]; songs: SongInfo[]; mappings: { id: string;
-  name: string }[]; }
+  name: string }[]; rigs?: { id: string; name: string; ready: boolean; modes?: number }[]; }
 
-async function checked(response: Response): Promise<Response> {
+/** The response, or an Error with the server's one-line message. */
+export async function checked(response: Response): Promise<Response> {
   if (!response.ok) {
     let message = `${response.status} ${response.statusText}`;
     try { message = (await response.json()).error ?? message; } catch { /* not JSON */ }

@@ -13,6 +13,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
+import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { SMOOTH_FPS, Viewer, softwareRenderer } from "./viewer";
 import type { Stage, View } from "./viewer";
@@ -33,6 +34,8 @@ export class App {
   readonly player: PlayerView;
   readonly library: Library;
   readonly recorder: Recorder;
+  /** articulated models: their galleries and player, on their own canvas */
+  readonly rigs: RigStage;
   view: View = "gallery";
   /** the server's gallery-size rule; null when `api/config` could not be read */
   rule: GalleryRule | null = null;
@@ -50,6 +53,7 @@ export class App {
     this.viewer = new Viewer($<HTMLCanvasElement>("gl"), $("player-area"), this.motion,
       this.transport, () => this.stage(), antialias);
     this.viewer.onFrame = (t) => {
+      if (this.rigs?.active) this.rigs.viewer.requestDraw(); // a seek or a rewind moves rigs too
       this.showFrame(t);
       drawSpectrum($("spectrum"), this.motion.bandValuesAt(t));
     };
@@ -66,6 +70,9 @@ export class App {
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => this.loading(text, fraction), (text) => this.error(text));
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
+    this.rigs = new RigStage(this.motion, this.transport, antialias, {
+      status, loading: (text) => this.loading(text), guard: (what, task) => this.guard(what, task),
+      songId: () => this.library.songId }, options.path, options.batch, !options.render);
     this.transport.onChange = (playing) => {
       $("play").textContent = playing ? "❚❚" : "▶";
       this.slowSince = null;
@@ -133,6 +140,7 @@ export class App {
 
   setView(view: View): void {
     this.view = view;
+    if (this.rigs.active) { this.rigs.setView(view); return; }
     if (view !== "gallery") $("notice").hidden = true; // it is about the tiles
     $("gallery-view").hidden = view !== "gallery";
     $("player-view").hidden = view !== "player";
@@ -143,6 +151,15 @@ export class App {
     if (view === "gallery") this.gallery.refresh(); // the player may have changed a tile
     this.player.refreshInfo(this.viewer.path);
     this.viewer.requestDraw();
+  }
+
+  /** Show rig `rigId` (an articulated model of the library) in its gallery of modes. */
+  openRig(rigId: string): Promise<string | null> {
+    return this.guard("Could not show this rig", async () => {
+      await this.rigs.open(rigId, this.rule?.max ?? 16);
+      $<HTMLSelectElement>("mesh").value = `rig:${rigId}`;
+      this.view = "gallery";
+    });
   }
 
   /** Play `mapping` in the player; `source` says where it comes from. */
@@ -181,7 +198,9 @@ export class App {
           if (await this.loadFirst(library)) this.status(`${file.name} ready`);
           continue;
         }
-        if (result.kind === "mesh") {
+        if (result.kind === "rig" || result.rig) { // a skeleton, or a glTF with a skin
+          if (await this.openRig(result.kind === "rig" ? result.item.id : result.rig.id)) continue;
+        } else if (result.kind === "mesh") {
           if (await this.showMesh(result.item.id)) continue; // failed: said why
         } else if (result.kind === "song") {
           await this.changeSong(result.item.id);
@@ -200,6 +219,9 @@ export class App {
 
   /** What the viewer draws now. */
   private stage(): Stage {
+    if (this.rigs.active) { // the rig's viewer draws
+      return { view: this.view, tiles: [], player: null, explorer: this.player.explorer };
+    }
     return { view: this.view, tiles: this.gallery.shots(),
       player: this.player.shot($("player-area")), explorer: this.player.explorer };
   }
@@ -214,7 +236,7 @@ export class App {
     const now = performance.now();
     if (now - this.readoutAt < READOUT_EVERY_MS) return;
     this.readoutAt = now;
-    const { fps } = this.viewer;
+    const { fps } = this.rigs.active ? this.rigs.viewer : this.viewer;
     const readout = $("fps");
     readout.textContent = fps > 0 ? `${fps.toFixed(fps < 10 ? 1 : 0)} fps` : "";
     readout.classList.toggle("slow", fps > 0 && fps < SMOOTH_FPS);
@@ -225,7 +247,7 @@ export class App {
   /** After SLOW_FOR_MS below SMOOTH_FPS in the gallery, say so and offer fewer tiles. */
   private checkFrameRate(fps: number, now: number): void {
     const tiles = this.gallery.tileCount;
-    const slow = this.view === "gallery" && this.transport.playing && fps > 0
+    const slow = this.view === "gallery" && !this.rigs.active && this.transport.playing && fps > 0
       && fps < SMOOTH_FPS && !this.slowDismissed.has(tiles);
     if (!slow) { this.slowSince = null; return; }
     this.slowSince ??= now;
@@ -309,6 +331,7 @@ export class App {
    * faster deformation path for it. Returns the gallery's failure (already shown), or null. */
   private async showMesh(meshId: string): Promise<string | null> {
     await this.library.loadMesh(meshId);
+    if (this.rigs.active) { this.rigs.leave(); this.setView(this.view); }
     const failure = this.gallery.showMesh(meshId) ? null : await this.newGallery();
     this.viewer.choosePath(this.options.path);
     return failure;
@@ -318,6 +341,7 @@ export class App {
   private async changeSong(songId: string): Promise<void> {
     await this.library.loadSong(songId);
     await this.newGallery();
+    await this.rigs.songChanged();
     this.viewer.requestDraw();
   }
 
@@ -326,6 +350,7 @@ export class App {
     const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
     $("mesh").addEventListener("change", (e) => {
       const meshId = valueOf(e);
+      if (meshId.startsWith("rig:")) { void this.openRig(meshId.slice(4)); return; }
       void this.guard("Could not show this model", async () => {
         if (!(await this.showMesh(meshId))) this.status("");
       });
@@ -375,13 +400,15 @@ export class App {
    * a removed model or song on screen gives way to the first one left. */
   private async remove(kind: "mesh" | "song" | "mapping"): Promise<void> {
     const menu = $<HTMLSelectElement>(kind === "mapping" ? "mapping-menu" : kind);
-    const id = menu.value;
+    const rig = kind === "mesh" && menu.value.startsWith("rig:"); // the model menu lists rigs too
+    const id = rig ? menu.value.slice(4) : menu.value;
     const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
     await this.guard(`Could not remove ${name}`, async () => {
-      await api.remove(kind, id);
+      await api.remove(rig ? "rig" : kind, id);
       const library = await this.library.refresh();
-      if (kind === "mesh" && id === this.library.meshId && library.meshes.length) {
-        await this.showMesh(library.meshes[0].id);
+      if (rig || (kind === "mesh" && id === this.library.meshId)) {
+        const next = library.meshes.find((m) => m.id === this.library.meshId) ?? library.meshes[0];
+        if (next) await this.showMesh(next.id); // leaves the rig's views
       } else if (kind === "song" && id === this.library.songId && library.songs.length) {
         this.transport.pause();
         await this.changeSong(library.songs[0].id);
@@ -417,7 +444,10 @@ export class App {
         " ": () => this.togglePlay(),
         g: () => this.setView("gallery"),
         p: () => this.setView("player"),
-        b: () => { void this.guard("Breeding failed", () => this.gallery.breed()); },
+        b: () => {
+          void this.guard("Breeding failed",
+            () => (this.rigs.active ? this.rigs.gallery.breed() : this.gallery.breed()));
+        },
         "[": () => this.gallery.step(-1),
         "]": () => this.gallery.step(1),
         m: () => this.toggleMute(),

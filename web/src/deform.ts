@@ -138,6 +138,14 @@ export class Deformer implements HarmonicsSource {
     return this.batched!.read(tile % this.batch, Math.floor(tile / this.batch));
   }
 
+  /** Positions of every model of `weights` from one batched computation, as drawn. */
+  readAll(weights: Float32Array[]): Float32Array[] {
+    if (weights.length === 1) return [this.readPositions(weights)];
+    this.computePositions(weights);
+    return weights.map((_, tile) => this.batched!.read(tile % this.batch,
+      Math.floor(tile / this.batch)));
+  }
+
   /** Largest |U[:, ν]| for the harmonics explorer's colour scale. */
   harmonicScale(index: number): number {
     const { n, k4, harmonics } = this.basis;

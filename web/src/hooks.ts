@@ -3,6 +3,10 @@
 import type { App } from "./app";
 import { deformCPU } from "./filter";
 import type { Prepared } from "./filter";
+import { bodyMatrices } from "./modal-skin";
+import type { RigPrepared } from "./modal-skin";
+import { toFileUnits } from "./rig-bundle";
+import type { Skinning } from "./rig-player-view";
 import type { DeformationPath, View } from "./viewer";
 
 export type Hooks = ReturnType<typeof makeHooks>;
@@ -79,6 +83,8 @@ function makeHooks(app: App, ready: Promise<void>) {
         : document.getElementById("error-text")!.textContent,
     }),
     setPath: (path: DeformationPath) => viewer.setPath(path),
+    /** Rigs (docs/web.md#rigs-in-the-page); positions are in the rig file's units. */
+    rig: rigHooks(app),
     /** Time the deformation alone of every tile (ms per frame), GPU or CPU path. */
     timeDeformation(count: number, t0 = 1): { frame: number } {
       const run = (t: number) => {
@@ -111,6 +117,118 @@ function makeHooks(app: App, ready: Promise<void>) {
         drawing += parts.drawing;
       }
       return { deformation: deformation / count, drawing: drawing / count };
+    },
+  };
+}
+
+function rigHooks(app: App) {
+  const rigs = app.rigs;
+  const prepared = (tile: number | "player"): RigPrepared =>
+    (tile === "player" ? rigs.player.prepared! : rigs.gallery.shots()[tile].prepared) as RigPrepared;
+  const allWeights = (t: number) => rigs.gallery.shots().map((shot) => rigs.motion.weights(shot.prepared, t));
+  return {
+    /** Open rig `id` in its gallery of modes (resolves once shown; the error shown if any). */
+    open: (id: string) => app.openRig(id),
+    renderAt(t: number): void {
+      rigs.viewer.pin(t);
+      rigs.viewer.draw(t);
+      rigs.viewer.finish();
+    },
+    live: () => rigs.viewer.unpin(),
+    /** GPU modal skinning read back (a tile of the batched passes as drawn, or the player). */
+    readPositions(tile: number | "player", t: number): number[] {
+      const deformer = rigs.viewer.deformer!;
+      const positions = tile === "player"
+        ? deformer.readPositions([rigs.motion.weights(prepared(tile), t)])
+        : deformer.readPositions(allWeights(t), tile);
+      return Array.from(toFileUnits(rigs.rig!, positions));
+    },
+    /** Every tile's GPU positions at time t from one batched computation, as drawn. */
+    readTiles(t: number): number[][] {
+      return rigs.viewer.deformer!.readAll(allWeights(t))
+        .map((positions) => Array.from(toFileUnits(rigs.rig!, positions)));
+    },
+    /** The same from the CPU path. */
+    cpuPositions(tile: number | "player", t: number): number[] {
+      const basis = rigs.viewer.deformer!.basis;
+      return Array.from(toFileUnits(rigs.rig!, deformCPU(basis, rigs.motion.weights(prepared(tile), t))));
+    },
+    /** Mode coefficients c (k) of a tile or the player at time t. */
+    coefficients: (tile: number | "player", t: number) =>
+      Array.from(rigs.motion.coefficients(prepared(tile), t)),
+    /** three.js linear blend skinning of the player's body poses at time t (file units). */
+    lbsPositions(t: number): number[] {
+      const figure = rigs.figure!;
+      figure.pose(bodyMatrices(rigs.rig!, rigs.motion.coefficients(prepared("player"), t)));
+      return Array.from(figure.lbsPositions());
+    },
+    tilePixels: (step = 4): number[][] => rigs.viewer.pixelsOf(rigs.gallery.views(), step),
+    playerPixels: (step = 4): number[] => rigs.viewer.pixelsOf([document.getElementById(
+      "rig-player-area")!], step)[0],
+    labels: () => rigs.gallery.labels(),
+    setView: (view: View) => app.setView(view),
+    setMode: (mode: "modes" | "dances") => rigs.gallery.setMode(mode),
+    page: (page: number) => rigs.gallery.setPage(page),
+    /** Show at most `size` mode tiles a page (the gallery of NM tiles of Table 7.2). */
+    pageSize: (size: number) => {
+      rigs.gallery.pageSize = size;
+      rigs.gallery.setMode("modes");
+      rigs.gallery.setPage(0);
+    },
+    select: (index: number) => rigs.gallery.toggle(index),
+    combine: () => rigs.combine(rigs.gallery.selection),
+    breed: (seed?: number) => app.guard("Breeding failed", () => rigs.gallery.breed(seed)),
+    openDance: (index: number) => {
+      rigs.player.show(rigs.gallery.dances()[index], `dance ${index + 1}`);
+      app.setView("player");
+    },
+    setSkinning: (skinning: Skinning) => {
+      rigs.player.skinning = skinning;
+      (document.getElementById("rig-skinning") as HTMLSelectElement).value = skinning;
+      rigs.viewer.requestDraw();
+    },
+    setMusic: (on: boolean) => {
+      rigs.player.music = on;
+      (document.getElementById("rig-music") as HTMLInputElement).checked = on;
+      rigs.player.update();
+    },
+    setBones: (on: boolean) => {
+      rigs.player.bones = on;
+      (document.getElementById("rig-bones") as HTMLInputElement).checked = on;
+      rigs.viewer.requestDraw();
+    },
+    pick: (joint: number) => rigs.player.pick(joint),
+    /** Scale the player palette's amplitudes by `factor`. */
+    scaleAmplitudes: (factor: number) => {
+      const amplitudes = rigs.player.palette!.amplitudes!;
+      amplitudes.forEach((a, i) => { amplitudes[i] = a * factor; });
+      rigs.player.update();
+    },
+    /** Turn joint `joint` by a rotation vector (radians), as the pose sliders do. */
+    pose: (joint: number, rotation: [number, number, number]) =>
+      app.guard("Could not turn the joint", () => rigs.poseJoint(joint, rotation)),
+    stiffness: (joint: number, value: number | "auto") =>
+      app.guard("Could not set the stiffness", () => rigs.stiffness(joint, value)),
+    reset: () => app.guard("Could not reset the rig", () => rigs.reset()),
+    playerMapping: () => rigs.player.saved(),
+    info: () => ({
+      id: rigs.rig?.id, name: rigs.rig?.name, n: rigs.rig?.n, k: rigs.rig?.k,
+      revision: rigs.rig?.revision, diagonal: rigs.rig?.diagonal, active: rigs.active,
+      view: rigs.view, mode: rigs.gallery.mode, page: rigs.gallery.page,
+      pages: rigs.gallery.pages, modes: rigs.gallery.modes, tiles: rigs.gallery.views().length,
+      path: rigs.viewer.path, batch: rigs.viewer.deformer?.batch, fps: rigs.viewer.fps,
+      frequencies: rigs.rig ? Array.from(rigs.rig.frequencies) : [],
+      generations: rigs.gallery.generations.length,
+      error: document.getElementById("error")!.hidden ? null
+        : document.getElementById("error-text")!.textContent,
+    }),
+    setPath: (path: DeformationPath) => rigs.viewer.setPath(path),
+    /** Time one frame (modal skinning + drawing of every tile, or the player), ms. */
+    timeFrames(count: number, t0 = 1): { frame: number } {
+      rigs.viewer.draw(t0); rigs.viewer.finish();
+      const start = performance.now();
+      for (let i = 0; i < count; i++) { rigs.viewer.draw(t0 + 0.1 * i); rigs.viewer.finish(); }
+      return { frame: (performance.now() - start) / count };
     },
   };
 }

@@ -33,7 +33,11 @@ export class Library {
   async refresh(): Promise<api.Library> {
     const items = await api.library();
     this.items = items;
-    fillSelect($<HTMLSelectElement>("mesh"), items.meshes, this.meshId);
+    const models = $<HTMLSelectElement>("mesh");
+    const shown = models.value; // a rig, while one is on screen
+    fillSelect(models, items.meshes, this.meshId);
+    addRigs(models, items.rigs ?? []);
+    if ([...models.options].some((option) => option.value === shown)) models.value = shown;
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
     const mappings = $<HTMLSelectElement>("mapping-menu");
     const chosen = mappings.value;
@@ -110,4 +114,13 @@ function fillSelect(select: HTMLSelectElement, items: { id: string; name: string
                     chosen: string): void {
   select.innerHTML = "";
   for (const item of items) select.add(new Option(item.name, item.id, false, item.id === chosen));
+}
+
+/** The library's rigs (articulated models) as a group of the model menu, values `rig:ID`. */
+function addRigs(select: HTMLSelectElement, rigs: { id: string; name: string }[]): void {
+  if (!rigs.length) return;
+  const group = document.createElement("optgroup");
+  group.label = "rigs (vibration modes)";
+  for (const rig of rigs) group.appendChild(new Option(rig.name, `rig:${rig.id}`));
+  select.appendChild(group);
 }

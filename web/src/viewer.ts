@@ -8,7 +8,6 @@ import type { Basis } from "./bundle";
 import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
 import type { Prepared, Shading } from "./filter";
-import type { Motion } from "./motion";
 import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
 import type { Silhouette } from "./studio";
 import type { Clock } from "./transport";
@@ -32,6 +31,16 @@ export interface Explorer { harmonic: number; scale: number; }
 
 /** What the current frame shows. */
 export interface Stage { view: View; tiles: Shot[]; player: Shot | null; explorer: Explorer; }
+
+/** What moves the models (the harmonics' `Motion`, a rig's `RigMotion`): the deformation
+ * shader's weights of a prepared mapping at time t, and the poses a model is framed in — the
+ * weights `framingWeights` gives, else those at the song's loudest times. */
+export interface MotionSource {
+  readonly ready: boolean;
+  weights(prepared: Prepared, t: number): Float32Array;
+  loudestTimes(count: number): number[];
+  framingWeights?(prepared: Prepared): Float32Array[];
+}
 
 /** Where a camera stands: looking at `target` from `distance` along VIEW_DIRECTION. */
 interface Framing { target: THREE.Vector3; distance: number; }
@@ -77,7 +86,7 @@ export class Viewer {
 
 
   private readonly tileCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
-  private readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
+  readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   private readonly controls: OrbitControls;
   private shape: Silhouette | null = null;
   private rim: Int32Array | null = null;
@@ -94,7 +103,7 @@ export class Viewer {
   private frameTimes: number[] = [];
 
   constructor(canvas: HTMLCanvasElement, playerArea: HTMLElement,
-              private readonly motion: Motion, private readonly clock: Clock,
+              private readonly motion: MotionSource, private readonly clock: Clock,
               private readonly stage: () => Stage, antialias: boolean) {
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias,
       preserveDrawingBuffer: true, powerPreference: "high-performance" });
@@ -351,10 +360,11 @@ export class Viewer {
     let found = this.poses.get(prepared);
     if (!found) {
       const basis = this.deformer!.basis, rimVertices = this.rim!;
-      const times = this.motion.loudestTimes(POSES);
-      const points = new Float32Array(3 * rimVertices.length * times.length);
-      times.forEach((t, i) => {
-        deformCPU(basis, this.motion.weights(prepared, t),
+      const weights = this.motion.framingWeights?.(prepared)
+        ?? this.motion.loudestTimes(POSES).map((t) => this.motion.weights(prepared, t));
+      const points = new Float32Array(3 * rimVertices.length * weights.length);
+      weights.forEach((w, i) => {
+        deformCPU(basis, w,
           points.subarray(3 * rimVertices.length * i, 3 * rimVertices.length * (i + 1)),
           rimVertices);
       });

@@ -1,0 +1,232 @@
+// The rig's galleries (docs/web.md#rigs-in-the-page): the gallery of modes — one tile per
+// vibration mode, lowest first, each oscillating alone at its time-scaled frequency, printed
+// under it; a page of at most the gallery rule's largest size, and "more modes" for the rest —
+// and the gallery of dances: mode mappings calibrated on the song (`POST api/rig-gallery`) bred
+// like the harmonic gallery's (`POST api/breed`).
+import * as api from "./api";
+import { $, saveJSON } from "./dom";
+import type { Mapping } from "./filter";
+import { modeTile, prepareRig } from "./modal-skin";
+import type { RigPrepared } from "./modal-skin";
+import type { Rig } from "./rig-bundle";
+import type { Shot, Look } from "./viewer";
+
+export type RigGalleryMode = "modes" | "dances";
+
+/** Rigs are shaded by the normals of their deformed faces (thesis §6.3). */
+export const RIG_LOOK: Look = { shading: "smooth", deformedNormalWeight: 1 };
+
+interface Tile { element: HTMLElement; view: HTMLElement; label: HTMLElement; }
+
+export interface RigGalleryEvents {
+  status(text: string): void;
+  requestDraw(): void;
+  guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** play the selected modes (mode gallery) or this dance in the player */
+  combine(modes: number[]): void;
+  open(mapping: Mapping, source: string): void;
+  /** the time scale the mode tiles play at (the player's palette's) */
+  timeScale(): number;
+}
+
+export class RigGalleryView {
+  mode: RigGalleryMode = "modes";
+  /** modes per page */
+  pageSize = 16;
+  page = 0;
+  /** the dances: generations of mode mappings (the last one shown unless chosen) */
+  generations: Mapping[][] = [];
+  generation = -1;
+  private rig: Rig | null = null;
+  private prepared: RigPrepared[] = [];
+  private tiles: Tile[] = [];
+  private readonly selectedModes = new Set<number>();
+  private readonly selectedDances = new Set<number>();
+
+  constructor(private readonly events: RigGalleryEvents) {
+    $("rig-show-modes").addEventListener("click", () => this.setMode("modes"));
+    $("rig-show-dances").addEventListener("click", () => this.setMode("dances"));
+    $("rig-prev-modes").addEventListener("click", () => this.setPage(this.page - 1));
+    $("rig-more-modes").addEventListener("click", () => this.setPage(this.page + 1));
+    $("rig-combine").addEventListener("click", () => {
+      this.events.combine([...this.selectedModes].sort((a, b) => a - b));
+    });
+    $("rig-breed").addEventListener("click", () => {
+      void this.events.guard("Breeding failed", () => this.breed());
+    });
+    $<HTMLSelectElement>("rig-generation").addEventListener("change", (event) => {
+      this.showGeneration(Number((event.target as HTMLSelectElement).value));
+    });
+  }
+
+  get pages(): number { return this.rig ? Math.max(1, Math.ceil(this.rig.k / this.pageSize)) : 1; }
+
+  /** The modes on this page, lowest first. */
+  get modes(): number[] {
+    if (!this.rig) return [];
+    const first = this.page * this.pageSize;
+    return Array.from({ length: Math.max(0, Math.min(this.pageSize, this.rig.k - first)) },
+      (_, i) => first + i);
+  }
+
+  get selection(): number[] {
+    const chosen = this.mode === "modes" ? this.selectedModes : this.selectedDances;
+    return [...chosen].sort((a, b) => a - b);
+  }
+
+  dances(): Mapping[] { return this.generations[this.generation] ?? []; }
+
+  shots(): Shot[] {
+    return this.tiles.map((tile, i) => ({ element: tile.view, prepared: this.prepared[i],
+      look: RIG_LOOK }));
+  }
+
+  views(): HTMLElement[] { return this.tiles.map((tile) => tile.view); }
+
+  labels(): string[] { return this.tiles.map((tile) => tile.label.textContent ?? ""); }
+
+  /** A new rig (or the same one edited: same modes kept selected when they still exist). */
+  setRig(rig: Rig, fresh: boolean): void {
+    this.rig = rig;
+    if (fresh) {
+      this.page = 0;
+      this.selectedModes.clear();
+      this.selectedDances.clear();
+      this.generations = [];
+      this.generation = -1;
+    }
+    for (const mode of this.selectedModes) if (mode >= rig.k) this.selectedModes.delete(mode);
+    this.setPage(Math.min(this.page, this.pages - 1));
+  }
+
+  /** The first generation of dances: the rig gallery calibrated on the song. */
+  setDances(mappings: Mapping[]): void {
+    this.generations = [mappings];
+    this.showGeneration(0);
+  }
+
+  setMode(mode: RigGalleryMode): void {
+    this.mode = mode;
+    $("rig-show-modes").classList.toggle("active", mode === "modes");
+    $("rig-show-dances").classList.toggle("active", mode === "dances");
+    $("rig-modes-controls").hidden = mode !== "modes";
+    $("rig-dances-controls").hidden = mode !== "dances";
+    this.build();
+  }
+
+  setPage(page: number): void {
+    this.page = Math.max(0, Math.min(page, this.pages - 1));
+    if (this.mode === "modes") this.build();
+  }
+
+  showGeneration(index: number): void {
+    this.generation = Math.max(0, Math.min(index, this.generations.length - 1));
+    this.selectedDances.clear();
+    const menu = $<HTMLSelectElement>("rig-generation");
+    menu.innerHTML = "";
+    this.generations.forEach((_, i) => menu.add(new Option(`generation ${i + 1}`, String(i),
+      false, i === this.generation)));
+    if (this.mode === "dances") this.build();
+  }
+
+  /** The time scale changed (the player's palette): the mode tiles follow. */
+  refresh(): void { this.build(); }
+
+  toggle(index: number): void {
+    const chosen = this.mode === "modes" ? this.selectedModes : this.selectedDances;
+    const key = this.mode === "modes" ? this.modes[index] : index;
+    if (key === undefined) return;
+    if (chosen.has(key)) chosen.delete(key); else chosen.add(key);
+    this.tiles[index]?.element.classList.toggle("selected", chosen.has(key));
+    this.updateButtons();
+  }
+
+  /** The next generation of dances from the selected ones (`eigendance.mapping.breed`). */
+  async breed(seed = Math.floor(Math.random() * 2 ** 31)): Promise<void> {
+    const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dances()[i]);
+    if (!parents.length) return;
+    this.events.status("breeding…");
+    const children = await api.breed(parents, this.dances().length, seed);
+    this.generations.push(children);
+    this.showGeneration(this.generations.length - 1);
+    this.events.status("");
+  }
+
+  private updateButtons(): void {
+    const combine = $<HTMLButtonElement>("rig-combine");
+    combine.disabled = this.selectedModes.size === 0;
+    combine.textContent = this.selectedModes.size
+      ? `combine ${this.selectedModes.size} selected` : "combine selected";
+    const breed = $<HTMLButtonElement>("rig-breed");
+    breed.disabled = this.selectedDances.size === 0;
+    breed.textContent = this.selectedDances.size
+      ? `breed ${this.selectedDances.size} selected` : "breed selected";
+    $<HTMLButtonElement>("rig-prev-modes").disabled = this.page === 0;
+    $<HTMLButtonElement>("rig-more-modes").disabled = this.page >= this.pages - 1;
+    const modes = this.modes;
+    $("rig-modes-page").textContent = this.rig && modes.length
+      ? `modes ${modes[0] + 1}–${modes[modes.length - 1] + 1} of ${this.rig.k}` : "";
+  }
+
+  /** One tile per mode of the page, or per dance, in a grid about 1.5 times wider than tall. */
+  private build(): void {
+    const rig = this.rig;
+    const container = $("rig-tiles");
+    container.innerHTML = "";
+    this.tiles = [];
+    this.prepared = [];
+    if (rig) {
+      const s = this.events.timeScale();
+      if (this.mode === "modes") {
+        this.prepared = this.modes.map((mode) => modeTile(rig, mode, s));
+      } else {
+        this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
+      }
+      container.style.setProperty("--columns",
+        String(Math.max(1, Math.ceil(Math.sqrt(this.prepared.length * 1.5)))));
+      this.tiles = this.prepared.map((prepared, index) => {
+        const tile = this.makeTile(index, prepared);
+        container.appendChild(tile.element);
+        return tile;
+      });
+    }
+    this.updateButtons();
+    this.events.requestDraw();
+  }
+
+  private makeTile(index: number, prepared: RigPrepared): Tile {
+    const rig = this.rig!;
+    const element = document.createElement("div");
+    element.className = "rig-tile";
+    element.innerHTML = `<div class="view"></div><div class="caption"></div>`;
+    const label = element.querySelector(".caption") as HTMLElement;
+    if (this.mode === "modes") {
+      const mode = prepared.selected[0];
+      const natural = rig.frequencies[mode];
+      label.textContent = `mode ${mode + 1} · ${(natural * prepared.timeScale).toFixed(2)} Hz`;
+      label.title = `natural frequency ${natural.toFixed(3)} Hz × time scale `
+        + `${prepared.timeScale.toFixed(2)}; click to select, then combine`;
+      element.classList.toggle("selected", this.selectedModes.has(mode));
+    } else {
+      const modes = [...prepared.selected].map((m) => m + 1);
+      label.textContent = `#${index + 1} · modes ${modes[0]}–${modes[modes.length - 1]}`;
+      element.classList.toggle("selected", this.selectedDances.has(index));
+      const actions = document.createElement("div");
+      actions.className = "actions";
+      actions.innerHTML = `<button class="open" title="play this dance in the player">open</button>
+        <button class="save" title="download this mapping (JSON)">save</button>`;
+      element.appendChild(actions);
+    }
+    element.addEventListener("click", (event) => {
+      const target = event.target as HTMLElement;
+      const mapping = this.dances()[index];
+      if (target.closest(".open")) { this.events.open(mapping, `dance ${index + 1}`); return; }
+      if (target.closest(".save")) {
+        saveJSON(mapping, `rig-mapping-g${this.generation + 1}-${index + 1}.json`);
+        return;
+      }
+      this.toggle(index);
+    });
+    return { element, view: element.querySelector(".view") as HTMLElement, label };
+  }
+}

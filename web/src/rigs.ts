@@ -1,0 +1,204 @@
+// Rigs in the page (docs/web.md#rigs-in-the-page): an articulated model from the model menu
+// opens its gallery of modes; the RigStage owns what the page shows then — a second Viewer (its
+// own canvas) drawing the rig's modal skin through the harmonics' deformation machinery, the
+// rig's galleries and player, and the edits (pose, stiffness) that answer a new rig bundle.
+import { $ } from "./dom";
+import type { Mapping } from "./filter";
+import { RigFigure } from "./bones";
+import { RigMotion, bodyMatrices } from "./modal-skin";
+import type { Motion } from "./motion";
+import type { Rig } from "./rig-bundle";
+import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
+import { RigGalleryView } from "./rig-gallery-view";
+import { RigPlayerView } from "./rig-player-view";
+import type { Clock } from "./transport";
+import { Viewer } from "./viewer";
+import type { DeformationPath, Stage, View } from "./viewer";
+
+export interface RigEvents {
+  status(text: string): void;
+  loading(text: string | null): void;
+  guard(what: string, task: () => Promise<void>): Promise<string | null>;
+  /** the song the dances are calibrated on */
+  songId(): string;
+}
+
+export class RigStage {
+  readonly motion: RigMotion;
+  readonly viewer: Viewer;
+  readonly gallery: RigGalleryView;
+  readonly player: RigPlayerView;
+  rig: Rig | null = null;
+  figure: RigFigure | null = null;
+  active = false;
+  view: View = "gallery";
+  /** the rig gallery's default mapping (calibrated on the song): what combined modes play */
+  private defaultMapping: Mapping | null = null;
+
+  constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
+              private readonly path: DeformationPath | null, private readonly batch: number,
+              live: boolean) {
+    this.motion = new RigMotion(music);
+    // The page's own loop handles the end of the song (rewind, the seek bar); this one follows.
+    const follower: Clock = { get playing() { return clock.playing; }, now: () => clock.now(),
+      ended: () => false, rewind: () => {} };
+    this.viewer = new Viewer($<HTMLCanvasElement>("rig-gl"), $("rig-player-area"), this.motion,
+      follower, () => this.stage(), antialias);
+    this.viewer.onFrame = (t) => this.beforeFrame(t);
+    const requestDraw = () => this.viewer.requestDraw();
+    this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
+      combine: (modes) => this.combine(modes),
+      open: (mapping, source) => { this.player.show(mapping, source); this.setView("player"); },
+      timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1 });
+    this.player = new RigPlayerView({ requestDraw, guard: events.guard,
+      timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
+      pose: (joint, rotation) => this.poseJoint(joint, rotation),
+      stiffness: (joint, value) => this.stiffness(joint, value),
+      reset: () => this.reset() });
+    $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
+    if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
+  }
+
+  /** Open rig `id` (its bundle; the dances calibrated on the current song) in its gallery of
+   * modes. Throws the server's error (a rig without modes, an unreadable file…). */
+  async open(id: string, pageSize: number): Promise<void> {
+    this.events.loading("loading the rig and its vibration modes…");
+    try {
+      const rig = await rigBundle(id);
+      if (!rig.k) throw new Error(`${rig.name} has no vibration mode (no elastic joint)`);
+      const gallery = await rigGallery(id, this.events.songId(), null);
+      this.gallery.pageSize = pageSize;
+      this.setRig(rig, true);
+      this.defaultMapping = gallery.default;
+      this.player.show(gallery.default, "default palette");
+      this.gallery.setDances(gallery.mappings);
+      this.gallery.setMode("modes");
+      this.enter();
+      this.viewer.choosePath(this.path);
+      this.events.status(`${rig.name}: ${rig.k} vibration modes`);
+    } finally {
+      this.events.loading(null);
+    }
+  }
+
+  /** A new song: the dances and the combined modes' mapping are calibrated on it again. */
+  async songChanged(): Promise<void> {
+    if (!this.active || !this.rig) return;
+    const gallery = await rigGallery(this.rig.id, this.events.songId(), null);
+    this.defaultMapping = gallery.default;
+    this.gallery.setDances(gallery.mappings);
+  }
+
+  /** Back to the harmonics (another model chosen). */
+  leave(): void {
+    this.active = false;
+    document.body.classList.remove("rig-mode");
+    for (const id of ["rig-gallery-view", "rig-player-view"]) $(id).hidden = true;
+    $("rig-gl").hidden = true;
+  }
+
+  setView(view: View): void {
+    this.view = view;
+    $("rig-gallery-view").hidden = view !== "gallery";
+    $("rig-player-view").hidden = view !== "player";
+    $("tab-gallery").classList.toggle("active", view === "gallery");
+    $("tab-player").classList.toggle("active", view === "player");
+    this.viewer.requestDraw();
+  }
+
+  stage(): Stage {
+    if (!this.active) return { view: this.view, tiles: [], player: null, explorer: { harmonic: -1, scale: 1 } };
+    const player = this.player.shot($("rig-player-area"));
+    return { view: this.view, tiles: this.view === "gallery" ? this.gallery.shots() : [], player,
+      explorer: { harmonic: -1, scale: 1 } };
+  }
+
+  /** Combine the selected modes in the player: the song-calibrated default mapping playing
+   * them, each at its tile's amplitude over √(number of modes) and its tile's phase. */
+  combine(modes: number[]): void {
+    const rig = this.rig;
+    if (!rig || !modes.length || !this.defaultMapping) return;
+    const share = 1 / Math.sqrt(modes.length);
+    this.player.show({ ...this.defaultMapping, modes: { selected: modes,
+      amplitudes: modes.map((m) => rig.amplitudes[m] * share),
+      phases: modes.map((m) => rig.phases[m]),
+      time_scale: this.player.palette?.time_scale ?? rig.palette!.time_scale } },
+    `modes ${modes.map((m) => m + 1).join(", ")}`);
+    this.setView("player");
+  }
+
+  /** Equilibrium pose edit (thesis Fig. 4.17): turn `joint`'s far side by the rotation
+   * vector (world, radians); the server recomputes the modes. */
+  poseJoint(joint: number, rotation: [number, number, number]): Promise<void> {
+    return this.edit("turning the joint", () => poseRig(this.rig!.id, joint, rotation));
+  }
+
+  /** Stiffness of every free row of `joint`, or "auto" (the default rule). */
+  stiffness(joint: number, value: number | "auto"): Promise<void> {
+    return this.edit("setting the stiffness",
+      () => stiffenRig(this.rig!.id, { [this.rig!.jointList[joint].name]: value }));
+  }
+
+  /** The rig as loaded (pose and stiffness). */
+  reset(): Promise<void> {
+    return this.edit("resetting", async () => {
+      const rig = await resetRig(this.rig!.id);
+      this.player.pick(this.player.joint); // the sliders back to 0
+      return rig;
+    });
+  }
+
+  private enter(): void {
+    this.active = true;
+    document.body.classList.add("rig-mode");
+    $("gallery-view").hidden = true;
+    $("player-view").hidden = true;
+    $("rig-gl").hidden = false;
+    this.setView("gallery");
+  }
+
+  /** Show a rig: its modal skin as a basis for the viewer, its figure (bones, LBS skin). */
+  private setRig(rig: Rig, fresh: boolean): void {
+    this.viewer.setBasis(rigBasis(rig), this.batch);
+    this.figure?.dispose();
+    this.figure = new RigFigure(rig);
+    this.viewer.deformer!.scene.add(this.figure.group);
+    this.rig = rig;
+    this.motion.rig = rig;
+    this.player.setRig(rig, fresh);
+    this.gallery.setRig(rig, fresh);
+    if (!fresh) this.viewer.setPath(this.viewer.path);
+  }
+
+  /** An edit answered by a new bundle: the modes are recomputed, gallery and player follow. */
+  private async edit(what: string, request: () => Promise<Rig>): Promise<void> {
+    this.events.status(`${what}…`);
+    const started = performance.now();
+    const rig = await request();
+    this.setRig(rig, false);
+    this.events.status(`${rig.name}: modes recomputed (${Math.round(performance.now() - started)} ms)`);
+  }
+
+  /** Before each frame: bones, joints and the LBS skin follow the player's body poses. */
+  private beforeFrame(t: number): void {
+    const figure = this.figure, deformer = this.viewer.deformer;
+    if (!figure || !deformer) return;
+    const player = this.view === "player" && this.player.prepared !== null;
+    const lbs = player && this.player.skinning === "lbs";
+    deformer.mesh.visible = !lbs;
+    if (player) {
+      figure.pose(bodyMatrices(this.rig!, this.motion.coefficients(this.player.prepared!, t)));
+    }
+    figure.show({ lbs, bones: player && this.player.bones, joint: player ? this.player.joint : -1 });
+  }
+
+  /** A click in the player picks the joint drawn nearest to it. */
+  private pickAt(event: MouseEvent): void {
+    if (!this.figure || !this.player.bones) return;
+    const area = $("rig-player-area").getBoundingClientRect();
+    const x = ((event.clientX - area.left) / area.width) * 2 - 1;
+    const y = -((event.clientY - area.top) / area.height) * 2 + 1;
+    const joint = this.figure.nearestJoint(x, y, this.viewer.playerCamera);
+    if (joint >= 0) this.player.pick(joint);
+  }
+}
