@@ -132,42 +132,57 @@ def test_every_tile_of_the_initial_gallery_moves_and_differently(page, reference
 
 
 def screen_tiles(page):
-    """Each tile's view as the person sees it (a screenshot of the page, cut per tile)."""
+    """Each tile's view as the person sees it (a screenshot of the page, cut per tile): the
+    views' boxes [left, top, right, bottom] and their pictures."""
     image = np.asarray(Image.open(io.BytesIO(page.screenshot())).convert("RGB"), dtype=float)
     boxes = page.eval_on_selector_all(".tile .view", "views => views.map(v => { "
                                       "const r = v.getBoundingClientRect(); "
                                       "return [r.left, r.top, r.right, r.bottom]; })")
-    return [image[int(top):int(bottom), int(left):int(right)]
-            for left, top, right, bottom in boxes]
+    return boxes, [image[int(top):int(bottom), int(left):int(right)]
+                   for left, top, right, bottom in boxes]
+
+
+def assert_no_band_cut_out(page):
+    """No tile shows a full-width band of the bare page (#15171c) where its backdrop belongs:
+    what an opaque bar over the WebGL canvas did (docs/web.md#rendering)."""
+    for view in screen_tiles(page)[1]:
+        if min(view.shape[:2]) < 8:  # off screen
+            continue
+        bare = (np.abs(view - [21, 23, 28]).max(axis=-1) <= 2).mean(axis=1) > 0.9
+        assert not bare[2:-2].any(), f"rows {np.flatnonzero(bare)} of a tile are not drawn"
 
 
 def test_every_tile_moves_on_screen_while_a_real_song_plays(browser, live_server):
     """Every tile's pixels over 3 s of playback of a real recording: each one changes."""
     song = songs_of(live_server)[os.path.basename(REAL_SONG)]
-    page = open_app(browser, live_server["url"], f"?test&size=4&song={song}&path=cpu",
-                    width=760, height=560)  # small: frames come faster without a GPU
+    page = open_app(browser, live_server["url"], f"?test&size=4&song={song}&path=cpu")
     page.click("#play")
-    snapshots, times, played = [], [], 0.0
+    snapshots, times, played, layout = [], [], 0.0, None
     while len(times) < 8 or played < 3.0:  # at least 3 s of song time, 8 pictures
         page.wait_for_timeout(250)
         info = page.evaluate("window.eigendance.info()")
         if not info["playing"]:  # the end of the recording (4 s): play it again
             page.click("#play")
             continue
+        boxes, tiles = screen_tiles(page)
+        if boxes != layout:  # the slow-page notice moved the tiles: pictures of the new layout
+            snapshots, times, played, layout = [], [], 0.0, boxes  # once it has settled
+            continue
         if times and info["time"] > times[-1]:
             played += info["time"] - times[-1]
-        snapshots.append(screen_tiles(page))
+        snapshots.append(tiles)
         times.append(info["time"])
+    assert_no_band_cut_out(page)
     page.click("#play")
     for tile in range(4):
-        rows = min(shot[tile].shape[0] for shot in snapshots)
-        columns = min(shot[tile].shape[1] for shot in snapshots)
-        images = np.array([shot[tile][:rows, :columns] for shot in snapshots])
-        # The most different pair of pictures: poses far apart in the song, whichever they are.
-        changed = max((np.abs(images[a] - images[b]).sum(axis=-1) > 30).mean()
-                      for a in range(len(images)) for b in range(a))
+        images = [shot[tile] for shot in snapshots]
+        # The most different pair of pictures: poses far apart in the song.
+        changed = max((np.abs(a - b).sum(axis=-1) > 30).mean()
+                      for i, a in enumerate(images) for b in images[:i])
         print(f"tile {tile + 1}: {changed:.4f} of its pixels change over {played:.1f} s")
-        assert changed > 0.005, f"tile {tile + 1} does not move on screen ({changed:.4f})"
+        # A still tile changes no pixel. The test's fourth item is the cat's highest harmonic
+        # (k = 24) alone, a ripple: ~0.3% of a 350×260 tile, its silhouette's edge moving.
+        assert changed > 0.001, f"tile {tile + 1} does not move on screen ({changed:.4f})"
     assert not page.errors, page.errors
     page.close()
 
@@ -435,6 +450,8 @@ def test_the_frame_rate_is_honest_and_fewer_tiles_are_offered_when_slow(browser,
         pytest.skip(f"this machine draws 16 tiles at {counted:.0f} fps: nothing to offer")
     page.wait_for_selector("#notice", state="visible", timeout=15_000)
     assert "frames per second with 16 tiles" in page.inner_text("#notice-text")
+    page.wait_for_timeout(500)
+    assert_no_band_cut_out(page)
     offer = int(page.inner_text("#notice-fewer").split()[1])
     assert 2 <= offer < 16
     page.click("#notice-fewer")
