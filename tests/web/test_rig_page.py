@@ -143,6 +143,17 @@ def test_a_pose_edit_changes_the_frequencies_shown_and_reset_restores_them(page,
     np.testing.assert_allclose(page.evaluate("window.eigendance.rig.info().frequencies"),
                                frequencies, rtol=1e-5)
     assert page.evaluate("window.eigendance.rig.labels()") == before
+    # The hand is a tree: every joint turns. In a loop no joint can turn one side alone: the
+    # menu says so and the sliders are off, the stiffness stays editable.
+    page.evaluate("window.eigendance.rig.pick(1)")
+    assert not page.is_disabled("#rig-turn-x")
+    open_rig(page, rig_ids, "loop8")
+    page.evaluate("window.eigendance.rig.pick(2)")
+    assert "in a loop" in page.eval_on_selector("#rig-joint",
+                                                 "menu => menu.selectedOptions[0].text")
+    assert "closes a loop" in page.get_attribute("#rig-joint", "title")
+    assert page.is_disabled("#rig-turn-x") and page.is_disabled("#rig-turn-z")
+    assert not page.is_disabled("#rig-stiffness")
 
 
 def test_linear_blend_skinning_differs_only_to_second_order(page, rig_ids):

@@ -98,6 +98,9 @@ def test_the_library_lists_built_in_rigs_and_rig_files(client):
     assert description["ready"] and description["modes"] == 13 and description["bodies"] == 16
     assert len(description["joint_list"]) == 16 and description["joint_list"][0]["type"] == \
         "revolute"
+    assert all(joint["closes_loop"] for joint in description["joint_list"])  # a ring
+    hand = client.get(f"/api/rigs/{rigs['hand']['id']}").json()
+    assert not any(joint["closes_loop"] for joint in hand["joint_list"])  # a tree
     assert description["palette"] == default_palette(
         ModalModel.from_skeleton(sample_rig("loop16"))).to_settings().to_json()
 

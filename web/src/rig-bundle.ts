@@ -24,6 +24,8 @@ export interface JointInfo {
   stiffness: number[];
   /** the default rule's stiffness, one per free row */
   default_stiffness: number[];
+  /** its two bodies stay connected without it: it cannot turn one side (the pose editor) */
+  closes_loop: boolean;
 }
 
 export interface Rig {

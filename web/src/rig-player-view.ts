@@ -145,7 +145,8 @@ export class RigPlayerView {
     const menu = $<HTMLSelectElement>("rig-joint");
     menu.innerHTML = "";
     menu.add(new Option("— pick a joint —", "-1"));
-    rig.jointList.forEach((joint, j) => menu.add(new Option(`${joint.name} (${joint.type})`, String(j))));
+    rig.jointList.forEach((joint, j) => menu.add(new Option(`${joint.name} (${joint.type}`
+      + `${joint.closes_loop ? ", in a loop" : ""})`, String(j))));
     this.pick(this.joint < rig.j ? this.joint : -1, !fresh);
     this.buildPalette();
     this.update();
@@ -164,10 +165,14 @@ export class RigPlayerView {
     (["x", "y", "z"] as const).forEach((axis, a) => {
       const input = $<HTMLInputElement>(`rig-turn-${axis}`);
       input.value = String(this.turned[a]);
-      input.disabled = joint < 0;
+      // A joint closing a loop cannot turn one side alone: the server would refuse it.
+      input.disabled = joint < 0 || rig.jointList[joint].closes_loop;
       $(`rig-turn-${axis}-out`).textContent = `${this.turned[a]}°`;
     });
     const info = joint >= 0 ? rig.jointList[joint] : null;
+    $("rig-joint").title = info?.closes_loop ? `${info.name} closes a loop: it cannot turn one `
+      + "side alone (its stiffness can change)" : "the joint to turn (or click it in the view "
+      + "with bones on)";
     const field = $<HTMLInputElement>("rig-stiffness");
     field.disabled = !info;
     field.value = info?.stiffness.length ? String(+info.stiffness[0].toPrecision(4)) : "";

@@ -147,9 +147,10 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
                         "free_rows": list(joint.free_rows),
                         "constrained_rows": list(CONSTRAINED_ROWS[joint.type]),
                         "stiffness": joint.stiffness.tolist(),
-                        "default_stiffness": default.tolist()}
-                       for joint, default in zip(skeleton.joints,
-                                                 skeleton.automatic_stiffnesses(), strict=True)],
+                        "default_stiffness": default.tolist(),
+                        "closes_loop": skeleton.joint_sides(index) is None}
+                       for index, (joint, default) in enumerate(zip(
+                           skeleton.joints, skeleton.automatic_stiffnesses(), strict=True))],
         "palette": None if palette is None else palette.to_settings().to_json(),
         "offset": 0.0,
     }
