@@ -156,11 +156,18 @@ def test_a_pose_edit_changes_the_frequencies_shown_and_reset_restores_them(page,
     assert not page.is_disabled("#rig-stiffness")
 
 
-def test_linear_blend_skinning_differs_only_to_second_order(page, rig_ids):
+def test_linear_blend_skinning_differs_only_to_second_order(page, rig_ids, song):
     """three.js's SkinnedMesh on the same body poses: close to modal skinning, and the gap
     shrinks like the square of the amplitude (halving it quarters the gap)."""
     info = open_rig(page, rig_ids, "loop8")
     page.evaluate("window.eigendance.rig.setMusic(false)")
+    # Music off saves as gain 0, offset 1 (φ ≡ 1): Python plays the page's motion.
+    saved = page.evaluate("window.eigendance.rig.playerMapping()")
+    assert saved["gain"] == 0 and saved["offset"] == 1
+    model = Rig.from_skeleton(sample_rig("loop8"), dtype=np.float64).model
+    expected = rig_coefficients(model, song, Mapping.from_json(saved), TIMES)
+    shown = [page.evaluate(f"window.eigendance.rig.coefficients('player', {t})") for t in TIMES]
+    np.testing.assert_allclose(shown, expected, atol=1e-5 * np.abs(expected).max())
     gaps = []
     for _ in range(2):
         gap = 0.0

@@ -114,11 +114,12 @@ export class RigPlayerView {
     });
   }
 
-  /** The player's mapping as *save mapping* writes it: version 2 with its palette and offset. */
+  /** The player's mapping as *save mapping* writes it: version 2 with its palette and offset.
+   * Music off (φ ≡ 1) is saved as gain 0 and offset 1: the same motion in every player. */
   saved(): Mapping | null {
     if (!this.mapping || !this.palette) return null;
-    return { ...this.mapping, version: 2, gain: this.mapping.gain ?? 1,
-      smoothing: this.mapping.smoothing ?? 0, offset: this.mapping.offset ?? 0,
+    return { ...this.mapping, version: 2, gain: this.music ? this.mapping.gain ?? 1 : 0,
+      smoothing: this.mapping.smoothing ?? 0, offset: this.music ? this.mapping.offset ?? 0 : 1,
       modes: { ...this.palette } };
   }
 
