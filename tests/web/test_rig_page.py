@@ -107,6 +107,7 @@ def test_every_mode_tile_moves_and_shows_its_frequency(page, rig_ids):
     assert last["tiles"] == len(last["modes"])
     page.evaluate("window.eigendance.rig.page(0)")
     # Tiles as large as on a laptop screen: a finger's mode moves a few pixels of a small tile.
+    viewport = page.viewport_size
     page.set_viewport_size({"width": 1280, "height": 800})
     frames = []
     times = (0.2, 0.45, 0.7, 0.95)
@@ -116,7 +117,7 @@ def test_every_mode_tile_moves_and_shows_its_frequency(page, rig_ids):
             frames.append([np.array(p, dtype=float)
                            for p in page.evaluate("window.eigendance.rig.tilePixels(2)")])
     finally:
-        page.set_viewport_size({"width": 760, "height": 520})
+        page.set_viewport_size(viewport)
     assert len(frames[0]) == 16
     for tile in range(16):
         changed = max(np.mean(np.abs(frames[a][tile] - frames[b][tile]) > 24)

@@ -163,17 +163,21 @@ export class RigPlayerView {
     if (joint !== this.joint || !keepTurns) this.turned = [0, 0, 0];
     this.joint = joint;
     $<HTMLSelectElement>("rig-joint").value = String(joint);
+    const info = joint >= 0 ? rig.jointList[joint] : null;
     (["x", "y", "z"] as const).forEach((axis, a) => {
       const input = $<HTMLInputElement>(`rig-turn-${axis}`);
       input.value = String(this.turned[a]);
       // A joint closing a loop cannot turn one side alone: the server would refuse it.
-      input.disabled = joint < 0 || rig.jointList[joint].closes_loop;
+      input.disabled = !info || info.closes_loop;
       $(`rig-turn-${axis}-out`).textContent = `${this.turned[a]}°`;
     });
-    const info = joint >= 0 ? rig.jointList[joint] : null;
-    $("rig-joint").title = info?.closes_loop ? `${info.name} closes a loop: it cannot turn one `
-      + "side alone (its stiffness can change)" : "the joint to turn (or click it in the view "
-      + "with bones on)";
+    // Without a title of its own the menu shows its label's.
+    if (info?.closes_loop) {
+      $("rig-joint").title = `${info.name} closes a loop: it cannot turn one side alone (its `
+        + "stiffness can change)";
+    } else {
+      $("rig-joint").removeAttribute("title");
+    }
     const field = $<HTMLInputElement>("rig-stiffness");
     field.disabled = !info;
     field.value = info?.stiffness.length ? String(+info.stiffness[0].toPrecision(4)) : "";
