@@ -1,0 +1,126 @@
+"""What the commands share: argument types that check every number, the output and progress
+options, the inputs read from a file or computed (docs/design.md#cli)."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from tqdm import tqdm
+
+from eigendance.errors import InputError
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.modal.sample_rigs import SAMPLE_RIGS
+from eigendance.music.gallery import (
+    MAX_GALLERY,
+    MIN_GALLERY,
+    check_gallery_size,
+)
+from eigendance.music.spectrogram import Spectrogram
+
+RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
+            + ", ".join(SAMPLE_RIGS))
+
+
+def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
+           above: bool = False):
+    """An argparse type for finite numbers in [low, high] (or (low, high] with `above`)."""
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected {'an integer' if integer else 'a number'}, got {text!r}") from None
+        if not math.isfinite(value) or value > high or value < low or (above and value <= low):
+            bound = f"> {low:g}" if above else f"≥ {low:g}"
+            limit = "" if math.isinf(high) else f" and ≤ {high:g}"
+            raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
+                                             f"{text!r}")
+        return value
+    parse.bounds = (low, high)  # for the tests that try every flag with absurd values
+    return parse
+
+
+HARMONICS = number(1, 20000, integer=True)
+FPS = number(0, 1000, above=True)
+PORT = number(0, 65535, integer=True)
+
+
+def add_output(parser, what: str) -> None:
+    """-o/--output (`what` it writes) and --force, as every command that writes has them."""
+    parser.add_argument("-o", "--output", required=True, help=what)
+    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+
+
+def progress_bar(total: int | None, description: str, unit: str = "pair"):
+    """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
+
+    total None: the count is not known in advance (the bar shows a running count).
+    """
+    bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
+               disable=not sys.stderr.isatty(), leave=False)
+
+    def update(done):
+        bar.update(max(0, done - bar.n))
+
+    return bar, update
+
+
+def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
+    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache)."""
+    if path.lower().endswith(".npz"):
+        return HarmonicBasis.load(path)
+    return HarmonicBasis.from_mesh(path, k, progress=progress)
+
+
+def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:
+    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands."""
+    if path.lower().endswith(".npz"):
+        return Spectrogram.load(path)
+    return Spectrogram.from_file(path, bands=bands)
+
+
+def gallery_size(text: str) -> int:
+    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = text
+    try:
+        return check_gallery_size(value)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+gallery_size.bounds = (MIN_GALLERY, MAX_GALLERY)  # for the tests of every numeric flag
+
+
+STIFFNESS = number(0, 1e12, above=True)
+
+
+def add_palette_options(parser) -> None:
+    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`."""
+    group = parser.add_argument_group("rigs: the palette (default: the mapping's, else the "
+                                      "default rule that makes any rig dance)")
+    group.add_argument("--modes", help="mode indices that move, e.g. 0,2,5-8")
+    group.add_argument("--amplitude", type=number(0, math.pi), default=None,
+                       help="largest body rotation of each chosen mode at full drive, radians")
+    group.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
+                       help="multiply the natural frequencies")
+    group.add_argument("--offset", type=number(-1e6, 1e6), default=None,
+                       help="the filter's offset b: 0 keeps silence still, 1 sways idly "
+                            "(default: the mapping's, else 0)")
+    group.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
+                       help="modal (default, first-order, as live) or lbs (exact body "
+                            "transforms, linear blend: what a glTF skin plays exactly)")
+
+
+def add_rig_options(parser) -> None:
+    """The rig and its joints' stiffness, shared by `modes` and `animate-rig`."""
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
+                        help="multiply every joint stiffness (default 1; frequencies scale "
+                             "with its square root)")
+    parser.add_argument("--joints", metavar="JSON",
+                        help="per-joint stiffness: a JSON object {joint name: number, list (one "
+                             "per free row) or \"auto\"} applied before --stiffness")
