@@ -21,9 +21,10 @@ from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.laplacian import laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.modal.bodies import JOINT_TYPES
 from eigendance.modal.model import ModalModel
 from eigendance.modal.sample_rigs import load_rig
-from eigendance.modal.skeleton import JOINT_TYPES, Skeleton
+from eigendance.modal.skeleton import Skeleton
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 

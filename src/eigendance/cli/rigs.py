@@ -31,7 +31,7 @@ from eigendance.modal.motion import (
 )
 from eigendance.modal.palette import default_palette
 from eigendance.modal.sample_rigs import load_rig
-from eigendance.modal.skeleton import read_joint_stiffness
+from eigendance.modal.skeleton_file import read_joint_stiffness
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import frame_times
 

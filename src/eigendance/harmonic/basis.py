@@ -50,7 +50,7 @@ class HarmonicBasis:
     >>> sphere = trimesh.creation.icosphere(2)
     >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices, sphere.faces), k=9,
     ...                                 cache=False)
-    >>> np.round(basis.eigenvalues[:4], 1).tolist()   # a unit sphere: l(l+1) = 0, 2, 2, 2
+    >>> (np.round(basis.eigenvalues[:4], 1) + 0.0).tolist()   # unit sphere: l(l+1) = 0, 2, 2, 2
     [0.0, 2.0, 2.0, 2.0]
     >>> bool(np.allclose(basis.filter_positions(np.ones(9)), basis.vertices))   # φ ≡ 1
     True

@@ -16,13 +16,9 @@ import pygltflib
 
 from eigendance.errors import InputError, one_line
 from eigendance.geometry import weld
-from eigendance.modal.skeleton import (
-    DEFAULT_JOINT_FREQUENCY,
-    Body,
-    Joint,
-    Skeleton,
-    set_automatic_stiffness,
-)
+from eigendance.modal.bodies import Body, Joint
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.stiffness import DEFAULT_JOINT_FREQUENCY, set_automatic_stiffness
 
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
                    5125: np.uint32, 5126: np.float32}

@@ -17,8 +17,10 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import check_readable, suffix_of
+from eigendance.modal.bodies import Body, Joint
 from eigendance.modal.gltf_skin import skeleton_from_gltf
-from eigendance.modal.skeleton import Body, Joint, Skeleton, set_automatic_stiffness
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.stiffness import set_automatic_stiffness
 
 SAMPLE_RIGS = ("loop4", "loop8", "loop16", "chain", "hand")
 HAND_FILE = "generic-hand_left.glb"  # in the package's data folder

@@ -21,15 +21,9 @@ import numpy as np
 import scipy.sparse
 
 from eigendance.errors import InputError
+from eigendance.geometry import cross
 from eigendance.modal.model import ModalModel
 from eigendance.modal.rotations import rotate_by_vectors
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """a × b along the last axis, broadcast (faster than np.cross on large stacks)."""
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
 def _checked(vertices, weights, n_bodies):
@@ -75,14 +69,14 @@ class ModalSkin:
         twists = model.modes.reshape(nb, 6, nm)
         omega = np.einsum("bij,bjk->bki", model.body_rotations, twists[:, :3])  # (nb, nm, 3)
         linear = np.einsum("bij,bjk->bki", model.body_rotations, twists[:, 3:])
-        offset = linear - _cross(omega, model.body_centers[:, None, :])
+        offset = linear - cross(omega, model.body_centers[:, None, :])
         if not hasattr(weights, "tocsr"):
             weights = weights.astype(dtype)
         # The per-body arrays are small: cast them first, so the large ones are made in dtype.
         omega, offset = omega.astype(dtype), offset.astype(dtype)
         rho = np.asarray(weights @ omega.reshape(nb, nm * 3)).reshape(n, nm, 3).astype(
             dtype, copy=False)
-        tau = _cross(rho, self.vertices.astype(dtype)[:, None, :])
+        tau = cross(rho, self.vertices.astype(dtype)[:, None, :])
         tau += np.asarray(weights @ offset.reshape(nb, nm * 3)).reshape(n, nm, 3)
         self.displacement = np.ascontiguousarray(tau.transpose(1, 0, 2)).reshape(nm, 3 * n)
         self.rotation = np.ascontiguousarray(rho.transpose(1, 0, 2)).reshape(nm, 3 * n)

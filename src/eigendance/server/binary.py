@@ -22,8 +22,8 @@ import struct
 
 import numpy as np
 
+from eigendance.modal.bodies import CONSTRAINED_ROWS
 from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
-from eigendance.modal.skeleton import CONSTRAINED_ROWS
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2")}
