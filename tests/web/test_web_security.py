@@ -21,10 +21,14 @@ import trimesh
 from starlette.testclient import TestClient
 from web_helpers import free_port, write_icosphere, write_song
 
-import eigendance.server.app as app_module
-from eigendance.server.app import JSON_LIMIT, create_app
+import eigendance.server.requests as requests_module
+import eigendance.server.rig_routes as rig_routes_module
+import eigendance.server.routes as routes_module
+from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
-from eigendance.server.library import MAX_HARMONICS, Library, MeshItem
+from eigendance.server.items import MeshItem
+from eigendance.server.library import Library
+from eigendance.server.requests import JSON_LIMIT, MAX_HARMONICS
 from eigendance.server.serve import (
     FOLDER_PREFIX,
     LOCK_NAME,
@@ -440,9 +444,10 @@ def test_heavy_work_never_runs_on_the_event_loop(client, library, files, monkeyp
             return function(*args, **kwargs)
         return wrapped
 
-    for name in ("breed", "initial_gallery", "rig_gallery", "parse_json", "rig_meta",
-                 "json_answer"):
-        monkeypatch.setattr(app_module, name, off_the_loop(name, getattr(app_module, name)))
+    for module, name in ((routes_module, "breed"), (routes_module, "initial_gallery"),
+                         (rig_routes_module, "rig_gallery"), (requests_module, "parse_json"),
+                         (rig_routes_module, "rig_meta"), (requests_module, "json_answer")):
+        monkeypatch.setattr(module, name, off_the_loop(name, getattr(module, name)))
     for name in ("add_upload", "add_mapping", "half_bundle", "ready_rig", "edit_rig"):
         monkeypatch.setattr(library, name, off_the_loop(name, getattr(library, name)))
     data = client.get("/api/library").json()

@@ -17,6 +17,9 @@ from collections import OrderedDict
 
 import numpy as np
 
+from eigendance.errors import InputError
+from eigendance.limits import size_text
+
 DEFAULT_BUDGET = 4 << 30  # bytes
 
 
@@ -107,3 +110,25 @@ class Budget:
     def release(self, key: str) -> None:
         with self.lock:
             self.sizes.pop(key, None)
+
+
+def refusal(size: int, limit: int, what: str) -> InputError:
+    """Why an item of `size` bytes cannot be charged: more than the whole budget (413), or more
+    than the bases being computed leave free (409: wait for them, or remove items).
+
+    Parameters
+    ----------
+    size : the item's bytes.
+    limit : the budget, bytes.
+    what : the item in words ("cat.obj: a basis of 150 harmonics of 7949 vertices").
+
+    Returns
+    -------
+    InputError to raise.
+    """
+    if size > limit:
+        return InputError(f"{what} would take {size_text(size)} of memory, more than the "
+                          f"library's budget of {size_text(limit)}", status=413)
+    return InputError(f"{what} would take {size_text(size)} of memory; the library's budget "
+                      f"of {size_text(limit)} is held by bases being computed (wait for them "
+                      "or remove some)", status=409)

@@ -1,0 +1,113 @@
+"""The rig routes: a rig's description, bundle and skeleton, its edits (stiffness, pose, reset)
+and its gallery of mode mappings (docs/web.md#rig-api).
+"""
+
+from __future__ import annotations
+
+from starlette.exceptions import HTTPException
+from starlette.requests import Request
+from starlette.responses import (
+    Response,
+)
+
+from eigendance.modal.motion import default_mapping
+from eigendance.modal.rig import rig_gallery
+from eigendance.music.gallery import (
+    DEFAULT_GALLERY,
+)
+from eigendance.server.binary import rig_meta
+from eigendance.server.lookup import item_of, library_of, ready_rig, rig_of, song_of
+from eigendance.server.requests import (
+    answer,
+    gallery_size,
+    json_body,
+)
+from eigendance.server.workers import in_worker
+
+
+def bundle_response(bundle: bytes) -> Response:
+    return Response(bundle, media_type="application/octet-stream",
+                    headers={"Cache-Control": "no-cache"})
+
+
+async def get_rig(request: Request):
+    """The rig's description: the rig bundle's `meta` and the item's state."""
+    item = await ready_rig(request)
+    return await answer(lambda: {**item.as_json(), **rig_meta(item.rig, item.name,
+                                                              item.revision)})
+
+
+async def get_rig_bundle(request: Request):
+    return bundle_response((await ready_rig(request)).bundle)
+
+
+async def get_rig_skeleton(request: Request):
+    """The current skeleton as a skeleton JSON document (the edits included)."""
+    item = await ready_rig(request)
+    return await answer(item.rig.skeleton.to_dict)
+
+
+async def rig_stiffness(request: Request):
+    """{joints: {name: number | [per free row] | "auto"}, scale?} → the new rig bundle."""
+    rig_of(request)
+    body = await json_body(request)
+    if not isinstance(body, dict) or not isinstance(body.get("joints", {}), dict):
+        raise HTTPException(400, "expected a JSON object {joints: {joint name: stiffness}, "
+                                 "scale}")
+    scale = body.get("scale", 1.0)
+    if isinstance(scale, bool) or not isinstance(scale, int | float):
+        raise HTTPException(400, "scale must be a number ≥ 0")
+    item = await ready_rig(request)
+    values = body.get("joints", {})
+    bundle = await in_worker(library_of(request).edit_rig, item,
+                                     lambda skeleton: skeleton.with_stiffness(values, scale))
+    return bundle_response(bundle)
+
+
+async def rig_pose(request: Request):
+    """{joint: name or index, rotation: [3 numbers, radians]} → the new rig bundle."""
+    rig_of(request)
+    body = await json_body(request)
+    if not isinstance(body, dict) or "joint" not in body or \
+            not isinstance(body.get("rotation"), list):
+        raise HTTPException(400, "expected a JSON object {joint, rotation: [x, y, z] radians}")
+    joint, rotation = body["joint"], body["rotation"]
+    if isinstance(joint, bool) or not isinstance(joint, str | int):
+        raise HTTPException(400, "joint must be a joint name or index")
+    if len(rotation) != 3 or any(isinstance(v, bool) or not isinstance(v, int | float)
+                                 for v in rotation):
+        raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
+    item = await ready_rig(request)
+    bundle = await in_worker(library_of(request).edit_rig, item,
+                                     lambda skeleton: skeleton.rotate_joint(joint, rotation))
+    return bundle_response(bundle)
+
+
+async def rig_reset(request: Request):
+    """The rig as loaded again (pose and stiffness) → its bundle."""
+    item = await ready_rig(request)
+    return bundle_response(await in_worker(library_of(request).reset_rig, item))
+
+
+async def rig_gallery_route(request: Request):
+    """The initial gallery of mode mappings: {rig, song, size} → {mappings, default}."""
+    body = await json_body(request)
+    if not isinstance(body, dict):
+        raise HTTPException(400, "expected a JSON object {rig, song, size}")
+    library = library_of(request)
+    item = item_of(request, "rig", body.get("rig"))
+    song = song_of(request, str(body.get("song")))
+    size = gallery_size(body.get("size", DEFAULT_GALLERY))
+    await in_worker(library.ready_rig, item)
+    rig = item.rig
+    if rig.palette is None:
+        raise HTTPException(409, f"{item.name}: the rig has no vibration mode; nothing to "
+                                 "dance")
+
+    def make():
+        dancer = rig.dancer(band_edges=song.spectrogram.band_edges)
+        items = rig_gallery(dancer, song.spectrogram, size)
+        default = default_mapping(song.spectrogram, len(rig.palette.selected))
+        return {"mappings": [m.to_json() for m in items], "default": default.to_json()}
+
+    return await answer(make)
