@@ -14,6 +14,7 @@ from eigendance.cli import main
 from eigendance.errors import EigendanceError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.breeding import Mulberry32, breed, cross
+from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.demo_music import demo_track
 from eigendance.music.gallery import (
     MAX_GALLERY,
@@ -22,8 +23,6 @@ from eigendance.music.gallery import (
     MOTION_HIGHEST,
     MOTION_LOWEST,
     drivable_harmonics,
-    gallery_correlations,
-    gallery_motion,
     initial_gallery,
     motion_content,
     strongest_item,

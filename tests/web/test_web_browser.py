@@ -22,7 +22,7 @@ from eigendance.cli import main
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import load_animation, positions_at
 from eigendance.music.breeding import breed
-from eigendance.music.gallery import gallery_motion
+from eigendance.music.dancer import gallery_motion
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 

@@ -25,11 +25,10 @@ from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
 from eigendance.music.breeding import breed
+from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
     check_gallery_size,
-    gallery_correlations,
-    gallery_motion,
     initial_gallery,
     strongest_item,
 )

@@ -12,11 +12,7 @@ from tqdm import tqdm
 from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
-from eigendance.music.gallery import (
-    MAX_GALLERY,
-    MIN_GALLERY,
-    check_gallery_size,
-)
+from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
 from eigendance.music.spectrogram import Spectrogram
 
 RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "

@@ -12,9 +12,7 @@ from starlette.responses import (
 
 from eigendance.modal.motion import default_mapping
 from eigendance.modal.rig import rig_gallery
-from eigendance.music.gallery import (
-    DEFAULT_GALLERY,
-)
+from eigendance.music.gallery import DEFAULT_GALLERY
 from eigendance.server.binary import rig_meta
 from eigendance.server.lookup import item_of, library_of, ready_rig, rig_of, song_of
 from eigendance.server.requests import (

@@ -22,12 +22,7 @@ from starlette.responses import (
 
 from eigendance.files import kind_of, suffix_of
 from eigendance.music.breeding import breed
-from eigendance.music.gallery import (
-    DEFAULT_GALLERY,
-    MAX_GALLERY,
-    MIN_GALLERY,
-    initial_gallery,
-)
+from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
 from eigendance.music.mapping import Mapping
 from eigendance.server.items import RigItem
 from eigendance.server.library import Library
