@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from eigendance.export.dance import rig_dance
-from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import band_mapping, rig_coefficients, rig_mapping
+from eigendance.modal.motion import band_mapping
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from helpers import fixture_path
 
@@ -26,13 +26,11 @@ def required(what: str, present: bool, how: str) -> None:
 
 
 def rig(name: str, skinning: str, song, mode_count: int = 4):
-    skeleton = load_rig(name)
-    model = ModalModel.from_skeleton(skeleton)
-    modes = np.arange(min(mode_count, model.n_modes))
-    mapping = rig_mapping(model, song, band_mapping(song.bands, len(modes)), modes, 0.3, 1.0)
-    return rig_dance(skeleton, model, song.duration,
-                     lambda times: rig_coefficients(model, song, mapping, times),
-                     skinning, SONG, f"{skinning}-rig")
+    dancer = Rig(load_rig(name), np.float64)
+    modes = np.arange(min(mode_count, dancer.model.n_modes))
+    mapping = dancer.mapping(song, band_mapping(song.bands, len(modes)), selected=modes,
+                             amplitude=0.3, time_scale=1.0)
+    return rig_dance(dancer, song, mapping, skinning, SONG, f"{skinning}-rig")
 
 
 def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions"):

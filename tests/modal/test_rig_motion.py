@@ -19,7 +19,8 @@ from eigendance.modal.palette import (
     mode_reach,
     resolve_palette,
 )
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.music.breeding import breed
 from eigendance.music.dancer import full_scale_motion

@@ -15,7 +15,8 @@ from web_helpers import write_song
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, body_transforms, rig_coefficients
 from eigendance.modal.palette import default_palette
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, open_chain, sample_rig
 from eigendance.modal.skeleton import Skeleton

@@ -7,30 +7,30 @@ import argparse
 import os
 import time
 
+import numpy as np
+
 from eigendance.cli.options import (
     HARMONICS,
     RIG_HELP,
     STIFFNESS,
     add_output,
     add_palette_options,
+    add_window_options,
     basis_from,
     number,
     progress_bar,
+    say_note,
     spectrogram_from,
 )
 from eigendance.errors import InputError
-from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.dance import Dance, HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
 from eigendance.export.files import companion_paths, export_dance, format_of
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.files import refuse_overwrite, suffix_of
-from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import (
-    parse_modes,
-    rig_coefficients,
-    rig_mapping,
-)
+from eigendance.modal.motion import parse_modes
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
@@ -60,6 +60,7 @@ def add_dance_inputs(parser, audio_help: str) -> None:
     add_palette_options(parser)
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness of a rig (default 1)")
+    add_window_options(parser)
 
 
 def is_rig(args) -> bool:
@@ -71,24 +72,41 @@ def song_of(args) -> str | None:
     return None if args.audio.lower().endswith(".npz") else args.audio
 
 
-def dance_from(args, mapping: Mapping | None):
-    """The dance `export` and `render` write: a mesh by its harmonics or a rig by its modes."""
+def dance_from(args, mapping: Mapping | None) -> Dance:
+    """The dance `export` and `render` write: a mesh by its harmonics or a rig by its modes,
+    the part of the song --start and --duration ask for (`Dance.window`).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    mapping : the --mapping, or None.
+
+    Returns
+    -------
+    HarmonicDance or RigDance, windowed; its note (a clamped window) printed on stderr.
+    """
     name = os.path.splitext(os.path.basename(args.output))[0]
     if is_rig(args):
         skeleton = load_rig(args.model)
-        model = ModalModel.from_skeleton(skeleton, stiffness=args.stiffness)
-        if model.n_modes == 0:
+        if args.stiffness != 1.0:
+            skeleton = skeleton.with_stiffness({}, scale=args.stiffness)
+        rig = Rig(skeleton, np.float64)
+        if rig.model.n_modes == 0:
             raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
                              "joint); nothing to move")
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
-        mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
-                              args.amplitude, args.time_scale, args.offset)
-        return rig_dance(skeleton, model, spectrogram.duration,
-                         lambda times: rig_coefficients(model, spectrogram, mapping, times),
-                         args.skinning, song_of(args), name)
-    basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
-    mapping = mapping or strongest_item(basis, spectrogram)
-    return HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
+        mapping = rig.mapping(spectrogram, mapping,
+                              selected=parse_modes(args.modes, rig.model.n_modes),
+                              amplitude=args.amplitude, time_scale=args.time_scale,
+                              offset=args.offset)
+        dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name)
+    else:
+        basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
+        mapping = mapping or strongest_item(basis, spectrogram)
+        dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
+    dance = dance.window(args.start, args.duration)
+    say_note(args.output, dance.note)
+    return dance
 
 
 def harmonic_inputs(args, bands: int):
@@ -111,9 +129,10 @@ def add_export(parser):
 
 def run_export(args) -> None:
     format = format_of(args.output, args.format)
-    start = time.perf_counter()
+    began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    for path in companion_paths(args.output, format, song_of(args)).values():
+    clipped = args.start > 0 or args.duration is not None
+    for path in companion_paths(args.output, format, song_of(args), clipped).values():
         if path is not None:  # before any work: the export would stop at the end
             refuse_overwrite(path, args.force)
     dance = dance_from(args, mapping)
@@ -127,7 +146,7 @@ def run_export(args) -> None:
     compared = "" if format == "pc2" else \
         f" (as a point cache: {cache / 1e6:.2f} MB, {cache / size:.1f}× the size)"
     print(f"{args.output}: {report['frames']} frames of {dance.n} vertices at {args.fps:g} "
-          f"fps, {size / 1e6:.2f} MB{compared}, {time.perf_counter() - start:.1f} s")
+          f"fps, {size / 1e6:.2f} MB{compared}, {time.perf_counter() - began:.1f} s")
     if report["skinning_difference"] is not None:
         print(f"{args.output}: the skin plays linear blend skinning; modal skinning differs "
               f"by at most {report['skinning_difference']:.4g} "
@@ -166,23 +185,10 @@ def run_render(args) -> None:
     if args.breed and args.gallery is None:
         raise InputError("breeding parents were given without a gallery size",
                          remedy={"gallery": DEFAULT_GALLERY})
-    start = time.perf_counter()
+    began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
     if args.gallery is not None:
-        size = check_gallery_size(args.gallery)
-        if is_rig(args):
-            raise InputError(f"{args.model}: a gallery breeds mappings of a mesh's harmonics; "
-                             "render a rig on its own")
-        if mapping is not None:
-            raise InputError(f"{args.mapping}: a gallery makes its own mappings; breed from it "
-                             "instead", remedy={"breed": args.mapping})
-        items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
-            if args.breed else None
-        basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
-        items = items or initial_gallery(basis, spectrogram, size)
-        name = os.path.splitext(os.path.basename(args.output))[0]
-        dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name) for item in items]
-        looks = [Look(item.shading, item.deformed_normal_weight) for item in items]
+        dances, looks = gallery_dances(args, mapping)
     else:
         dances = [dance_from(args, mapping)]
         looks = [Look(mapping.shading, mapping.deformed_normal_weight) if mapping else Look()]
@@ -193,8 +199,39 @@ def run_render(args) -> None:
             update(done)
         report = render_video(args.output, dances, looks, args.audio, args.fps, args.size,
                               args.force, step)
-    seconds = time.perf_counter() - start
+    seconds = time.perf_counter() - began
     print(f"{args.output}: {report['frames']} frames, {args.size[0]}x{args.size[1]} at "
           f"{args.fps:g} fps, {report['duration']:.2f} s of video with the song, "
           f"{len(dances)} {'tiles' if len(dances) > 1 else 'dancer'}, {seconds:.1f} s "
           f"({report['duration'] / seconds:.2f}× real time)")
+
+
+def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
+    """The tiles of `render --gallery N`: the initial gallery, or N children of the --breed
+    parents, each windowed as --start and --duration ask.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    mapping : the --mapping (refused: a gallery makes its own), or None.
+
+    Returns
+    -------
+    (dances, looks): one HarmonicDance and one `Look` per tile.
+    """
+    size = check_gallery_size(args.gallery)
+    if is_rig(args):
+        raise InputError(f"{args.model}: a gallery breeds mappings of a mesh's harmonics; "
+                         "render a rig on its own")
+    if mapping is not None:
+        raise InputError(f"{args.mapping}: a gallery makes its own mappings; breed from it "
+                         "instead", remedy={"breed": args.mapping})
+    items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
+        if args.breed else None
+    basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
+    items = items or initial_gallery(basis, spectrogram, size)
+    name = os.path.splitext(os.path.basename(args.output))[0]
+    dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(
+        args.start, args.duration) for item in items]
+    say_note(args.output, dances[0].note)
+    return dances, [Look(item.shading, item.deformed_normal_weight) for item in items]

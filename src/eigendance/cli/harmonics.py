@@ -12,10 +12,12 @@ from eigendance.cli.options import (
     FPS,
     HARMONICS,
     add_output,
+    add_window_options,
     basis_from,
     gallery_size,
     number,
     progress_bar,
+    say_note,
     spectrogram_from,
 )
 from eigendance.files import refuse_overwrite
@@ -34,6 +36,7 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, save_picture
+from eigendance.window import Window
 
 
 def add_basis(parser):
@@ -158,22 +161,25 @@ def add_animate(parser):
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when MESH is a mesh file (default 300)")
+    add_window_options(parser)
     add_output(parser, "animation file to write (.npz)")
 
 
 def run_animate(args) -> None:
     refuse_overwrite(args.output, args.force)
-    start = time.perf_counter()
+    began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
+    spectrogram = spectrogram_from(args.audio, bands=mapping.bands if mapping else 64)
+    window = Window.of(args.start, args.duration, spectrogram.duration, args.audio)
+    say_note(args.output, window.note)
     bar, update = progress_bar(args.k, "eigenpairs")
     with bar:
         basis = basis_from(args.mesh, args.k, progress=update)
-    spectrogram = spectrogram_from(args.audio, bands=mapping.bands if mapping else 64)
     if mapping is None:
         mapping = strongest_item(basis, spectrogram)
     frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
-                                progress=update)
+                                progress=update, window=window)
     print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
-          f"{time.perf_counter() - start:.1f} s")
+          f"{time.perf_counter() - began:.1f} s")

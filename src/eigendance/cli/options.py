@@ -9,6 +9,7 @@ import sys
 
 from tqdm import tqdm
 
+from eigendance import checks
 from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
@@ -21,20 +22,31 @@ RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
 
 def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
            above: bool = False):
-    """An argparse type for finite numbers in [low, high] (or (low, high] with `above`)."""
+    """An argparse type for finite numbers in [low, high] (or (low, high] with `above`): the
+    text read as a number, then the library's one check of numbers (`checks.number`).
+
+    Parameters
+    ----------
+    low, high : the range.
+    integer : an integer is wanted.
+    above : the value must be greater than `low`.
+
+    Returns
+    -------
+    callable(text) → int or float, raising argparse.ArgumentTypeError (argparse names the
+    flag); `.bounds` is (low, high), for the tests that try every flag with absurd values.
+    """
     def parse(text: str):
         try:
             value = int(text) if integer else float(text)
         except ValueError:
             raise argparse.ArgumentTypeError(
                 f"expected {'an integer' if integer else 'a number'}, got {text!r}") from None
-        if not math.isfinite(value) or value > high or value < low or (above and value <= low):
-            bound = f"> {low:g}" if above else f"≥ {low:g}"
-            limit = "" if math.isinf(high) else f" and ≤ {high:g}"
-            raise argparse.ArgumentTypeError(f"expected a finite number {bound}{limit}, got "
-                                             f"{text!r}")
-        return value
-    parse.bounds = (low, high)  # for the tests that try every flag with absurd values
+        try:
+            return checks.number(value, "the value", low, high, integer, above)
+        except InputError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+    parse.bounds = (low, high)
     return parse
 
 
@@ -120,3 +132,34 @@ def add_rig_options(parser) -> None:
     parser.add_argument("--joints", metavar="JSON",
                         help="per-joint stiffness: a JSON object {joint name: number, list (one "
                              "per free row) or \"auto\"} applied before --stiffness")
+
+
+SECONDS = number(0, 24 * 3600)
+
+
+def add_window_options(parser, duration_help: str = "default: to the song's end") -> None:
+    """--start and --duration: the part of the song a command plays (docs/design.md#window).
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    duration_help : what --duration means without a value.
+    """
+    group = parser.add_argument_group("part of the song (the clip plays from its time 0)")
+    group.add_argument("--start", type=SECONDS, default=0.0,
+                       help="where the clip starts in the song, seconds (default 0)")
+    group.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
+                       help=f"the clip's length, seconds ({duration_help}; a clip past the "
+                            "song's end is cut there, with a note)")
+
+
+def say_note(output: str, note: str | None) -> None:
+    """Print a window's note (what was clamped) on stderr, naming the output.
+
+    Parameters
+    ----------
+    output : the file the command writes.
+    note : the note, or None (nothing printed).
+    """
+    if note:
+        print(f"{output}: note: {note}", file=sys.stderr)

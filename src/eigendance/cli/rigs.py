@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import sys
 import time
 
@@ -13,38 +14,43 @@ from eigendance.cli.options import (
     add_output,
     add_palette_options,
     add_rig_options,
+    add_window_options,
     number,
     progress_bar,
+    say_note,
     spectrogram_from,
 )
 from eigendance.errors import InputError
 from eigendance.files import refuse_overwrite
 from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import (
-    animate_rig,
-    mapping_palette,
-    parse_modes,
-    rig_coefficients,
-    rig_mapping,
-    save_animation,
-)
-from eigendance.modal.palette import default_palette
+from eigendance.modal.motion import parse_modes, save_animation
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.skeleton_file import read_joint_stiffness
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import frame_times
+from eigendance.window import Window
 
 
-def rig_from(args):
-    """The rig of `args.rig` with the stiffness options applied, and its modal model."""
+def rig_from(args) -> Rig:
+    """The rig of `args.rig` with the stiffness options (--joints, --stiffness) applied.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    Rig (float32 modal skin, as the page plays it); the loader's notes go to stderr.
+    """
     skeleton = load_rig(args.rig)
     for note in skeleton.notes:
         print(f"{skeleton.name}: {note}", file=sys.stderr)
     values = read_joint_stiffness(args.joints) if args.joints else {}
     if values or args.stiffness != 1.0:
         skeleton = skeleton.with_stiffness(values, scale=args.stiffness)
-    return skeleton, ModalModel.from_skeleton(skeleton)
+    return Rig(skeleton)
 
 
 def add_modes(parser):
@@ -72,11 +78,12 @@ def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> lis
 def run_modes(args) -> None:
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
-    skeleton, model = rig_from(args)
+    rig = rig_from(args)
+    skeleton, model = rig.skeleton, rig.model
     model.save(args.output)
     print("\n".join(mode_table(model, limit=args.show)))
     if model.n_modes:
-        palette = default_palette(model)
+        palette = rig.palette
         played = model.frequencies[palette.selected] * palette.time_scale
         print(f"default palette: modes {', '.join(str(m) for m in palette.selected)}, time "
               f"scale {palette.time_scale:.3g} (they play at "
@@ -98,8 +105,7 @@ def add_animate_rig(parser):
                                           "calibrated to the song)")
     add_palette_options(parser)
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
-    parser.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
-                        help="seconds (default: the audio's length, or 4 s without audio)")
+    add_window_options(parser, "default: to the audio's end, or 4 s without audio")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
                         help="bands of the audio's spectrogram without a mapping (default 64)")
     add_rig_options(parser)
@@ -113,31 +119,29 @@ def run_animate_rig(args) -> None:
     refuse_overwrite(args.output, args.force)
     if args.save_mapping:
         refuse_overwrite(args.save_mapping, args.force)
-    start = time.perf_counter()
+    began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
-    skeleton, model = rig_from(args)
+    rig = rig_from(args)
+    skeleton, model = rig.skeleton, rig.model
     if model.n_modes == 0:
         raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
                          "nothing to animate")
-    spectrogram, times = None, frame_times(args.duration or 4.0, args.fps)
-    if args.audio:
-        spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands)
-        times = frame_times(args.duration or spectrogram.duration, args.fps)
-    mapping = rig_mapping(model, spectrogram, mapping, parse_modes(args.modes, model.n_modes),
-                          args.amplitude, args.time_scale, args.offset, args.bands)
-    palette = mapping_palette(model, mapping)
-    # Bytes per frame of the arrays animate_rig holds and writes: float32 positions (12 per
-    # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
-    # mode); half again for the intermediates.
-    per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies + 8 * model.n_modes)
-    what = f"{len(times)} frames of {len(skeleton.vertices)} vertices"
-    check_memory(per_frame * len(times), what)
-    check_disk(args.output, per_frame * len(times), what)
-    coefficients = rig_coefficients(model, spectrogram, mapping, times)
+    spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands) \
+        if args.audio else None
+    window = Window.of(args.start, args.duration if args.audio or args.duration else 4.0,
+                       spectrogram.duration if spectrogram is not None else math.inf,
+                       args.audio or "the rig")
+    say_note(args.output, window.note)
+    times = frame_times(window.duration, args.fps)
+    mapping = rig.mapping(spectrogram, mapping, selected=parse_modes(args.modes, model.n_modes),
+                          amplitude=args.amplitude, time_scale=args.time_scale,
+                          offset=args.offset, bands=args.bands)
+    palette = rig.palette_of(mapping)
+    check_rig_animation(rig, len(times), args.output)
+    coefficients = rig.coefficients(spectrogram, mapping, window.start + times)
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
-        arrays = animate_rig(skeleton, model, times, coefficients, palette, args.skinning,
-                             progress=update)
+        arrays = rig.animation(times, coefficients, palette, args.skinning, progress=update)
     save_animation(args.output, arrays)
     if args.save_mapping:
         mapping.save(args.save_mapping)
@@ -147,4 +151,24 @@ def run_animate_rig(args) -> None:
           f"{', '.join(str(m) for m in palette.selected)} playing at "
           f"{', '.join(f'{f:.2f}' for f in scaled)} Hz (time scale "
           f"{palette.time_scale:.3g}), {'music' if spectrogram is not None else 'steady'} "
-          f"drive, {time.perf_counter() - start:.1f} s")
+          f"drive, {time.perf_counter() - began:.1f} s")
+
+
+def check_rig_animation(rig: Rig, frames: int, output: str) -> None:
+    """InputError unless a rig animation of `frames` frames fits the memory and the disk.
+
+    Parameters
+    ----------
+    rig : the rig.
+    frames : how many frames.
+    output : the file to write.
+    """
+    skeleton = rig.skeleton
+    # Bytes per frame of the arrays `Rig.animation` holds and writes: float32 positions (12 per
+    # vertex), body rotations, centres and transforms (≈ 300 per body), coefficients (8 per
+    # mode); half again for the intermediates.
+    per_frame = 1.5 * (12 * len(skeleton.vertices) + 300 * skeleton.n_bodies
+                       + 8 * rig.model.n_modes)
+    what = f"{frames} frames of {len(skeleton.vertices)} vertices"
+    check_memory(per_frame * frames, what)
+    check_disk(output, per_frame * frames, what)

@@ -2,8 +2,13 @@
 (docs/design.md#exports).
 
 `export_dance` samples the dance at t_i = i/fps, i = 0 … ⌊duration·fps⌋, writes the chosen
-format and copies the song beside it (named after the export, the song's suffix kept), all or
-nothing (`output.Outputs`).
+format and puts the song beside it (named after the export, the song's suffix kept), all or
+nothing (`output.Outputs`). The dance may be a window of its song (`Dance.window`,
+docs/design.md#window): the files then start at its time 0, and the song beside them is cut to
+the same part (`export.song`). This is the one call the command line and the server make:
+
+    export_dance(HarmonicDance(basis, spectrogram, mapping, "song.ogg").window(30, 15),
+                 "clip.glb")
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ from eigendance.export.dance import Dance, RigDance, sample_times
 from eigendance.export.gltf import glb_bytes
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
+from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
 
@@ -43,15 +49,33 @@ def format_of(path: str | os.PathLike, format: str | None = None) -> str:
     return format
 
 
-def companion_paths(path: str | os.PathLike, format: str, audio: str | None) -> dict:
-    """The files an export writes: {"main", "mesh" (pc2's rest OBJ), "song"} (None if not)."""
+def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
+                    clipped: bool = False) -> dict:
+    """The files an export writes.
+
+    Parameters
+    ----------
+    path : the main file.
+    format : "glb", "pc2" or "usd".
+    audio : the song's file, or None.
+    clipped : the song is cut to a window (it is written anew, never the song itself).
+
+    Returns
+    -------
+    {"main", "mesh" (pc2's rest OBJ), "song"}: paths, None for a file not written (a whole
+    song already there under that name, from an earlier export, is not written again).
+    """
     path = os.fspath(path)
     stem = os.path.splitext(path)[0]
     song = None
     if audio is not None:
         song = stem + suffix_of(audio)
-        if os.path.abspath(song) == os.path.abspath(audio) or (
-                os.path.isfile(song) and filecmp.cmp(song, audio, shallow=False)):
+        same = os.path.abspath(song) == os.path.abspath(audio)
+        if clipped and same:
+            raise InputError(f"{path}: the clip's song would replace {os.path.basename(audio)} "
+                             "itself; give the export another name")
+        if not clipped and (same or (os.path.isfile(song)
+                                     and filecmp.cmp(song, audio, shallow=False))):
             song = None  # the song is already there under that name (an earlier export's)
     return {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
 
@@ -62,7 +86,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
 
     Parameters
     ----------
-    dance : a `HarmonicDance` or a `RigDance`.
+    dance : a `HarmonicDance` or a `RigDance`, or a window of one (`Dance.window`).
     path : the file to write; its suffix names the format unless `format` does.
     format : "glb", "pc2" or "usd" (None: by suffix).
     fps : samples per second.
@@ -80,7 +104,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     if not (np.isfinite(fps) and 0 < fps <= 1000):
         raise InputError(f"frames per second must be in (0, 1000], got {fps}")
     times = sample_times(dance.duration, fps)
-    paths = companion_paths(path, format, dance.audio)
+    paths = companion_paths(path, format, dance.audio, dance.clipped)
     written = [p for p in (paths["main"], paths["mesh"], paths["song"]) if p is not None]
     song_name = None if dance.audio is None else \
         os.path.basename(os.path.splitext(paths["main"])[0] + suffix_of(dance.audio))
@@ -92,31 +116,41 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
         if progress is not None:
             progress(done, len(times))
 
-    difference = None
     with Outputs(written, force) as outputs:
         main = outputs.temporary(paths["main"])
-        if format == "glb":
-            extras = {"audio": song_name, "fps": fps, "frames": len(times),
-                      "duration": dance.duration, **dance.info}
-            with open(main, "wb") as file:
-                file.write(glb_bytes(dance, times, extras))
-            step(len(times))
-            if isinstance(dance, RigDance) and dance.modal is not None:
-                difference = skinning_difference(dance, times)
-        elif format == "pc2":
-            with open(main, "wb") as file:
-                write_pc2(file, dance, times, step)
+        difference = _write(format, dance, times, fps, main, song_name, step)
+        if format == "pc2":
             with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
                 file.write(obj_text(dance.rest, dance.faces,
                                     f"eigendance: rest mesh of {os.path.basename(path)}"))
-        else:
-            write_usd(main, dance, times, fps, song_name, step)
-        if paths["song"]:
+        if paths["song"] and dance.clipped:
+            cut_song(dance.audio, outputs.temporary(paths["song"]), dance.start, dance.duration)
+        elif paths["song"]:
             outputs.copy(dance.audio, paths["song"])
         size = os.path.getsize(main)
     return {"format": format, "files": written, "frames": len(times), "fps": fps,
             "bytes": size, "point_cache_bytes": pc2_size(dance.n, len(times)),
             "skinning_difference": difference, "diagonal": dance.diagonal}
+
+
+def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: str | None,
+           step) -> float | None:
+    """Write the main file of an export; the skinning difference of a modal-skinned rig's glb
+    (else None)."""
+    if format == "glb":
+        extras = {"audio": song_name, "fps": fps, "frames": len(times),
+                  "duration": dance.duration, "start": dance.start, **dance.info}
+        with open(path, "wb") as file:
+            file.write(glb_bytes(dance, times, extras))
+        step(len(times))
+        if isinstance(dance, RigDance) and dance.skinning == "modal":
+            return skinning_difference(dance, times)
+    elif format == "pc2":
+        with open(path, "wb") as file:
+            write_pc2(file, dance, times, step)
+    else:
+        write_usd(path, dance, times, fps, song_name, step)
+    return None
 
 
 def skinning_difference(dance: RigDance, times) -> float:

@@ -29,6 +29,7 @@ from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs
 from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
+from eigendance.export.song import seek_options
 from eigendance.music.decode import open_audio
 
 MAX_SIDE = 7680  # pixels (8K)
@@ -59,13 +60,28 @@ def check_size(width: int, height: int) -> None:
             raise InputError(f"size {width}x{height}: H.264 in yuv420p needs even sides")
 
 
-def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str) -> list[str]:
-    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4."""
+def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str,
+                   start: float = 0.0, duration: float | None = None) -> list[str]:
+    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4.
+
+    Parameters
+    ----------
+    width, height : pixels.
+    fps : frames per second.
+    audio : the song's file.
+    output : the MP4 to write.
+    start, duration : the part of the song to mux, s (`export.song.seek_options`; None: to
+        the end).
+
+    Returns
+    -------
+    list of the command's arguments.
+    """
     rate = Fraction(fps).limit_denominator(1001)
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-y",
             "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
             "-framerate", f"{rate.numerator}/{rate.denominator}", "-i", "pipe:0",
-            "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
+            *seek_options(start, duration), "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
             "-vf", "vflip", "-c:v", "libx264", "-preset", PRESET, "-crf", str(CRF),
             "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", AUDIO_BITRATE,
             "-map_metadata", "-1", "-fflags", "+bitexact", "-flags:v", "+bitexact",
@@ -196,7 +212,8 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     Parameters
     ----------
     path : the .mp4 to write (atomically; never overwritten unless `force`).
-    dances : one dance, or several of the same mesh drawn as the page's gallery grid.
+    dances : one dance, or several of the same mesh drawn as the page's gallery grid; windows
+        of their song (`Dance.window`, the same for all) cut the song to the same part.
     looks : one `Look` per dance.
     audio : the song's file (any format ffmpeg reads), muxed as AAC.
     fps : frames per second; size : (width, height) in pixels, both even.
@@ -214,10 +231,15 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
         raise InputError(f"frames per second must be in (0, 240], got {fps}")
     audio = check_song(audio)
     duration = max(dance.duration for dance in dances)
+    start = dances[0].start
+    if any(dance.start != start for dance in dances):
+        raise InputError("a gallery's dances must start at the same time of the song")
+    clipped = any(dance.clipped for dance in dances)
     times = video_times(duration, fps)
     path = os.fspath(path)
     with Outputs([path], force) as outputs:
-        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path))
+        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
+                                 duration if clipped else None)
         log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
         encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
                                    stderr=log)

@@ -30,12 +30,8 @@ from eigendance.modal.palette import (
     single_mode_amplitudes,
 )
 from eigendance.modal.rotations import rotation_exp
-from eigendance.modal.skeleton import Skeleton
-from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
-
-FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
 
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
@@ -263,41 +259,6 @@ def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:
     if not indices:
         raise InputError("the mode list selects no mode")
     return np.array(sorted(set(indices)))
-
-
-def animate_rig(skeleton: Skeleton, model: ModalModel, times, coefficients,
-                palette: Palette, skinning: str = "modal", progress=None) -> dict:
-    """Arrays of the rig animation file (docs/design.md#animation-file).
-
-    times (T,), faces, float32 positions (T, n, 3) skinned by `skinning` ("modal": ModalSkin,
-    first order, as the page; "lbs": linear blend skinning of the exact body transforms), body
-    rotations/centres/transforms per frame, the coefficients (T, nm) (`rig_coefficients`), the
-    frequencies and the palette that made them.
-    """
-    times = np.asarray(times, dtype=float)
-    coefficients = np.asarray(coefficients, dtype=float)
-    rotations, centers = body_poses(model, coefficients)
-    transforms = body_transforms(model, poses=(rotations, centers))
-    positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
-    skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype=np.float32) \
-        if skinning == "modal" else None
-    for start in range(0, len(times), FRAME_CHUNK):
-        stop = min(start + FRAME_CHUNK, len(times))
-        if skin is not None:
-            positions[start:stop] = skin.positions(coefficients[start:stop])
-        else:
-            positions[start:stop] = linear_blend_skinning(skeleton.vertices, skeleton.weights,
-                                                          transforms[start:stop])
-        if progress is not None:
-            progress(stop)
-    return {"times": times, "faces": skeleton.faces.astype(np.int64), "positions": positions,
-            "rest_vertices": skeleton.vertices, "weights": skeleton.weights.astype(np.float32),
-            "body_names": np.array(model.body_names, dtype=str),
-            "body_rotations": rotations, "body_centers": centers,
-            "body_transforms": transforms.astype(np.float32), "coefficients": coefficients,
-            "modes": palette.selected.astype(np.int64), "amplitudes": palette.amplitudes,
-            "phases": palette.phases, "time_scale": np.float64(palette.time_scale),
-            "frequencies": model.frequencies, "skinning": np.array(skinning)}
 
 
 def save_animation(path, arrays: dict) -> None:

@@ -119,15 +119,6 @@ def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.nda
     return order, top
 
 
-def rest_bone_matrices(model) -> np.ndarray:
-    """(n_b, 4, 4) world matrices of the bodies at rest: [R_b | c_b] (body frame → world)."""
-    bones = np.zeros((model.n_bodies, 4, 4))
-    bones[:, :3, :3] = model.body_rotations
-    bones[:, :3, 3] = model.body_centers
-    bones[:, 3, 3] = 1.0
-    return bones
-
-
 def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
     """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`."""
     skeleton, model, palette = rig.skeleton, rig.model, rig.palette
@@ -148,9 +139,9 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
                         "constrained_rows": list(CONSTRAINED_ROWS[joint.type]),
                         "stiffness": joint.stiffness.tolist(),
                         "default_stiffness": default.tolist(),
-                        "closes_loop": skeleton.joint_sides(index) is None}
-                       for index, (joint, default) in enumerate(zip(
-                           skeleton.joints, skeleton.automatic_stiffnesses(), strict=True))],
+                        "closes_loop": bool(loop)}
+                       for joint, default, loop in zip(skeleton.joints, rig.default_stiffness,
+                                                       rig.closes_loop, strict=True)],
         "palette": None if palette is None else palette.to_settings().to_json(),
         "offset": 0.0,
     }
@@ -161,7 +152,7 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
     skeleton, model, skin = rig.skeleton, rig.model, rig.skin
     n, nm = len(skin.vertices), model.n_modes
     joints, weights = top_weights(skeleton.weights)
-    bones = rest_bone_matrices(model)
+    bones = rig.rest_bones
     column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
     twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
     return pack(rig_meta(rig, name, revision), {

@@ -19,6 +19,7 @@ from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import check_readable, kind_of, read_json, suffix_of
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.modal.gltf_skin import has_skin
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server import rigs
@@ -208,7 +209,7 @@ class Intake:
         RigItem; InputError when it is not a rig that can be analysed, or cannot fit.
         """
         item = RigItem(new_id(), name, origin, path, content=content)
-        rigs.analyse(item, load_rig(path, name))
+        rigs.analyse(item, Rig(load_rig(path, name)))
         self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
         return item
 
@@ -230,7 +231,7 @@ class Intake:
             return None
         item = RigItem(new_id(), mesh.name, origin, path)
         try:
-            rigs.analyse(item, load_rig(path, mesh.name))
+            rigs.analyse(item, Rig(load_rig(path, mesh.name)))
         except EigendanceError as error:
             item.error = self.shelf.public(str(error), {path: mesh.name})
         self.shelf.admit(item, self.shelf.rigs, f"{mesh.name}: the rig")

@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import threading
 
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs
 from eigendance.server.binary import basis_bundle
@@ -115,12 +116,12 @@ class Library:
         return item
 
     def edit_rig(self, item: RigItem, change) -> bytes:
-        """Apply an edit to the rig item's current skeleton (`rigs.edit`).
+        """Apply an edit to the rig item's current rig (`rigs.edit`).
 
         Parameters
         ----------
         item : a rig item of this library.
-        change : skeleton → edited skeleton.
+        change : rig → edited rig (`Rig.with_stiffness`, `Rig.rotate_joint`).
 
         Returns
         -------
@@ -142,7 +143,7 @@ class Library:
         -------
         bytes: its rig bundle.
         """
-        return self.edit_rig(item, lambda _: item.original)
+        return self.edit_rig(item, lambda rig: Rig(item.original, rig.dtype))
 
     # --- the end --------------------------------------------------------------------------------
     def wait(self, timeout: float | None = None) -> bool:

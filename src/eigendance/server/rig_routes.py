@@ -11,7 +11,7 @@ from starlette.responses import (
 )
 
 from eigendance.modal.motion import default_mapping
-from eigendance.modal.rig import rig_gallery
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.music.gallery import DEFAULT_GALLERY
 from eigendance.server.binary import rig_meta
 from eigendance.server.lookup import item_of, library_of, ready_rig, rig_of, song_of
@@ -58,7 +58,7 @@ async def rig_stiffness(request: Request):
     item = await ready_rig(request)
     values = body.get("joints", {})
     bundle = await in_worker(library_of(request).edit_rig, item,
-                                     lambda skeleton: skeleton.with_stiffness(values, scale))
+                                     lambda rig: rig.with_stiffness(values, scale))
     return bundle_response(bundle)
 
 
@@ -77,7 +77,7 @@ async def rig_pose(request: Request):
         raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
     item = await ready_rig(request)
     bundle = await in_worker(library_of(request).edit_rig, item,
-                                     lambda skeleton: skeleton.rotate_joint(joint, rotation))
+                                     lambda rig: rig.rotate_joint(joint, rotation))
     return bundle_response(bundle)
 
 

@@ -2,8 +2,9 @@
 
 The built-in rigs are listed from the start and analysed on first use; a skeleton JSON, or a
 glTF file with a skin (which is also a mesh), is analysed when added. Each rig item keeps its
-original skeleton and the current `Rig` (stiffness and rest-pose edits); every edit makes a new
-`Rig`, its bundle, and bumps the revision. A failed edit leaves the item as it was.
+original skeleton and the current `Rig` (stiffness and rest-pose edits); every edit asks the
+current `Rig` for a new one (`Rig.with_stiffness`, `Rig.rotate_joint`), makes its bundle and
+bumps the revision. A failed edit leaves the item as it was.
 """
 
 from __future__ import annotations
@@ -18,19 +19,18 @@ from eigendance.server.binary import rig_bundle
 from eigendance.server.items import RigItem
 
 
-def analyse(item: RigItem, skeleton: Skeleton, original: Skeleton | None = None) -> None:
-    """Make the item's rig from `skeleton` and its bundle; set them (and the revision) only
-    when both are made.
+def analyse(item: RigItem, rig: Rig, original: Skeleton | None = None) -> None:
+    """Give the item a rig and its bundle; set them (and the revision) only when the bundle is
+    made.
 
     Parameters
     ----------
     item : the rig item.
-    skeleton : the skeleton to analyse.
-    original : the skeleton as loaded (None: `skeleton` is).
+    rig : the rig (loaded, or edited).
+    original : the skeleton as loaded (None: the rig's own).
     """
-    rig = Rig.from_skeleton(skeleton)
     bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None))
-    item.original = original or skeleton
+    item.original = original or rig.skeleton
     item.revision += item.rig is not None
     item.rig, item.bundle = rig, bundle
 
@@ -51,8 +51,8 @@ def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
     with item.lock:
         if item.rig is None and not item.error:
             try:
-                analyse(item, sample_rig(item.source) if item.origin == "built-in"
-                        else load_rig(item.source, item.name))
+                analyse(item, Rig(sample_rig(item.source) if item.origin == "built-in"
+                                  else load_rig(item.source, item.name)))
             except EigendanceError as error:
                 item.error = public(str(error))
         if item.error:
@@ -60,20 +60,20 @@ def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
     return item
 
 
-def edit(item: RigItem, change: Callable[[Skeleton], Skeleton]) -> bytes:
-    """Apply `change` to the item's current skeleton and analyse the result.
+def edit(item: RigItem, change: Callable[[Rig], Rig]) -> bytes:
+    """Apply `change` to the item's current rig.
 
     Parameters
     ----------
     item : an analysed rig item (`ready`).
-    change : skeleton → edited skeleton (`Skeleton.with_stiffness`, `rotate_joint`, …).
+    change : rig → edited rig (`Rig.with_stiffness`, `Rig.rotate_joint`, …).
 
     Returns
     -------
     bytes: the new rig bundle; the item is unchanged when `change` raises.
     """
     with item.lock:
-        analyse(item, change(item.rig.skeleton), original=item.original)
+        analyse(item, change(item.rig), original=item.original)
         return item.bundle
 
 
