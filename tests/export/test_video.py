@@ -19,6 +19,7 @@ from eigendance.errors import InputError
 from eigendance.export.dance import HarmonicDance, video_times
 from eigendance.export.renderer import BACKGROUND, Look, Renderer, gallery_cells
 from eigendance.export.video import parse_size, render_frames, render_video, view_cameras
+from helpers import start
 
 FPS, SIZE = 10.0, (192, 108)
 
@@ -137,7 +138,7 @@ def test_ctrl_c_while_rendering_leaves_no_file(tmp_path):
     """The command line, interrupted once frames are flowing: exit status 130, nothing left."""
     output = tmp_path / "out" / "dance.mp4"
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
-    process = subprocess.Popen(
+    process = start(
         [sys.executable, "-m", "eigendance.cli", "render", "chain", SONG, "--fps", "240",
          "--size", "640x360", "-o", str(output)], env=env, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 60

@@ -36,7 +36,7 @@ from eigendance.server.serve import (
     terminal_progress,
 )
 from eigendance.server.workers import Workers
-from helpers import alive, descendants, fixture_path
+from helpers import alive, descendants, fixture_path, start
 
 PORT = 8765
 LOCAL = f"http://127.0.0.1:{PORT}"
@@ -136,9 +136,9 @@ def test_listening_beyond_this_machine_prints_a_warning_naming_the_risk():
 
 def test_serve_prints_the_warning_before_serving(tmp_path):
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"), TMPDIR=str(tmp_path))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", "--host",
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", "--host",
                                 "0.0.0.0", "--port", "0"], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+                    stderr=subprocess.PIPE, text=True)
     try:
         assert "serving on http://127.0.0.1:" in process.stdout.readline()
     finally:
@@ -480,10 +480,10 @@ def start_server(tmp_path, *files, k=8):
     temporary = tmp_path / "tmp"
     temporary.mkdir(exist_ok=True)
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"), TMPDIR=str(temporary))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", *map(str, files),
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", *map(str, files),
                                 "-k", str(k), "--port", str(free_port())], env=env,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               start_new_session=True)
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                    start_new_session=True)
     assert "serving on" in process.stdout.readline()
     return process, temporary
 

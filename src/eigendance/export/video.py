@@ -204,6 +204,46 @@ def _draw_in_turn(send, dances, looks, times, width, height) -> None:
         send.close()
 
 
+def encode(command: list[str], frames, count: int, progress=None) -> None:
+    """Run the encoder and feed it the frames; the encoder's last error line on failure.
+
+    Parameters
+    ----------
+    command : the encoder's command (`ffmpeg_command`).
+    frames : iterable of raw RGBA frames (bytes).
+    count : how many frames (for `progress`).
+    progress : optional callable(frames done, frames in all).
+    """
+    log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
+    encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                               stderr=log)
+    try:
+        try:
+            for index, frame in enumerate(frames):
+                encoder.stdin.write(frame)
+                if progress is not None:
+                    progress(index + 1, count)
+            encoder.stdin.close()
+        except BrokenPipeError:
+            pass  # the encoder stopped: its own message follows
+        encoder.wait()
+        log.seek(0)
+        errors = log.read().decode(errors="replace")
+        if encoder.returncode != 0:
+            last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
+                            f"exit status {encoder.returncode}")
+            raise InternalError(f"ffmpeg failed: {last}")
+    finally:
+        if encoder.poll() is None:
+            encoder.kill()
+            encoder.wait()
+        try:
+            encoder.stdin.close()
+        except BrokenPipeError:
+            pass  # the encoder is gone; nothing more to flush
+        log.close()
+
+
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
                  audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
                  force: bool = False, progress=None) -> dict:
@@ -240,34 +280,7 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     with Outputs([path], force) as outputs:
         command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
                                  duration if clipped else None)
-        log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
-        encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                   stderr=log)
-        try:
-            try:
-                for index, frame in enumerate(frames_in_turn(dances, looks, times, width,
-                                                             height)):
-                    encoder.stdin.write(frame)
-                    if progress is not None:
-                        progress(index + 1, len(times))
-                encoder.stdin.close()
-            except BrokenPipeError:
-                pass  # the encoder stopped: its own message follows
-            encoder.wait()
-            log.seek(0)
-            errors = log.read().decode(errors="replace")
-            if encoder.returncode != 0:
-                last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
-                                f"exit status {encoder.returncode}")
-                raise InternalError(f"ffmpeg failed: {last}")
-        finally:
-            if encoder.poll() is None:
-                encoder.kill()
-                encoder.wait()
-            try:
-                encoder.stdin.close()
-            except BrokenPipeError:
-                pass  # the encoder is gone; nothing more to flush
-            log.close()
+        encode(command, frames_in_turn(dances, looks, times, width, height), len(times),
+               progress)
     return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
             "duration": duration}

@@ -231,17 +231,21 @@ class Skeleton:
                 if other.axis is not None:
                     other.axis = turn @ other.axis
         if edited.vertices is not None:
-            if edited.bind_vertices is None:
-                edited.bind_vertices = edited.vertices
-                edited.pose = np.tile(np.eye(4), (self.n_bodies, 1, 1))
             step = np.eye(4)
             step[:3, :3], step[:3, 3] = turn, pivot - turn @ pivot
-            edited.pose[moving] = step @ edited.pose[moving]
-            blended = (edited.weights @ edited.pose[:, :3].reshape(self.n_bodies, 12))
-            blended = blended.reshape(-1, 3, 4)
-            edited.vertices = np.einsum("nij,nj->ni", blended[:, :, :3],
-                                        edited.bind_vertices) + blended[:, :, 3]
+            edited._pose_skin(moving, step)
         return edited
+
+    def _pose_skin(self, moving: np.ndarray, step: np.ndarray) -> None:
+        """Compose the rigid `step` (4, 4) into the pose of the `moving` bodies and skin the
+        mesh as loaded by linear blend skinning, x = Σ_b w_b pose_b x_bind (in place)."""
+        if self.bind_vertices is None:
+            self.bind_vertices = self.vertices
+            self.pose = np.tile(np.eye(4), (self.n_bodies, 1, 1))
+        self.pose[moving] = step @ self.pose[moving]
+        blended = (self.weights @ self.pose[:, :3].reshape(self.n_bodies, 12)).reshape(-1, 3, 4)
+        self.vertices = np.einsum("nij,nj->ni", blended[:, :, :3], self.bind_vertices) \
+            + blended[:, :, 3]
 
     def copy(self) -> Skeleton:
         """A deep copy (bodies, joints and skin arrays)."""
