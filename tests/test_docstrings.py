@@ -20,12 +20,14 @@ import textwrap
 import eigendance
 
 SKIPPED_MODULES = ("__main__",)  # running them runs the command line
+# Replaced on another branch right now (issue 23: the new glTF reader), which documents its own.
+REWRITTEN = ("eigendance.modal.gltf_skin",)
 
 
 def public_modules():
     for info in pkgutil.walk_packages(eigendance.__path__, "eigendance."):
         last = info.name.rsplit(".", 1)[-1]
-        if last.startswith("_") or last in SKIPPED_MODULES:
+        if last.startswith("_") or last in SKIPPED_MODULES or info.name in REWRITTEN:
             continue
         yield importlib.import_module(info.name)
     yield eigendance
@@ -115,7 +117,7 @@ def undocumented() -> dict[str, list[str]]:
                         problems = problems_of_function(function, documented or "")
                     if problems:
                         found[f"{where}.{member}"] = problems
-            elif inspect.isfunction(value):
+            elif inspect.isfunction(value) and value.__name__ == name:  # not an alias
                 if problems := problems_of_function(value, inspect.getdoc(value) or ""):
                     found[where] = problems
     return found

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.files import finite_number
 
 
 def shown(value, width: int = 40) -> str:
@@ -41,24 +42,6 @@ def shown(value, width: int = 40) -> str:
     except (TypeError, ValueError, RecursionError):
         text = type(value).__name__
     return text if len(text) <= width else text[:width - 1] + "…"
-
-
-def is_finite(value) -> bool:
-    """Whether a number is finite as a float (an int too large for a float is not:
-    math.isfinite would raise OverflowError).
-
-    Parameters
-    ----------
-    value : an int or a float.
-
-    Returns
-    -------
-    bool.
-    """
-    try:
-        return math.isfinite(value)
-    except OverflowError:
-        return False
 
 
 def number(value, label: str, low: float = -math.inf, high: float = math.inf,
@@ -88,7 +71,7 @@ def number(value, label: str, low: float = -math.inf, high: float = math.inf,
     """
     if isinstance(value, bool | np.bool_) or not isinstance(value, int | float | np.number):
         raise InputError(f"{label} must be a number, not {shown(value)}")
-    if not is_finite(value):
+    if not finite_number(value):
         raise InputError(f"{label} is not finite ({shown(value)})")
     if integer and value != int(value):
         raise InputError(f"{label} must be an integer, not {shown(value)}")

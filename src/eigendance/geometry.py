@@ -132,23 +132,63 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
 
 
 def bounding_box_diagonal(vertices: np.ndarray) -> float:
-    """Length of the diagonal of the axis-aligned bounding box of (n, 3) points."""
+    """Length of the diagonal of the axis-aligned bounding box of (n, 3) points.
+
+    Parameters
+    ----------
+    vertices : (n, 3).
+
+    Returns
+    -------
+    float, in the vertices' unit.
+    """
     vertices = np.asarray(vertices, dtype=np.float64)
     return float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
 
 
 def face_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
-    """(m, 3) normals of the triangles, of length twice their area (not unit)."""
+    """(m, 3) normals of the triangles, of length twice their area (not unit).
+
+    Parameters
+    ----------
+    vertices : (n, 3).
+    faces : (m, 3).
+
+    Returns
+    -------
+    (m, 3) float64.
+    """
     corners = np.asarray(vertices, dtype=np.float64)[np.asarray(faces, dtype=np.int64)]
-    return np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    return cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
 
 
-def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
-    """Area-weighted unit vertex normals (n, 3); zero for unreferenced vertices."""
+def vertex_normals(vertices: np.ndarray, faces: np.ndarray, default=None) -> np.ndarray:
+    """Area-weighted unit vertex normals, as three.js computeVertexNormals.
+
+    Parameters
+    ----------
+    vertices : (n, 3).
+    faces : (m, 3) triangles.
+    default : (3,) the normal of a vertex whose triangles' normals cancel or that no triangle
+        uses (where a unit vector is needed: +z), or None for zero.
+
+    Returns
+    -------
+    (n, 3) float64.
+
+    Example
+    -------
+    >>> vertex_normals([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 5, 5]], [[0, 1, 2]],
+    ...                default=(0, 0, 1)).tolist()
+    [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
+    """
     vertices = np.asarray(vertices, dtype=np.float64)
     faces = np.asarray(faces, dtype=np.int64)
     weighted = face_normals(vertices, faces)
     normals = np.stack([np.bincount(faces.ravel(), np.repeat(weighted[:, axis], 3),
                                     minlength=len(vertices)) for axis in range(3)], axis=1)
     length = np.linalg.norm(normals, axis=1, keepdims=True)
-    return normals / np.where(length > 0, length, 1)
+    normals = normals / np.where(length > 0, length, 1)
+    if default is not None:
+        normals[length[:, 0] <= 0] = default
+    return normals

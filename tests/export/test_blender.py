@@ -14,10 +14,9 @@ import subprocess
 
 import numpy as np
 import pytest
-from export_helpers import check_positions, required
+from export_helpers import check_positions, file_times, required
 from scipy.spatial import cKDTree
 
-from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -49,7 +48,7 @@ def test_blender_plays_the_export_as_the_reference_moves(blender, request, tmp_p
     dance = request.getfixturevalue(dance_name)
     path = tmp_path / f"dance.{kind}"
     export_dance(dance, path, fps=FPS)
-    times = sample_times(dance.duration, FPS)
+    times = file_times(dance.duration, FPS)
     frames = [0, len(times) // 2, len(times) - 1]
     out = tmp_path / "blender.npz"
     run = subprocess.run([blender, SCRIPT, kind, str(path), str(FPS), str(out),

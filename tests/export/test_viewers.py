@@ -17,9 +17,8 @@ import threading
 
 import numpy as np
 import pytest
-from export_helpers import check_positions, required
+from export_helpers import check_positions, file_times, required
 
-from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -80,7 +79,7 @@ def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromiu
     """At three sample times (first, middle, last but one: the mixer loops at the end)."""
     _, dances = glbs
     dance = dances[name]
-    samples = sample_times(dance.duration, 15)
+    samples = file_times(dance.duration, 15)
     times = [float(samples[0]), float(samples[len(samples) // 2]), float(samples[-2])]
     page = chromium.new_page()
     try:

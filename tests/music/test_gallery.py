@@ -29,7 +29,7 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping, harmonic_indices
 from eigendance.music.spectrogram import Spectrogram
-from helpers import bumpy_sphere, fixture_path, sphere
+from helpers import bumpy_sphere, fixture_path, required, sphere
 
 CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
                    "cat_lowres.obj")
@@ -334,8 +334,8 @@ def test_breed_resamples_amplifications_and_checks_bands(rng):
         breed([], 2)
 
 
-@pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
 def test_javascript_port_breeds_identical_children(rng):
+    required("Node", shutil.which("node") is not None, "make system")
     parents = distinct_parents(rng, 3, bands=16, k=24)
     children = breed(parents, 8, seed=987654321)
     payload = {"parents": [{"transfer": list(p.transfer), "amplification":

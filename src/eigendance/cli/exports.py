@@ -44,7 +44,14 @@ from eigendance.music.mapping import Mapping
 # --- exports: files for other tools, and video (docs/design.md#exports) ----------------------
 
 def add_dance_inputs(parser, audio_help: str) -> None:
-    """The inputs of `export` and `render`: a mesh (+ mapping) or a rig, and the song."""
+    """The inputs of `export` and `render`: a mesh (+ mapping) or a rig, the song, the palette and
+    the part of the song.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    audio_help : what AUDIO is for this command, for --help.
+    """
     parser.add_argument("model", help="mesh file (OBJ, PLY, OFF, STL, glTF) or basis file "
                         "(.npz); with --rig, or a .json or built-in name: " + RIG_HELP)
     parser.add_argument("audio", help=audio_help)
@@ -64,11 +71,30 @@ def add_dance_inputs(parser, audio_help: str) -> None:
 
 
 def is_rig(args) -> bool:
+    """Whether MODEL is a rig (--rig, a built-in rig's name, or a skeleton JSON).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    bool.
+    """
     return args.rig or args.model in SAMPLE_RIGS or args.model.lower().endswith(".json")
 
 
 def song_of(args) -> str | None:
-    """The song's audio file, or None when AUDIO is a spectrogram file."""
+    """The song's audio file, or None when AUDIO is a spectrogram file.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    str or None.
+    """
     return None if args.audio.lower().endswith(".npz") else args.audio
 
 
@@ -110,7 +136,17 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
 
 
 def harmonic_inputs(args, bands: int):
-    """The mesh's basis (solved with a progress bar, or read) and the song's spectrogram."""
+    """The mesh's basis (solved with a progress bar, or read) and the song's spectrogram.
+
+    Parameters
+    ----------
+    args : the parsed command line (MODEL, AUDIO, -k).
+    bands : bands of the song's spectrogram (the mapping's).
+
+    Returns
+    -------
+    (HarmonicBasis, Spectrogram).
+    """
     bar, update = progress_bar(args.k, "eigenpairs")
     with bar:
         basis = basis_from(args.model, args.k, progress=update)
@@ -118,6 +154,12 @@ def harmonic_inputs(args, bands: int):
 
 
 def add_export(parser):
+    """The options of `eigendance export`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     add_dance_inputs(parser, "the song: audio file (copied beside the export), or "
                              "spectrogram file (.npz)")
     parser.add_argument("--format", choices=tuple(EXPORT_FORMATS),
@@ -128,6 +170,13 @@ def add_export(parser):
 
 
 def run_export(args) -> None:
+    """`eigendance export`: write the dance as glTF, point cache or USD with its song beside it, and
+    say what was written.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     format = format_of(args.output, args.format)
     began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
@@ -156,6 +205,12 @@ def run_export(args) -> None:
 
 
 def add_render(parser):
+    """The options of `eigendance render`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     add_dance_inputs(parser, "the song (audio file), muxed into the video as AAC")
     parser.add_argument("--size", type=video_size, default=(1280, 720),
                         help="WIDTHxHEIGHT in pixels, even (default 1280x720)")
@@ -170,6 +225,16 @@ def add_render(parser):
 
 
 def video_size(text: str) -> tuple[int, int]:
+    """--size: an argparse type for WIDTHxHEIGHT (`export.video.parse_size`).
+
+    Parameters
+    ----------
+    text : the flag's value.
+
+    Returns
+    -------
+    (width, height) in pixels; argparse.ArgumentTypeError otherwise.
+    """
     try:
         return parse_size(text)
     except InputError as error:
@@ -177,6 +242,12 @@ def video_size(text: str) -> tuple[int, int]:
 
 
 def run_render(args) -> None:
+    """`eigendance render`: draw the dance (or a gallery of dances) with its song into an MP4.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     if suffix_of(args.output) != ".mp4":
         raise InputError(f"{args.output}: the video is an MP4; name it .mp4")
     if song_of(args) is None:

@@ -40,6 +40,12 @@ from eigendance.window import Window
 
 
 def add_basis(parser):
+    """The options of `eigendance basis`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("mesh", help="mesh file: OBJ, PLY, OFF, STL, glTF or GLB")
     parser.add_argument("-k", type=HARMONICS, default=300, help="number of harmonics (default 300)")
     parser.add_argument("--laplacian", choices=LAPLACIANS, default="cotan",
@@ -52,6 +58,12 @@ def add_basis(parser):
 
 
 def run_basis(args) -> None:
+    """`eigendance basis`: solve a mesh's harmonics (through the cache) and write the basis file.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     mesh = load_mesh(args.mesh)
@@ -69,6 +81,12 @@ def run_basis(args) -> None:
 
 
 def add_spectrum(parser):
+    """The options of `eigendance spectrum`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("audio", help="audio file: WAV, FLAC, OGG, MP3, M4A/AAC, Opus, …")
     parser.add_argument("--rate", type=number(0, 1000, above=True), default=100.0,
                         help="analysis frames per second (default 100, at most 1000)")
@@ -80,6 +98,12 @@ def add_spectrum(parser):
 
 
 def run_spectrum(args) -> None:
+    """`eigendance spectrum`: analyse a song into its banded loudness and write it (and a picture).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     refuse_overwrite(args.output, args.force)
     if args.png:
         check_picture_path(args.png)
@@ -95,6 +119,12 @@ def run_spectrum(args) -> None:
 
 
 def add_gallery(parser):
+    """The options of `eigendance gallery`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("basis", help="basis file (.npz) or mesh file (solved with -k)")
     parser.add_argument("spectrogram", help="spectrogram file (.npz) or audio file: the song "
                                             "the initial items are calibrated on")
@@ -113,6 +143,13 @@ def add_gallery(parser):
 
 
 def run_gallery(args) -> None:
+    """`eigendance gallery`: write the initial gallery, or the children of bred parents, as mapping
+    files.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     size = check_gallery_size(args.size)
     paths = [os.path.join(args.output, f"{i}.json") for i in range(size)]
     for path in paths:
@@ -136,7 +173,18 @@ def run_gallery(args) -> None:
 
 def gallery_table(basis, spectrogram, items) -> list[str]:
     """Lines of the --verbose table: each item's m and peak motion on the song (percent of the
-    bounding-box diagonal) and its main harmonic range, then the largest correlation."""
+    bounding-box diagonal) and its main harmonic range, then the largest correlation.
+
+    Parameters
+    ----------
+    basis : the mesh's harmonics.
+    spectrogram : the song.
+    items : the gallery's mappings.
+
+    Returns
+    -------
+    list of str, one per line.
+    """
     lines = [f"{'item':>4} {'m':>7} {'peak':>7}  main harmonics (of k = {basis.k})"]
     for index, measured in enumerate(gallery_motion(basis, spectrogram, items), 1):
         harmonics = "none" if measured.lowest < 0 else \
@@ -154,6 +202,12 @@ def gallery_table(basis, spectrogram, items) -> list[str]:
 
 
 def add_animate(parser):
+    """The options of `eigendance animate`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("mesh", help="mesh file, or basis file (.npz)")
     parser.add_argument("audio", help="audio file, or spectrogram file (.npz)")
     parser.add_argument("--mapping", help="mapping JSON (default: the initial-gallery item of "
@@ -166,6 +220,12 @@ def add_animate(parser):
 
 
 def run_animate(args) -> None:
+    """`eigendance animate`: write the positions of a mesh dancing to a song (or a part of it).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     refuse_overwrite(args.output, args.force)
     began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None

@@ -30,9 +30,20 @@ from eigendance.errors import EigendanceError, InputError, one_line
 
 
 class Parser(argparse.ArgumentParser):
-    """argparse with the project's errors: one line, exit status 1 (bad input)."""
+    """argparse with the project's errors: one line, exit status 1 (bad input).
+
+    Parameters
+    ----------
+    *args, **kwargs : those of argparse.ArgumentParser.
+    """
 
     def error(self, message):
+        """End with one line naming the problem and where --help is, exit status 1.
+
+        Parameters
+        ----------
+        message : argparse's message.
+        """
         self.exit(1, f"eigendance: error: {one_line(message)} (see {self.prog} --help)\n")
 
 
@@ -53,6 +64,12 @@ COMMANDS = {
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of every command (`COMMANDS`).
+
+    Returns
+    -------
+    argparse.ArgumentParser; each sub-command sets `run`, the function that runs it.
+    """
     parser = Parser(prog="eigendance", description="Make 3D models dance to music.")
     parser.add_argument("--version", action="version", version=f"eigendance {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
@@ -68,7 +85,16 @@ FLAGS = {"k": "-k"}
 
 
 def hint(remedy: dict) -> str:
-    """'; try --solver eigsh' for {"solver": "eigsh"} ('' for no remedy)."""
+    """How a remedy reads on the command line: '; try --solver eigsh' for {"solver": "eigsh"}.
+
+    Parameters
+    ----------
+    remedy : {parameter: value} (an error's `remedy`).
+
+    Returns
+    -------
+    str, '' for no remedy.
+    """
     if remedy.get("force"):
         return "; pass --force to overwrite it"
     flags = [f"{FLAGS.get(name, '--' + name.replace('_', '-'))} {value}"
@@ -77,7 +103,16 @@ def hint(remedy: dict) -> str:
 
 
 def main(argv=None) -> int:
-    """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
+    """Run one command.
+
+    Parameters
+    ----------
+    argv : the arguments (default: sys.argv[1:]).
+
+    Returns
+    -------
+    int, the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted.
+    """
     args = build_parser().parse_args(argv)
     try:
         with warnings.catch_warnings():

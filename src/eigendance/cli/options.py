@@ -56,7 +56,13 @@ PORT = number(0, 65535, integer=True)
 
 
 def add_output(parser, what: str) -> None:
-    """-o/--output (`what` it writes) and --force, as every command that writes has them."""
+    """-o/--output and --force, as every command that writes has them.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    what : what the output is, for --help.
+    """
     parser.add_argument("-o", "--output", required=True, help=what)
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
@@ -64,7 +70,16 @@ def add_output(parser, what: str) -> None:
 def progress_bar(total: int | None, description: str, unit: str = "pair"):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
-    total None: the count is not known in advance (the bar shows a running count).
+    Parameters
+    ----------
+    total : the count to reach; None when it is not known in advance (the bar shows a running
+        count).
+    description : the bar's label.
+    unit : what is counted.
+
+    Returns
+    -------
+    (bar, update): the bar (a context manager) and update(done), which moves it to `done`.
     """
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
                disable=not sys.stderr.isatty(), leave=False)
@@ -76,21 +91,51 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
 
 
 def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
-    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache)."""
+    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache).
+
+    Parameters
+    ----------
+    path : a basis file or a mesh file.
+    k : harmonics of a mesh's basis.
+    progress : optional callable(pairs done) while solving.
+
+    Returns
+    -------
+    HarmonicBasis.
+    """
     if path.lower().endswith(".npz"):
         return HarmonicBasis.load(path)
     return HarmonicBasis.from_mesh(path, k, progress=progress)
 
 
 def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:
-    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands."""
+    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands.
+
+    Parameters
+    ----------
+    path : a spectrogram file or an audio file.
+    bands : bands of an audio file's spectrogram.
+
+    Returns
+    -------
+    Spectrogram.
+    """
     if path.lower().endswith(".npz"):
         return Spectrogram.load(path)
     return Spectrogram.from_file(path, bands=bands)
 
 
 def gallery_size(text: str) -> int:
-    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`)."""
+    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`).
+
+    Parameters
+    ----------
+    text : the flag's value.
+
+    Returns
+    -------
+    int, 2 … 16; argparse.ArgumentTypeError otherwise.
+    """
     try:
         value = int(text)
     except ValueError:
@@ -108,7 +153,12 @@ STIFFNESS = number(0, 1e12, above=True)
 
 
 def add_palette_options(parser) -> None:
-    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`."""
+    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     group = parser.add_argument_group("rigs: the palette (default: the mapping's, else the "
                                       "default rule that makes any rig dance)")
     group.add_argument("--modes", help="mode indices that move, e.g. 0,2,5-8")
@@ -125,7 +175,12 @@ def add_palette_options(parser) -> None:
 
 
 def add_rig_options(parser) -> None:
-    """The rig and its joints' stiffness, shared by `modes` and `animate-rig`."""
+    """The rig's joint stiffness (--stiffness, --joints), shared by `modes` and `animate-rig`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness (default 1; frequencies scale "
                              "with its square root)")

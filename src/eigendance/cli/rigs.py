@@ -54,6 +54,12 @@ def rig_from(args) -> Rig:
 
 
 def add_modes(parser):
+    """The options of `eigendance modes`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("rig", help=RIG_HELP)
     add_rig_options(parser)
     parser.add_argument("--show", type=number(0, integer=True), default=30,
@@ -62,7 +68,18 @@ def add_modes(parser):
 
 
 def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> list[str]:
-    """Lines: index, frequency (Hz) and the bodies carrying most of each mode's energy."""
+    """Lines: index, frequency (Hz) and the bodies carrying most of each mode's energy.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    top : bodies named per mode.
+    limit : modes listed at most (None: all).
+
+    Returns
+    -------
+    list of str, one per line.
+    """
     energy = model.body_energy()
     lines = [f"{'mode':>5} {'frequency Hz':>13}  bodies that move most (share of energy)"]
     count = model.n_modes if limit is None else min(limit, model.n_modes)
@@ -76,6 +93,12 @@ def mode_table(model: ModalModel, top: int = 3, limit: int | None = None) -> lis
 
 
 def run_modes(args) -> None:
+    """`eigendance modes`: the modal analysis of a rig, written as a modal file and listed.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     rig = rig_from(args)
@@ -95,6 +118,12 @@ def run_modes(args) -> None:
 
 
 def add_animate_rig(parser):
+    """The options of `eigendance animate-rig`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("rig", help=RIG_HELP)
     parser.add_argument("audio", nargs="?", help="audio file (any format `spectrum` reads) or "
                         "spectrogram file (.npz) whose bands drive the modes; without it every "
@@ -116,6 +145,13 @@ def add_animate_rig(parser):
 
 
 def run_animate_rig(args) -> None:
+    """`eigendance animate-rig`: move a rig in its modes to a song (or a part of it) and write the
+    animation file (and the mapping that made it).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     refuse_overwrite(args.output, args.force)
     if args.save_mapping:
         refuse_overwrite(args.save_mapping, args.force)

@@ -20,6 +20,14 @@ from eigendance.server.serve import (
 
 
 def add_server_options(parser, k: int, k_help: str) -> None:
+    """The options `serve` and `demo` share: where to listen, -k and the limits.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    k : the default number of harmonics.
+    k_help : what -k is for, for --help.
+    """
     parser.add_argument("--host", default=DEFAULT_HOST,
                         help=f"address to listen on (default {DEFAULT_HOST}: this machine only; "
                              "another address lets other machines use the server, with no "
@@ -35,6 +43,12 @@ def add_server_options(parser, k: int, k_help: str) -> None:
 
 
 def add_serve(parser):
+    """The options of `eigendance serve`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING|RIG",
                         help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC), "
                              "mapping JSON and skeleton JSON files to put in the library (a "
@@ -44,20 +58,45 @@ def add_serve(parser):
 
 
 def run_serve(args) -> None:
+    """`eigendance serve`: the web app with the given files in its library.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     serve(args, lambda: args.files, "eigendance: serving on {url}")
 
 
 def add_demo(parser):
+    """The options of `eigendance demo`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
     add_server_options(parser, DEMO_K, "harmonics of the demo mesh")
 
 
 def run_demo(args) -> None:
+    """`eigendance demo`: the web app with the built-in cat and music.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
     serve(args, demo_paths, "eigendance demo: open {url} in a browser")
 
 
 def serve(args, paths, announce: str) -> None:
-    """Listen, fill a temporary library with the files of paths() and serve it until
-    interrupted; the library's folder is removed at the end (docs/design.md#server)."""
+    """Listen, fill a temporary library with the files of paths() and serve it until interrupted;
+    the library's folder is removed at the end (docs/design.md#server).
+
+    Parameters
+    ----------
+    args : the parsed command line (--host, --port, -k, the limits).
+    paths : () → the files to put in the library.
+    announce : the line printed once it serves, with {url}.
+    """
     listening = listen(args.host, args.port)
     port = listening.getsockname()[1]
     if warning := exposure_warning(args.host):
@@ -72,6 +111,17 @@ def serve(args, paths, announce: str) -> None:
 
 
 def url(host: str, port: int) -> str:
+    """The URL a browser opens for a server listening on host:port.
+
+    Parameters
+    ----------
+    host : the address listened on ("0.0.0.0": any, shown as 127.0.0.1).
+    port : the port.
+
+    Returns
+    -------
+    str, e.g. "http://127.0.0.1:8765/".
+    """
     shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
     shown = f"[{shown}]" if ":" in shown else shown
     return f"http://{shown}:{port}/"

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.geometry import bounding_box_diagonal
+from eigendance.geometry import bounding_box_diagonal, vertex_normals
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import iter_positions
 from eigendance.modal.rig import SKINNINGS, Rig
@@ -44,32 +44,21 @@ RIG_CHUNK = 64  # frames skinned per batch
 
 def video_times(duration: float, fps: float) -> np.ndarray:
     """Frame i of a video shows time i/fps, i < ⌈duration·fps⌉ (at least one frame): the frames
-    cover [0, duration) and the video lasts as long as the song, to within one frame."""
+    cover [0, duration) and the video lasts as long as the song, to within one frame.
+
+    Parameters
+    ----------
+    duration : s.
+    fps : frames per second.
+
+    Returns
+    -------
+    (⌈duration·fps⌉,) s.
+    """
     if not (math.isfinite(fps) and fps > 0):
         raise InputError(f"frames per second must be a positive number, got {fps}")
     count = max(1, math.ceil(duration * fps - 1e-9))
     return np.arange(count) / float(fps)
-
-
-def sample_times(duration: float, fps: float) -> np.ndarray:
-    """Samples of an animation file: 0, 1/fps, … up to the duration included."""
-    if not (math.isfinite(fps) and fps > 0):
-        raise InputError(f"frames per second must be a positive number, got {fps}")
-    return np.arange(int(math.floor(duration * fps + 1e-9)) + 1) / float(fps)
-
-
-def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
-    """Unit area-weighted vertex normals (n, 3), as three.js computeVertexNormals; a vertex
-    whose triangles' normals cancel gets +z (it still must be a unit vector)."""
-    corners = vertices[faces]
-    face = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    normals = np.zeros_like(vertices, dtype=np.float64)
-    for corner in range(3):
-        np.add.at(normals, faces[:, corner], face)
-    length = np.linalg.norm(normals, axis=1, keepdims=True)
-    normals = np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
-    normals[length[:, 0] <= 0] = (0.0, 0.0, 1.0)
-    return normals
 
 
 @dataclass
@@ -78,6 +67,10 @@ class Morphs:
 
     harmonics: (J,) the driven harmonics ν; targets: (J, n, 3) D_ν in original units;
     weights: (T, J) φ_ν(t_i) − 1.
+
+    Parameters
+    ----------
+    harmonics, targets, weights : as above.
     """
 
     harmonics: np.ndarray
@@ -151,36 +144,73 @@ class Dance:
 
     @property
     def n(self) -> int:
+        """Vertices."""
         return len(self.rest)
 
     @property
     def center(self) -> np.ndarray:
+        """(3,) the middle of the rest shape's bounding box."""
         return (self.rest.min(axis=0) + self.rest.max(axis=0)) / 2
 
     @property
     def scale(self) -> float:
+        """Half the largest side of the rest shape's bounding box (1 for a point)."""
         return float((self.rest.max(axis=0) - self.rest.min(axis=0)).max() / 2) or 1.0
 
     @property
     def diagonal(self) -> float:
+        """The rest shape's bounding-box diagonal."""
         return bounding_box_diagonal(self.rest)
 
     def rest_normals(self) -> np.ndarray:
-        return vertex_normals(self.rest, self.faces)
+        """Unit vertex normals of the rest shape (+z where none exists), as three.js computes them.
+
+        Returns
+        -------
+        (n, 3) float64.
+        """
+        return vertex_normals(self.rest, self.faces, default=(0.0, 0.0, 1.0))
 
     def frames(self, times) -> Iterator[tuple[int, np.ndarray, np.ndarray | None]]:
-        """(first frame index, positions (C, n, 3) float32, normals (C, n, 3) or None when the
-        rest normals hold) for `times`, chunk by chunk."""
+        """The dance at `times`, chunk by chunk.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Yields
+        ------
+        (first frame index, positions (C, n, 3) float32, normals (C, n, 3) float32 or None when the
+        rest normals hold).
+        """
         raise NotImplementedError
 
     def loudest_times(self, count: int) -> np.ndarray:
         """Times the camera frames the dance at (besides its rest shape). Without a
         spectrogram to find the song's `count` loudest moments (a harmonic dance's), 8·count
-        times spread evenly over the dance, so the widest poses are held too."""
+        times spread evenly over the dance, so the widest poses are held too.
+
+        Parameters
+        ----------
+        count : how many poses.
+
+        Returns
+        -------
+        (8·count,) s of the dance.
+        """
         return np.arange(8 * count) * (self.duration / (8 * count))
 
     def positions(self, times) -> np.ndarray:
-        """All positions (T, n, 3) float64 at `times` (for tests and short clips)."""
+        """All positions (T, n, 3) float64 at `times` (for tests and short clips).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, n, 3) float64 (from the float32 frames).
+        """
         times = np.asarray(times, dtype=np.float64).reshape(-1)
         out = np.empty((len(times), self.n, 3))
         for first, chunk, _ in self.frames(times):
@@ -215,7 +245,16 @@ class HarmonicDance(Dance):
 
     def phi(self, times) -> np.ndarray:
         """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram at the dance's times
-        (the song's times start + t)."""
+        (the song's times start + t).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, k).
+        """
         values = self.spectrogram.smoothed(self.mapping.smoothing).at(
             self.start + np.asarray(times, dtype=np.float64))
         return self.mapping.filter(values, self.basis.k)
@@ -223,7 +262,16 @@ class HarmonicDance(Dance):
     def loudest_times(self, count: int) -> np.ndarray:
         """The dance's `count` loudest moments (largest sum over bands of a spectrogram frame),
         at least 0.25 s apart, loudest first, in the dance's time: the poses the page frames a
-        model in (web/src/motion.ts `loudestTimes`); a window's own loudest moments."""
+        model in (web/src/motion.ts `loudestTimes`); a window's own loudest moments.
+
+        Parameters
+        ----------
+        count : how many poses.
+
+        Returns
+        -------
+        (≤ count,) s of the dance.
+        """
         rate = self.spectrogram.rate
         first = int(math.ceil(self.start * rate - 1e-9))
         last = int(math.floor((self.start + self.duration) * rate + 1e-9))
@@ -240,12 +288,26 @@ class HarmonicDance(Dance):
 
     def driven(self) -> np.ndarray:
         """The harmonics ν the mapping moves: targets of some band with a non-zero
-        amplification (every other φ_ν is 1 at all times), ascending."""
+        amplification (every other φ_ν is 1 at all times), ascending.
+
+        Returns
+        -------
+        (J,) int64, J ≤ B.
+        """
         targets = np.unique(self.mapping.harmonic_indices(self.basis.k))
         return targets[self.mapping.amplification_for(self.basis.k)[targets] != 0]
 
     def morphs(self, times) -> Morphs:
-        """The motion at `times` as morph targets (exact: X_φ is linear in φ)."""
+        """The motion at `times` as morph targets (exact: X_φ is linear in φ).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        Morphs.
+        """
         driven = self.driven()
         basis = self.basis
         targets = (basis.eigenvectors[:, driven].T[:, :, None]
@@ -316,7 +378,16 @@ class RigDance(Dance):
             yield first, positions.astype(np.float32), turned.astype(np.float32)
 
     def blend_positions(self, times) -> np.ndarray:
-        """(T, n, 3) linear blend skinning at `times`: what a glTF skin plays."""
+        """(T, n, 3) linear blend skinning at `times`: what a glTF skin plays.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
         return self.rig.positions(self.pose(times)[1], "lbs")
 
 

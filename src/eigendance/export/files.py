@@ -19,19 +19,30 @@ import os
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.export.dance import Dance, RigDance, sample_times
+from eigendance.export.dance import Dance, RigDance
 from eigendance.export.gltf import glb_bytes
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
+from eigendance.music.spectrogram import frame_times
 
 FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
 
 
 def format_of(path: str | os.PathLike, format: str | None = None) -> str:
-    """The export format: `format` if given (checked against the suffix), else by suffix."""
+    """The export format: `format` if given (checked against the suffix), else by suffix.
+
+    Parameters
+    ----------
+    path : the file to write.
+    format : "glb", "pc2" or "usd", or None.
+
+    Returns
+    -------
+    str, the format; InputError for an unknown suffix or one that is not the format's.
+    """
     suffix = suffix_of(path)
     if format is None:
         for name, suffixes in FORMATS.items():
@@ -103,7 +114,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     format = format_of(path, format)
     if not (np.isfinite(fps) and 0 < fps <= 1000):
         raise InputError(f"frames per second must be in (0, 1000], got {fps}")
-    times = sample_times(dance.duration, fps)
+    times = frame_times(dance.duration, fps)
     paths = companion_paths(path, format, dance.audio, dance.clipped)
     written = [p for p in (paths["main"], paths["mesh"], paths["song"]) if p is not None]
     song_name = None if dance.audio is None else \
@@ -155,7 +166,17 @@ def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: s
 
 def skinning_difference(dance: RigDance, times) -> float:
     """The largest distance between a rig's modal skinning and the linear blend skinning of
-    the same body transforms (what a glTF skin plays) over `times`, model units."""
+    the same body transforms (what a glTF skin plays) over `times`, model units.
+
+    Parameters
+    ----------
+    dance : a modal-skinned `RigDance`.
+    times : (T,) s.
+
+    Returns
+    -------
+    float.
+    """
     largest = 0.0
     for first, positions, _ in dance.frames(times):
         blended = dance.blend_positions(times[first:first + len(positions)])

@@ -29,7 +29,16 @@ WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is re
 
 
 def srgb_to_linear(srgb) -> np.ndarray:
-    """sRGB components in [0, 1] → linear (the glTF base colour is linear)."""
+    """sRGB components in [0, 1] → linear (the glTF base colour is linear).
+
+    Parameters
+    ----------
+    srgb : components in [0, 1].
+
+    Returns
+    -------
+    array of the same shape.
+    """
     c = np.asarray(srgb, dtype=np.float64)
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 

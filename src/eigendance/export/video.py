@@ -41,7 +41,16 @@ PRESET, CRF, AUDIO_BITRATE = "veryfast", 18, "192k"  # x264 speed/quality, AAC b
 
 
 def parse_size(text: str) -> tuple[int, int]:
-    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680."""
+    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680.
+
+    Parameters
+    ----------
+    text : WIDTHxHEIGHT.
+
+    Returns
+    -------
+    (width, height); InputError otherwise.
+    """
     parts = text.lower().replace("×", "x").split("x")
     try:
         width, height = (int(part) for part in parts)
@@ -53,6 +62,12 @@ def parse_size(text: str) -> tuple[int, int]:
 
 
 def check_size(width: int, height: int) -> None:
+    """InputError unless both sides are even and 16 … MAX_SIDE pixels.
+
+    Parameters
+    ----------
+    width, height : pixels.
+    """
     for side in (width, height):
         if not 16 <= side <= MAX_SIDE:
             raise InputError(f"size {width}x{height}: each side must be 16 to {MAX_SIDE} pixels")
@@ -89,7 +104,16 @@ def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str,
 
 
 def check_song(path) -> str:
-    """The song's path; InputError (one line) unless it decodes (its first chunk is read)."""
+    """The song's path; InputError (one line) unless it decodes (its first chunk is read).
+
+    Parameters
+    ----------
+    path : the song's file.
+
+    Returns
+    -------
+    str.
+    """
     _, chunks = open_audio(path)
     next(iter(chunks), None)
     if hasattr(chunks, "close"):
@@ -110,6 +134,17 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
     One dance fills the frame as the player shows it; several (a gallery of the same mesh)
     share it in the page's grid. Each view's camera frames its dance as the page does: the rest
     shape and the rim in the loudest poses.
+
+    Parameters
+    ----------
+    dances : one dance, or several of the same mesh.
+    looks : one `Look` per dance.
+    times : (T,) s of the dances.
+    width, height : pixels.
+
+    Yields
+    ------
+    bytes, 4·width·height per frame.
     """
     first = dances[0]
     if any(dance.n != first.n or len(dance.faces) != len(first.faces) for dance in dances):
@@ -133,7 +168,17 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
 
 def view_cameras(dances: list[Dance], cells) -> list[Camera]:
     """The camera of each dance's view (x, y, w, h): framed as the page frames it, on the rest
-    shape and the rim in the dance's loudest poses (`renderer.Camera.framing`)."""
+    shape and the rim in the dance's loudest poses (`renderer.Camera.framing`).
+
+    Parameters
+    ----------
+    dances : the dances.
+    cells : their views (x, y, w, h).
+
+    Returns
+    -------
+    list of Camera.
+    """
     first = dances[0]
     framed = rim(first.rest)
     return [Camera.framing(first.rest, dance.positions(dance.loudest_times(POSES))[:, framed],
@@ -151,6 +196,15 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
     drawn before (`renderer.gl_started`) draws itself instead: a fork would inherit llvmpipe's
     state without its threads. Workers ignore Ctrl-C (the caller handles it and kills them) and
     die with the caller.
+
+    Parameters
+    ----------
+    dances, looks, times, width, height : as for `render_frames`.
+    workers : processes drawing in turn.
+
+    Yields
+    ------
+    bytes, each frame in order.
     """
     times = np.asarray(times, dtype=np.float64)
     if workers <= 1 or len(times) < 2 * workers or gl_started() or \

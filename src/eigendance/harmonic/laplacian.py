@@ -19,7 +19,18 @@ LAPLACIANS = ("cotan", "robust")
 
 def laplacian(vertices: np.ndarray, faces: np.ndarray,
               kind: str = "cotan") -> tuple[sp.csc_matrix, np.ndarray]:
-    """Return (L, mass): L sparse (n, n) PSD stiffness, mass (n,) vertex areas."""
+    """Return (L, mass): L sparse (n, n) PSD stiffness, mass (n,) vertex areas.
+
+    Parameters
+    ----------
+    vertices : (n, 3).
+    faces : (m, 3).
+    kind : "cotan" or "robust".
+
+    Returns
+    -------
+    (L, mass).
+    """
     if kind == "cotan":
         import igl  # heavy (≈0.4 s): imported when a Laplacian is built
 

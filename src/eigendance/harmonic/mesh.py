@@ -39,6 +39,11 @@ class Mesh:
     vertex_map: (n_input,) int64, the cleaned index of each input vertex, -1 for dropped ones.
     report: what the clean-up changed, e.g. {"duplicate_vertices": 3, "zero_area_faces": 1}.
 
+    Parameters
+    ----------
+    vertices, faces, center, scale, vertex_map, report : as above (`from_arrays` makes them).
+    name : how messages call it.
+
     Example
     -------
     >>> square = Mesh.from_arrays([[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 0]],
@@ -59,6 +64,7 @@ class Mesh:
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         return len(self.vertices)
 
     @property
@@ -90,19 +96,34 @@ class Mesh:
         return cls((vertices - center) / scale, faces, center, scale, vertex_map, report, name)
 
     def adjacency(self):
-        """Sparse (n, n) vertex adjacency through triangle edges."""
+        """Sparse (n, n) vertex adjacency through triangle edges.
+
+        Returns
+        -------
+        scipy.sparse csr (n, n).
+        """
         edges = self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
         n = len(self.vertices)
         return sp.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), (n, n)).tocsr()
 
     def non_manifold_edge_count(self) -> int:
-        """Number of undirected edges shared by more than two triangles."""
+        """Number of undirected edges shared by more than two triangles.
+
+        Returns
+        -------
+        int.
+        """
         edges = np.sort(self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
         _, counts = np.unique(edges, axis=0, return_counts=True)
         return int((counts > 2).sum())
 
     def describe_cleanup(self) -> str:
-        """A short phrase listing what the clean-up removed, '' if nothing."""
+        """A short phrase listing what the clean-up removed, '' if nothing.
+
+        Returns
+        -------
+        str.
+        """
         return ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in
                          self.report.items() if count)
 

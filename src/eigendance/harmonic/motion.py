@@ -62,7 +62,16 @@ def positions_at(basis: HarmonicBasis, spectrogram: Spectrogram, mapping: Mappin
 
 
 def chunk_frames(n: int) -> int:
-    """Frames per chunk so that one chunk's float64 product stays near CHUNK_BYTES."""
+    """Frames per chunk so that one chunk's float64 product stays near CHUNK_BYTES.
+
+    Parameters
+    ----------
+    n : vertices.
+
+    Returns
+    -------
+    int, 1 … 512.
+    """
     return max(1, min(512, CHUNK_BYTES // max(1, n * 3 * 8)))
 
 
@@ -71,6 +80,16 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
 
     Original coordinates, `dtype` (float32 by default). The arrays come from two buffers used
     in turn: a chunk stays valid until the next-but-one is requested (copy it to keep it).
+
+    Parameters
+    ----------
+    basis, spectrogram, mapping : the mesh's harmonics, the song, the mapping.
+    times : (T,) s of the song.
+    dtype : of the positions.
+
+    Yields
+    ------
+    (first frame index, (C, n, 3)).
     """
     times = np.asarray(times, dtype=np.float64)
     spectrogram = spectrogram.smoothed(mapping.smoothing)
@@ -141,5 +160,14 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
 
 
 def load_animation(path: str | os.PathLike) -> dict:
-    """Read an animation file: {"times", "faces", "positions"} (positions fully in memory)."""
+    """Read an animation file: {"times", "faces", "positions"} (positions fully in memory).
+
+    Parameters
+    ----------
+    path : an animation file.
+
+    Returns
+    -------
+    {"times", "faces", "positions"}.
+    """
     return load_npz(path, ("times", "faces", "positions"))

@@ -46,7 +46,16 @@ MAX_DENSITY_RATIO = 1e12  # densest body / lightest body
 
 
 def body_rotation(direction) -> np.ndarray:
-    """World-from-body rotation with x = direction and a deterministic y, z."""
+    """World-from-body rotation with x = direction and a deterministic y, z.
+
+    Parameters
+    ----------
+    direction : (3,) the body's axis (any length but 0).
+
+    Returns
+    -------
+    (3, 3) rotation, columns x = direction/|direction|, y, z.
+    """
     x = unit(direction)
     y = perpendicular(x)
     return np.column_stack([x, y, cross(x, y)])
@@ -54,7 +63,15 @@ def body_rotation(direction) -> np.ndarray:
 
 @dataclass
 class Body:
-    """A solid cylinder from `start` to `end`."""
+    """A solid cylinder from `start` to `end`.
+
+    Parameters
+    ----------
+    name : how joints and messages call it.
+    start, end : (3,) the axis's ends, the rig's length unit.
+    radius : the cylinder's radius, same unit.
+    density : kg per unit³ (DEFAULT_DENSITY, water).
+    """
 
     name: str
     start: np.ndarray
@@ -64,14 +81,17 @@ class Body:
 
     @property
     def length(self) -> float:
+        """|end − start|, the rig's unit."""
         return float(np.linalg.norm(self.end - self.start))
 
     @property
     def direction(self) -> np.ndarray:
+        """(3,) unit vector from start to end."""
         return unit(self.end - self.start, f"body {self.name!r}")
 
     @property
     def center(self) -> np.ndarray:
+        """(3,) the centre of mass, half-way along the axis."""
         return (self.start + self.end) / 2
 
     @property
@@ -81,6 +101,7 @@ class Body:
 
     @property
     def mass(self) -> float:
+        """m = ρπr²ℓ."""
         return self.density * math.pi * self.radius**2 * self.length
 
     @property
@@ -93,10 +114,18 @@ class Body:
 
 @dataclass
 class Joint:
-    """An elastic joint between two bodies (indices `bodies` = (i, l)) at `position`.
+    """An elastic joint between two bodies at `position`.
 
-    stiffness: one value per free row of the joint type, in the order of the free rows of
-    [ωx ωy ωz vx vy vz] in the joint frame.
+    Parameters
+    ----------
+    name : how edits and messages call it.
+    type : "revolute", "prismatic", "cylindrical" or "spherical" (`JOINT_TYPES`).
+    bodies : (i, l) the indices of its two bodies.
+    position : (3,) where it is, P.
+    stiffness : one value per free row of the joint type, in the order of the free rows of
+        [ωx ωy ωz vx vy vz] in the joint frame.
+    axis : (3,) its rotation or sliding axis, or None (the normal of the bodies' plane).
+    damping : read and kept; the modes are undamped.
     """
 
     name: str
@@ -109,10 +138,12 @@ class Joint:
 
     @property
     def constrained_rows(self) -> tuple[int, ...]:
+        """The rows of [ωx ωy ωz vx vy vz] the joint type constrains."""
         return CONSTRAINED_ROWS[self.type]
 
     @property
     def free_rows(self) -> tuple[int, ...]:
+        """The rows it leaves free (one stiffness each)."""
         return tuple(row for row in range(6) if row not in CONSTRAINED_ROWS[self.type])
 
 
@@ -231,7 +262,16 @@ def check_joints(joints: list[Joint], n_bodies: int, name: str) -> None:
 
 def meeting_point(a: Body, b: Body) -> np.ndarray:
     """Where two bodies meet: a shared end if they have one, else the midpoint of the closest
-    points of their axes (thesis §3.2.1: the joint sits where the axes intersect)."""
+    points of their axes (thesis §3.2.1: the joint sits where the axes intersect).
+
+    Parameters
+    ----------
+    a, b : two bodies.
+
+    Returns
+    -------
+    (3,) the point.
+    """
     ends_a, ends_b = (a.start, a.end), (b.start, b.end)
     scale = max(a.length, b.length)
     for p in ends_a:
@@ -251,7 +291,17 @@ def meeting_point(a: Body, b: Body) -> np.ndarray:
 
 
 def joint_frame(joint: Joint, bodies: list[Body]) -> np.ndarray:
-    """World-from-joint rotation (columns x, y, z) of a joint (docs/design.md#joints)."""
+    """World-from-joint rotation (columns x, y, z) of a joint (docs/design.md#joints).
+
+    Parameters
+    ----------
+    joint : the joint.
+    bodies : the skeleton's bodies (the joint's two by index).
+
+    Returns
+    -------
+    (3, 3) rotation.
+    """
     d_i = bodies[joint.bodies[0]].direction
     d_l = bodies[joint.bodies[1]].direction
     if joint.axis is not None:

@@ -32,6 +32,13 @@ class RigDancer:
     in equal groups. A rig's natural frequencies span a factor of a few and a song's bands a
     factor of 800: 6-4 on the natural frequencies would send nearly every band to the lowest
     mode. `natural_frequencies` are the Hz.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    skin : its modal skin.
+    palette : the modes that dance.
+    band_edges : (B+1,) Hz of the song's bands, or None (20 Hz … 16 kHz).
     """
 
     def __init__(self, model: ModalModel, skin: ModalSkin, palette: Palette, band_edges=None):
@@ -54,10 +61,20 @@ class RigDancer:
 
     @property
     def diagonal(self) -> float:
+        """Bounding-box diagonal of the skin at rest, the rig's unit."""
         return self._diagonal
 
     def displacements(self, phi) -> np.ndarray:
-        """(S, k) filters → (S, n, 3) displacements of the skin's vertices."""
+        """(S, k) filters → (S, n, 3) displacements of the skin's vertices.
+
+        Parameters
+        ----------
+        phi : (S, k) filters.
+
+        Returns
+        -------
+        (S, n, 3) displacements, the rig's unit.
+        """
         phi = np.atleast_2d(np.asarray(phi, dtype=float))
         coefficients = np.zeros((len(phi), self.model.n_modes))
         coefficients[:, self.palette.selected] = phi * self._amplitudes
@@ -74,6 +91,16 @@ def rig_gallery(dancer: RigDancer, spectrogram: Spectrogram,
     modes instead (same sign), so that every tile moves. Each item's amplification is then
     calibrated to the song (`song_calibrated`): its loudest frame drives its most driven mode
     at φ = 1, the default motion's level (docs/design.md#modal-motion).
+
+    Parameters
+    ----------
+    dancer : the rig's `RigDancer`.
+    spectrogram : the song.
+    size : S, 2 … 16.
+
+    Returns
+    -------
+    list of S mappings.
     """
     items = initial_gallery(dancer, spectrogram, size, amplitude=1.0)
     k = len(dancer.frequencies)

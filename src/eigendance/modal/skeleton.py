@@ -79,10 +79,12 @@ class Skeleton:
     # ----------------------------------------------------------------- derived arrays
     @property
     def n_bodies(self) -> int:
+        """Bodies."""
         return len(self.bodies)
 
     @property
     def body_names(self) -> list[str]:
+        """The bodies' names, in order."""
         return [body.name for body in self.bodies]
 
     @property
@@ -101,7 +103,16 @@ class Skeleton:
         return np.concatenate([np.concatenate([b.inertia, [b.mass] * 3]) for b in self.bodies])
 
     def joint_rotation(self, joint: Joint) -> np.ndarray:
-        """World-from-joint rotation (columns x, y, z) (docs/design.md#joints)."""
+        """World-from-joint rotation (columns x, y, z) (docs/design.md#joints).
+
+        Parameters
+        ----------
+        joint : one of its joints.
+
+        Returns
+        -------
+        (3, 3).
+        """
         return joint_frame(joint, self.bodies)
 
     @property
@@ -110,7 +121,16 @@ class Skeleton:
         return np.array([joint.bodies for joint in self.joints], dtype=np.int64).reshape(-1, 2)
 
     def joint_index(self, key) -> int:
-        """The index of a joint given by name or by index; InputError naming the joint."""
+        """The index of a joint given by name or by index; InputError naming the joint.
+
+        Parameters
+        ----------
+        key : a joint's name or index.
+
+        Returns
+        -------
+        int.
+        """
         if isinstance(key, int | np.integer) and not isinstance(key, bool):
             if not 0 <= key < len(self.joints):
                 raise InputError(f"{self.name}: no joint {key} (the rig has "
@@ -124,17 +144,45 @@ class Skeleton:
     def joint_sides(self, index: int) -> tuple[np.ndarray, np.ndarray] | None:
         """The bodies on each side of joint `index` (body i's side, body l's side) as index
         arrays: the parts the skeleton falls into without this joint. None when the joint closes
-        a loop (its two bodies stay connected without it)."""
+        a loop (its two bodies stay connected without it).
+
+        Parameters
+        ----------
+        index : the joint.
+
+        Returns
+        -------
+        (side of body i, side of body l) int arrays, or None.
+        """
         return joint_sides(self.n_bodies, self.joint_pairs, index)
 
     def automatic_stiffness(self, index: int,
                             frequency: float = DEFAULT_JOINT_FREQUENCY) -> np.ndarray:
-        """The default stiffness of joint `index` ("auto"; `automatic_stiffness`)."""
+        """The default stiffness of joint `index` ("auto"; `automatic_stiffness`).
+
+        Parameters
+        ----------
+        index : the joint.
+        frequency : Hz of a side a quarter of the rig's size long.
+
+        Returns
+        -------
+        (free rows,).
+        """
         return automatic_stiffness(self.joints[index], self.bodies, frequency,
                                    self.joint_sides(index))
 
     def automatic_stiffnesses(self, frequency: float = DEFAULT_JOINT_FREQUENCY) -> list:
-        """The default stiffness of every joint (the bodies' inertias computed once)."""
+        """The default stiffness of every joint (the bodies' inertias computed once).
+
+        Parameters
+        ----------
+        frequency : Hz of a side a quarter of the rig's size long.
+
+        Returns
+        -------
+        list of (free rows,) arrays, one per joint.
+        """
         inertias, pairs = body_inertias(self.bodies), self.joint_pairs
         return [automatic_stiffness(joint, self.bodies, frequency,
                                     joint_sides(self.n_bodies, pairs, index), inertias)
@@ -150,6 +198,10 @@ class Skeleton:
             a list with one number per free row of the joint, or "auto" (the default rule,
             `automatic_stiffness`).
         scale : then multiplies every joint's stiffness (1: unchanged).
+
+        Returns
+        -------
+        Skeleton, a copy; InputError naming a joint or value at fault.
 
         Example
         -------
@@ -190,6 +242,10 @@ class Skeleton:
         skinning from the skin as loaded, x = Σ_b w_b pose_b x_bind, where pose_b composes the
         edits of body b (so turning a joint back restores the mesh exactly). Stiffnesses are
         kept. A joint that closes a loop cannot turn one side alone: InputError.
+
+        Returns
+        -------
+        Skeleton, a copy.
 
         Example
         -------
@@ -248,7 +304,12 @@ class Skeleton:
             + blended[:, :, 3]
 
     def copy(self) -> Skeleton:
-        """A deep copy (bodies, joints and skin arrays)."""
+        """A deep copy (bodies, joints and skin arrays).
+
+        Returns
+        -------
+        Skeleton.
+        """
         bodies = [Body(b.name, b.start.copy(), b.end.copy(), b.radius, b.density)
                   for b in self.bodies]
         joints = [Joint(j.name, j.type, tuple(j.bodies), j.position.copy(), j.stiffness.copy(),
@@ -269,7 +330,17 @@ class Skeleton:
     @classmethod
     def from_json(cls, path: str | os.PathLike, name: str | None = None) -> Skeleton:
         """Read a skeleton JSON file (docs/design.md#skeleton-file), checked like `from_dict`;
-        messages call it `name` (default: the file's name)."""
+        messages call it `name` (default: the file's name).
+
+        Parameters
+        ----------
+        path : the skeleton JSON file.
+        name : how messages call it.
+
+        Returns
+        -------
+        Skeleton.
+        """
         name = name or os.path.basename(os.fspath(path))
         return cls.from_dict(read_json(path, name), name=name)
 
@@ -299,7 +370,17 @@ class Skeleton:
         return skeleton_document(self.bodies, self.joints)
 
     def scaled(self, stiffness: float = 1.0, density: float = 1.0) -> Skeleton:
-        """A copy with every stiffness and density multiplied by the given factors."""
+        """A copy with every stiffness and density multiplied by the given factors.
+
+        Parameters
+        ----------
+        stiffness : multiplies every joint stiffness.
+        density : multiplies every body's density.
+
+        Returns
+        -------
+        Skeleton, a copy.
+        """
         bodies = [Body(b.name, b.start, b.end, b.radius, b.density * density)
                   for b in self.bodies]
         joints = [Joint(j.name, j.type, j.bodies, j.position, j.stiffness * stiffness, j.axis,

@@ -84,10 +84,20 @@ class ModalSkin:
 
     @property
     def n_modes(self) -> int:
+        """Modes nm."""
         return self.displacement.shape[0]
 
     def positions(self, coefficients) -> np.ndarray:
-        """(T, n, 3) skinned positions for coefficients c (T, nm): x + c·τ, one product."""
+        """(T, n, 3) skinned positions for coefficients c (T, nm): x + c·τ, one product.
+
+        Parameters
+        ----------
+        coefficients : (T, nm) (or (nm,)).
+
+        Returns
+        -------
+        (T, n, 3) in the skin's dtype.
+        """
         coefficients = np.atleast_2d(np.asarray(coefficients, dtype=self.displacement.dtype))
         if coefficients.shape[1] != self.n_modes:
             raise InputError(f"coefficients have {coefficients.shape[1]} modes; the skin "
@@ -97,7 +107,17 @@ class ModalSkin:
         return flat.reshape(len(coefficients), -1, 3)
 
     def normals(self, coefficients, normals) -> np.ndarray:
-        """(T, n, 3) rest normals turned by exp([Σ_κ c_κ ρ_iκ]×)."""
+        """(T, n, 3) rest normals turned by exp([Σ_κ c_κ ρ_iκ]×).
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+        normals : (n, 3) rest normals.
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
         coefficients = np.atleast_2d(np.asarray(coefficients, dtype=self.rotation.dtype))
         turn = (coefficients @ self.rotation).reshape(len(coefficients), -1, 3)
         normals = np.asarray(normals, dtype=float)

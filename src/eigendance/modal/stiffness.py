@@ -26,7 +26,16 @@ PENDULUM_LENGTH = 0.25  # ℓ / size: a limb-sized length
 
 def body_inertias(bodies: list[Body]) -> tuple:
     """World inertia tensors about the centres (n, 3, 3), masses (n,), centres (n, 3) and the
-    skeleton's extent (the diagonal of the bounding box of the body ends)."""
+    skeleton's extent (the diagonal of the bounding box of the body ends).
+
+    Parameters
+    ----------
+    bodies : the skeleton's bodies.
+
+    Returns
+    -------
+    (tensors (n, 3, 3), masses (n,), centres (n, 3), extent).
+    """
     rotations = np.array([body.rotation for body in bodies])
     moments = np.array([body.inertia for body in bodies])
     tensors = np.einsum("bij,bj,bkj->bik", rotations, moments, rotations)  # R diag(J) Rᵀ
@@ -39,7 +48,18 @@ def body_inertias(bodies: list[Body]) -> tuple:
 def inertia_about(inertias, members, point) -> tuple[np.ndarray, float]:
     """World inertia tensor (3, 3) about `point` and total mass of the bodies `members`:
     Σ_b R_b diag(J_b) R_bᵀ + m_b (|d_b|² I − d_b d_bᵀ), d_b = c_b − point (parallel axes).
-    `inertias` = `body_inertias(bodies)`."""
+    `inertias` = `body_inertias(bodies)`.
+
+    Parameters
+    ----------
+    inertias : `body_inertias(bodies)`.
+    members : indices of the bodies.
+    point : (3,).
+
+    Returns
+    -------
+    (tensor (3, 3), mass).
+    """
     members = np.asarray(members, dtype=np.int64)
     tensors, masses, centres = (array[members] for array in inertias[:3])
     offsets = centres - point
@@ -62,6 +82,19 @@ def automatic_stiffness(joint: Joint, bodies: list[Body],
     swings at f Hz, one 4 times closer at 2f: big limbs slower than fingers.
     `sides`: the two lists of bodies (`Skeleton.joint_sides`); None (a joint closing a loop)
     takes the joint's own two bodies. `inertias`: `body_inertias(bodies)`, if already computed.
+
+    Parameters
+    ----------
+    joint : the joint.
+    bodies : the skeleton's bodies.
+    frequency : f, Hz.
+    sides : the joint's sides, or None.
+    inertias : `body_inertias(bodies)`, or None.
+
+    Returns
+    -------
+    (free rows,) stiffness: torque per radian for rotation rows, force per unit for translation
+    rows.
     """
     inertias = inertias if inertias is not None else body_inertias(bodies)
     length = PENDULUM_LENGTH * inertias[3]
@@ -80,7 +113,15 @@ def automatic_stiffness(joint: Joint, bodies: list[Body],
 
 def set_automatic_stiffness(bodies: list[Body], joints: list[Joint], indices=None,
                             frequency: float = DEFAULT_JOINT_FREQUENCY) -> None:
-    """Give the joints at `indices` (default all) their `automatic_stiffness`, in place."""
+    """Give the joints at `indices` (default all) their `automatic_stiffness`, in place.
+
+    Parameters
+    ----------
+    bodies : the skeleton's bodies.
+    joints : its joints (changed in place).
+    indices : the joints to set (None: all).
+    frequency : f, Hz.
+    """
     pairs = np.array([joint.bodies for joint in joints], dtype=np.int64).reshape(-1, 2)
     inertias = body_inertias(bodies)
     for index in range(len(joints)) if indices is None else indices:

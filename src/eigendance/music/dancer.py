@@ -30,6 +30,10 @@ class Dancer(Protocol):
     modes: b = 0). A dancer may also give `motion_gram(targets)` — (T,) → (T, T), the mean over
     the vertices of ⟨D_ν(x), D_μ(x)⟩ — without forming positions (`HarmonicBasis` does); else
     `motion_gram` below forms it from the displacements.
+
+    Parameters
+    ----------
+    A protocol: any object with these attributes and methods (`HarmonicBasis`, `RigDancer`).
     """
 
     @property
@@ -41,12 +45,31 @@ class Dancer(Protocol):
         """Bounding-box diagonal of the rest shape, in the units of the displacements."""
 
     def displacements(self, phi) -> np.ndarray:
-        """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape."""
+        """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape.
+
+        Parameters
+        ----------
+        phi : (S, k) filters.
+
+        Returns
+        -------
+        (S, n, 3).
+        """
 
 
 def motion_gram(dancer: Dancer, targets) -> np.ndarray:
     """G_νμ = mean over the vertices of ⟨D_ν(x), D_μ(x)⟩ for `targets` (T,) → (T, T): the
-    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0)."""
+    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0).
+
+    Parameters
+    ----------
+    dancer : the model.
+    targets : (T,) target indices.
+
+    Returns
+    -------
+    (T, T) in the displacements' units squared.
+    """
     targets = np.asarray(targets, dtype=np.int64)
     own = getattr(dancer, "motion_gram", None)  # optional in the protocol: a fast path
     if own is not None:
@@ -60,7 +83,17 @@ def motion_gram(dancer: Dancer, targets) -> np.ndarray:
 
 def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
     """Band values of at most CALIBRATION_FRAMES evenly spaced frames of the song (F, B),
-    smoothed once more by `smoothing` s (a mapping's setting)."""
+    smoothed once more by `smoothing` s (a mapping's setting).
+
+    Parameters
+    ----------
+    spectrogram : the song.
+    smoothing : s.
+
+    Returns
+    -------
+    (F, B) float64.
+    """
     values = np.asarray(spectrogram.smoothed(smoothing).values, dtype=np.float64)
     if len(values) > CALIBRATION_FRAMES:
         values = values[np.linspace(0, len(values) - 1, CALIBRATION_FRAMES).round().astype(int)]
@@ -68,14 +101,31 @@ def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
 
 
 def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
-    """RMS displacement of each frame: √(wᵀ G w) for weights w (F, T) on T targets → (F,)."""
+    """RMS displacement of each frame: √(wᵀ G w) for weights w (F, T) on T targets → (F,).
+
+    Parameters
+    ----------
+    w : (F, T) φ − b on the targets.
+    gram : (T, T) their Gram matrix.
+
+    Returns
+    -------
+    (F,) in the displacements' units.
+    """
     return np.sqrt(np.maximum(((w @ gram) * w).sum(axis=1), 0.0))
 
 
 @dataclass
 class ItemMotion:
     """How one mapping moves a model on a song: m (fraction of the diagonal), the largest frame's
-    motion (same unit) and the main harmonic range [lowest, highest] (MAIN_SHARE of its energy)."""
+    motion (same unit) and the main harmonic range [lowest, highest] (MAIN_SHARE of its energy).
+
+    Parameters
+    ----------
+    motion : m.
+    peak : the largest frame's motion.
+    lowest, highest : the main harmonic range (−1 when the mapping moves nothing).
+    """
 
     motion: float
     peak: float
@@ -83,12 +133,29 @@ class ItemMotion:
     highest: int
 
     def as_json(self) -> dict:
+        """The measures as the page shows them.
+
+        Returns
+        -------
+        {"motion", "peak", "harmonics": [lowest, highest]}.
+        """
         return {"motion": self.motion, "peak": self.peak,
                 "harmonics": [self.lowest, self.highest]}
 
 
 def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndarray, np.ndarray]:
-    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T)."""
+    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T).
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mapping : the mapping.
+
+    Returns
+    -------
+    (targets (T,) int64, w (F, T)).
+    """
     k = len(dancer.frequencies)
     w = mapping.filter(song_frames(spectrogram, mapping.smoothing), k) - 1.0
     targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
@@ -98,7 +165,18 @@ def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndar
 def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
     """m, the peak and the main harmonic range of each mapping on the song (any mappings: an
     initial gallery or bred children). m = 95th percentile over the frames of the RMS vertex
-    displacement divided by the bounding-box diagonal."""
+    displacement divided by the bounding-box diagonal.
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mappings : the mappings.
+
+    Returns
+    -------
+    list of ItemMotion, one per mapping.
+    """
     results = []
     diagonal = dancer.diagonal
     for mapping in mappings:
@@ -120,7 +198,17 @@ def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
 
 def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
     """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
-    of the displacements: the most the music can move it."""
+    of the displacements: the most the music can move it.
+
+    Parameters
+    ----------
+    dancer : the model.
+    mappings : the mappings.
+
+    Returns
+    -------
+    (S,).
+    """
     k = len(dancer.frequencies)
     motion = []
     for mapping in mappings:
@@ -133,7 +221,18 @@ def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
 
 def gallery_correlations(dancer: Dancer, spectrogram, mappings) -> np.ndarray:
     """(S, S) correlation of the items' displacement fields over the song's frames:
-    Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices."""
+    Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices.
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mappings : the S mappings.
+
+    Returns
+    -------
+    (S, S), ones on the diagonal.
+    """
     weights = [item_weights(dancer, spectrogram, mapping) for mapping in mappings]
     union = np.unique(np.concatenate([targets for targets, _ in weights]))
     gram = motion_gram(dancer, union)

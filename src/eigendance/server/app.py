@@ -56,16 +56,41 @@ from eigendance.server.routes import (
 
 
 def static_folder() -> str | None:
-    """The built front end inside the package, or None when it was never built."""
+    """The built front end inside the package.
+
+    Returns
+    -------
+    str, the folder of static/index.html, or None when the front end was never built.
+    """
     path = os.fspath(resources.files("eigendance") / "static")
     return path if os.path.isfile(os.path.join(path, "index.html")) else None
 
 
 async def api_missing(request: Request):
+    """Any /api/ path that no route answers.
+
+    Parameters
+    ----------
+    request : the request.
+
+    Returns
+    -------
+    Never: HTTPException 404 naming the path.
+    """
     raise HTTPException(404, f"no API route {request.url.path}")
 
 
 async def no_front_end(request: Request):
+    """The page when the front end was never built.
+
+    Parameters
+    ----------
+    request : the request.
+
+    Returns
+    -------
+    HTMLResponse 503 saying how to build it.
+    """
     return HTMLResponse("<!doctype html><title>eigendance</title><p>The web app is not built: "
                         "run <code>make web</code> (npm ci + vite build).", status_code=503)
 
@@ -73,16 +98,49 @@ async def no_front_end(request: Request):
 # --- errors ---------------------------------------------------------------------------------------
 
 def error_response(request: Request, status: int, message: str) -> JSONResponse:
-    """One line of JSON; uploads called by their names, no path of the library folder."""
+    """One line of JSON; uploads called by their names, no path of the library folder.
+
+    Parameters
+    ----------
+    request : the request that failed.
+    status : the HTTP status.
+    message : what went wrong.
+
+    Returns
+    -------
+    JSONResponse {"error": message}.
+    """
     return JSONResponse({"error": one_line(library_of(request).public(message))},
                         status_code=status)
 
 
 async def on_http_error(request: Request, problem: HTTPException):
+    """Starlette's errors (404, 405, and ours raised as HTTPException) as one line of JSON.
+
+    Parameters
+    ----------
+    request : the request that failed.
+    problem : the exception.
+
+    Returns
+    -------
+    JSONResponse with its status.
+    """
     return error_response(request, problem.status_code, str(problem.detail))
 
 
 async def on_input_error(request: Request, problem: InputError):
+    """An `InputError` as one line of JSON with its status (400 by default).
+
+    Parameters
+    ----------
+    request : the request that failed.
+    problem : the exception.
+
+    Returns
+    -------
+    JSONResponse with its status.
+    """
     return error_response(request, problem.status, str(problem))
 
 
@@ -116,8 +174,18 @@ API_ROUTES = [
 
 
 def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = None) -> Starlette:
-    """The web app serving `library` (see `eigendance.server` for the routes) on `host`:`port`
-    (the Host headers it answers; port None: any port)."""
+    """The web app serving `library` (see `eigendance.server` for the routes).
+
+    Parameters
+    ----------
+    library : the items it serves.
+    host : the --host it listens on (the Host headers it answers, `server.guard`).
+    port : the port it listens on (None: any port).
+
+    Returns
+    -------
+    Starlette app: the API routes, the built front end, the guard middleware.
+    """
     static = static_folder()
     front_end = Mount("/", StaticFiles(directory=static, html=True)) if static else \
         Route("/", no_front_end)

@@ -24,8 +24,18 @@ DEFAULT_BUDGET = 4 << 30  # bytes
 
 
 def footprint(*objects, depth: int = 6) -> int:
-    """Bytes held by numpy arrays and bytes objects reachable from `objects` through
-    dataclass fields, object attributes, dicts, lists and tuples (each counted once)."""
+    """Bytes held by numpy arrays and bytes objects reachable from `objects` through dataclass
+    fields, object attributes, dicts, lists and tuples (each counted once).
+
+    Parameters
+    ----------
+    *objects : what to measure.
+    depth : how deep to follow references.
+
+    Returns
+    -------
+    int, bytes.
+    """
     seen: set[int] = set()
 
     def size(value, level: int) -> int:
@@ -59,6 +69,10 @@ def footprint(*objects, depth: int = 6) -> int:
 class Budget:
     """Charges per key (bytes) in least-recently-used order, within `limit` bytes.
 
+    Parameters
+    ----------
+    limit : the budget, bytes.
+
     Example
     -------
     >>> budget = Budget(100)
@@ -78,18 +92,34 @@ class Budget:
 
     @property
     def used(self) -> int:
+        """Bytes charged now."""
         return sum(self.sizes.values())
 
     def touch(self, key: str) -> None:
-        """Mark `key` as the most recently used."""
+        """Mark `key` as the most recently used.
+
+        Parameters
+        ----------
+        key : a charged key (others are ignored).
+        """
         with self.lock:
             if key in self.sizes:
                 self.sizes.move_to_end(key)
 
     def charge(self, key: str, size: int, busy=lambda key: False) -> list[str] | None:
-        """Charge `key` `size` bytes (now the most recently used) and return the keys dropped so
-        that the total fits: least recently used first, never `key` itself nor a key for which
-        busy(key) is true. None, and nothing changed, when it cannot fit even so."""
+        """Charge `key` `size` bytes (now the most recently used) and drop what no longer fits.
+
+        Parameters
+        ----------
+        key : the item's key.
+        size : its bytes.
+        busy : key → whether that key is in use (never dropped).
+
+        Returns
+        -------
+        list of the keys dropped so that the total fits, least recently used first (never `key`
+        itself nor a busy one); None, and nothing changed, when it cannot fit even so.
+        """
         with self.lock:
             others = [(other, used) for other, used in self.sizes.items() if other != key]
             kept = sum(used for other, used in others if busy(other))
@@ -108,6 +138,12 @@ class Budget:
             return dropped
 
     def release(self, key: str) -> None:
+        """Forget a key's charge (an item removed).
+
+        Parameters
+        ----------
+        key : the key.
+        """
         with self.lock:
             self.sizes.pop(key, None)
 

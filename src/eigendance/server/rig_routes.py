@@ -6,15 +6,19 @@ from __future__ import annotations
 
 from starlette.exceptions import HTTPException
 from starlette.requests import Request
-from starlette.responses import (
-    Response,
-)
 
 from eigendance.modal.motion import default_mapping
 from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.music.gallery import DEFAULT_GALLERY
 from eigendance.server.binary import rig_meta
-from eigendance.server.lookup import item_of, library_of, ready_rig, rig_of, song_of
+from eigendance.server.lookup import (
+    bundle_response,
+    item_of,
+    library_of,
+    ready_rig,
+    rig_of,
+    song_of,
+)
 from eigendance.server.requests import (
     answer,
     gallery_size,
@@ -23,30 +27,62 @@ from eigendance.server.requests import (
 from eigendance.server.workers import in_worker
 
 
-def bundle_response(bundle: bytes) -> Response:
-    return Response(bundle, media_type="application/octet-stream",
-                    headers={"Cache-Control": "no-cache"})
-
-
 async def get_rig(request: Request):
-    """The rig's description: the rig bundle's `meta` and the item's state."""
+    """GET /api/rigs/{id}: the rig's description.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    JSON response: the item's state and the rig bundle's `meta` (`binary.rig_meta`).
+    """
     item = await ready_rig(request)
     return await answer(lambda: {**item.as_json(), **rig_meta(item.rig, item.name,
                                                               item.revision)})
 
 
 async def get_rig_bundle(request: Request):
+    """GET /api/rigs/{id}/rig.bin: the rig bundle (docs/web.md#rig-bundle).
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    Response, the bundle of the current rig (edits included).
+    """
     return bundle_response((await ready_rig(request)).bundle)
 
 
 async def get_rig_skeleton(request: Request):
-    """The current skeleton as a skeleton JSON document (the edits included)."""
+    """GET /api/rigs/{id}/skeleton.json: the current skeleton (the edits included).
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    JSON response, a skeleton JSON document.
+    """
     item = await ready_rig(request)
     return await answer(item.rig.skeleton.to_dict)
 
 
 async def rig_stiffness(request: Request):
-    """{joints: {name: number | [per free row] | "auto"}, scale?} → the new rig bundle."""
+    """POST /api/rigs/{id}/stiffness {joints: {name: number | [per free row] | "auto"}, scale?}.
+
+    Parameters
+    ----------
+    request : path parameter id, the JSON body.
+
+    Returns
+    -------
+    Response, the new rig bundle (`Rig.with_stiffness`); 400 naming a bad value.
+    """
     rig_of(request)
     body = await json_body(request)
     if not isinstance(body, dict) or not isinstance(body.get("joints", {}), dict):
@@ -63,7 +99,16 @@ async def rig_stiffness(request: Request):
 
 
 async def rig_pose(request: Request):
-    """{joint: name or index, rotation: [3 numbers, radians]} → the new rig bundle."""
+    """POST /api/rigs/{id}/pose {joint: name or index, rotation: [3 numbers, radians]}.
+
+    Parameters
+    ----------
+    request : path parameter id, the JSON body.
+
+    Returns
+    -------
+    Response, the new rig bundle (`Rig.rotate_joint`); 400 for a joint closing a loop.
+    """
     rig_of(request)
     body = await json_body(request)
     if not isinstance(body, dict) or "joint" not in body or \
@@ -82,13 +127,32 @@ async def rig_pose(request: Request):
 
 
 async def rig_reset(request: Request):
-    """The rig as loaded again (pose and stiffness) → its bundle."""
+    """POST /api/rigs/{id}/reset: the rig as loaded again (pose and stiffness).
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    Response, its bundle.
+    """
     item = await ready_rig(request)
     return bundle_response(await in_worker(library_of(request).reset_rig, item))
 
 
 async def rig_gallery_route(request: Request):
-    """The initial gallery of mode mappings: {rig, song, size} → {mappings, default}."""
+    """POST /api/rig-gallery {rig, song, size}: the initial gallery of mode mappings.
+
+    Parameters
+    ----------
+    request : the JSON body.
+
+    Returns
+    -------
+    JSON response {"mappings": [size mapping documents], "default": the default mapping};
+    409 for a rig without vibration modes.
+    """
     body = await json_body(request)
     if not isinstance(body, dict):
         raise HTTPException(400, "expected a JSON object {rig, song, size}")

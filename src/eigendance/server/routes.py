@@ -42,7 +42,17 @@ UPLOADS_AT_ONCE = 2  # uploads decoded at the same time (each may take hundreds 
 
 
 def sniff(name: str, head: bytes) -> str | None:
-    """Why the first bytes of an upload do not match its suffix, or None if they do."""
+    """Why the first bytes of an upload do not match its suffix.
+
+    Parameters
+    ----------
+    name : the name it was uploaded under.
+    head : its first 4096 bytes.
+
+    Returns
+    -------
+    str (the reason), or None when they match.
+    """
     suffix = suffix_of(name)
     text_like = b"\0" not in head[:4096]
     checks = {
@@ -65,21 +75,59 @@ def sniff(name: str, head: bytes) -> str | None:
 
 
 async def get_config(request: Request):
-    """Rules the page shares with the library: gallery sizes."""
+    """GET /api/config: rules the page shares with the library.
+
+    Parameters
+    ----------
+    request : the request.
+
+    Returns
+    -------
+    JSONResponse {"gallery": {"min", "max", "default"}}: gallery sizes.
+    """
     return JSONResponse({"gallery": {"min": MIN_GALLERY, "max": MAX_GALLERY,
                                      "default": DEFAULT_GALLERY}})
 
 
 async def get_library(request: Request):
+    """GET /api/library: every item and the memory used.
+
+    Parameters
+    ----------
+    request : the request.
+
+    Returns
+    -------
+    JSONResponse (`Library.as_json`).
+    """
     return JSONResponse(library_of(request).as_json())
 
 
 async def get_mesh(request: Request):
+    """GET /api/meshes/{id}: a mesh item and its basis job.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    JSONResponse (`MeshItem.as_json`); 404 for an unknown id.
+    """
     return JSONResponse(mesh_of(request, request.path_params["id"]).as_json())
 
 
 async def get_basis(request: Request):
-    """The basis bundle; ?dtype=float16 sends the harmonics as float16 (half the bytes)."""
+    """GET /api/meshes/{id}/basis.bin: the basis bundle.
+
+    Parameters
+    ----------
+    request : path parameter id; ?dtype=float16 sends the harmonics as float16 (half the bytes).
+
+    Returns
+    -------
+    Response, the bundle (`binary.basis_bundle`); 409 while the basis is computed.
+    """
     item = ready_basis(request, request.path_params["id"])
     dtype = request.query_params.get("dtype", "float32")
     if dtype not in ("float32", "float16"):
@@ -93,23 +141,62 @@ async def get_basis(request: Request):
 
 
 async def get_spectrogram(request: Request):
+    """GET /api/songs/{id}/spectrogram.bin: the spectrogram bundle.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    Response, the bundle (`binary.spectrogram_bundle`).
+    """
     item = song_of(request, request.path_params["id"])
     return Response(item.bundle, media_type="application/octet-stream")
 
 
 async def get_audio(request: Request):
+    """GET /api/songs/{id}/audio: the song's file, for the page to play.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    FileResponse with the audio's media type.
+    """
     item = song_of(request, request.path_params["id"])
     media_type = AUDIO_TYPES.get(suffix_of(item.name), "application/octet-stream")
     return FileResponse(item.path, media_type=media_type)
 
 
 async def get_job(request: Request):
+    """GET /api/jobs/{id}: a basis job's state.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    JSONResponse (`Job.as_json`).
+    """
     return JSONResponse(job_of(request).as_json())
 
 
 async def job_events(request: Request):
-    """Server-sent events with the job's state until it is done or failed (or the server
-    stops)."""
+    """GET /api/jobs/{id}/events: the job's state as server-sent events, until it is done or failed
+    (or the server stops, or the page leaves).
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    StreamingResponse, text/event-stream: one `data:` line per change.
+    """
     job = job_of(request)
     stopping = library_of(request).stopping
 
@@ -131,8 +218,18 @@ async def job_events(request: Request):
 
 
 async def upload(request: Request):
-    """A raw file body named by ?name=FILE: a mesh, an audio file, a mapping or skeleton JSON.
-    201 with the new item; 200 with the item already there when the same content was."""
+    """POST /api/upload?name=FILE: a raw file body: a mesh, an audio file, a mapping or a
+    skeleton JSON.
+
+    Parameters
+    ----------
+    request : the body (at most --max-upload-mb) and ?name= with its suffix.
+
+    Returns
+    -------
+    JSONResponse {"kind", "item", "job"?, "rig"?}: 201 with the new item, 200 with the item
+    already there when the same content was; 413 too large, 415 a content that is not its suffix.
+    """
     library = library_of(request)
     name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
     if not name or name.startswith("."):
@@ -158,8 +255,19 @@ async def upload(request: Request):
 
 
 async def receive_file(request: Request, library: Library, name: str):
-    """Stream the body into a temporary file of the library folder, within the upload limit
-    (413 as soon as it is passed): (its path, its SHA-256, its first 4096 bytes)."""
+    """Stream the body into a temporary file of the library folder, within the upload limit (413 as
+    soon as it is passed).
+
+    Parameters
+    ----------
+    request : the upload.
+    library : the library (its folder and limit).
+    name : the name it was uploaded under (for messages).
+
+    Returns
+    -------
+    (its path, its SHA-256, its first 4096 bytes).
+    """
     limit = library.max_upload_bytes
     too_large = HTTPException(413, f"{name}: larger than the {limit >> 20} MiB upload limit")
     declared = request.headers.get("content-length", "")
@@ -184,7 +292,16 @@ async def receive_file(request: Request, library: Library, name: str):
 
 
 async def gallery(request: Request):
-    """The initial gallery of a mesh for a song: {mesh, song, size} → {mappings}."""
+    """POST /api/gallery {mesh, song, size}: the initial gallery of a mesh for a song.
+
+    Parameters
+    ----------
+    request : the JSON body.
+
+    Returns
+    -------
+    JSONResponse {"mappings": [S mapping documents]} (`initial_gallery`).
+    """
     body = await json_body(request)
     if not isinstance(body, dict):
         raise HTTPException(400, "expected a JSON object {mesh, song, size}")
@@ -196,7 +313,16 @@ async def gallery(request: Request):
 
 
 async def breed_route(request: Request):
-    """Children of the selected mappings: {parents, size, seed} → {mappings}."""
+    """POST /api/breed {parents, size, seed}: children of the selected mappings.
+
+    Parameters
+    ----------
+    request : the JSON body (at most 16 parents, each within the mapping sizes).
+
+    Returns
+    -------
+    JSONResponse {"mappings": [size children]} (`breed`).
+    """
     body = await json_body(request)
     if not isinstance(body, dict) or not isinstance(body.get("parents"), list):
         raise HTTPException(400, "expected a JSON object {parents: [mappings], size, seed}")
@@ -220,12 +346,31 @@ async def breed_route(request: Request):
 
 
 async def get_mapping(request: Request):
+    """GET /api/mappings/{id}: a saved mapping.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    JSON response, the mapping document.
+    """
     item = item_of(request, "mapping", request.path_params["id"])
     return await answer(lambda: item.data)
 
 
 async def save_mapping(request: Request):
-    """A mapping document → 201 with the new item (200 with the same mapping already there)."""
+    """POST /api/mappings?name=: save a mapping document.
+
+    Parameters
+    ----------
+    request : the JSON body, ?name= how the library calls it.
+
+    Returns
+    -------
+    JSONResponse, the item: 201 new, 200 when the same mapping was there.
+    """
     body = await json_body(request)
     name = os.path.basename(str(request.query_params.get("name", "mapping.json"))) or \
         "mapping.json"
@@ -234,8 +379,17 @@ async def save_mapping(request: Request):
 
 
 def removal(kind: str):
-    """The DELETE route of an item of `kind`: {removed: [ids]} (a mesh takes the rig of its
-    skin with it); 404 for an unknown id, 409 for a built-in rig."""
+    """The DELETE route of an item of `kind`.
+
+    Parameters
+    ----------
+    kind : "mesh", "song", "mapping" or "rig".
+
+    Returns
+    -------
+    The route: request → JSONResponse {"removed": [ids]} (a mesh takes the rig of its skin with
+    it); 404 for an unknown id, 409 for a built-in rig.
+    """
     async def remove(request: Request):
         removed = library_of(request).remove(kind, request.path_params["id"])
         return JSONResponse({"removed": removed})
