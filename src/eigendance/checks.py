@@ -83,11 +83,18 @@ def number(value, label: str, low: float = -math.inf, high: float = math.inf,
 def _range(low: float, high: float, above: bool) -> str:
     """'positive', 'at least 1', 'from 2 to 16' …: the range of `number` in words."""
     if math.isinf(low):
-        return f"at most {high:g}"
+        return f"at most {_bound(high)}"
     if above:
         return "positive" if low == 0 and math.isinf(high) else \
-            f"greater than {low:g}" + ("" if math.isinf(high) else f" and at most {high:g}")
-    return f"at least {low:g}" if math.isinf(high) else f"from {low:g} to {high:g}"
+            f"greater than {_bound(low)}" + ("" if math.isinf(high) else
+                                               f" and at most {_bound(high)}")
+    return f"at least {_bound(low)}" if math.isinf(high) else \
+        f"from {_bound(low)} to {_bound(high)}"
+
+
+def _bound(value: float) -> str:
+    """A bound as a message writes it: an integer in full, else 3 significant digits."""
+    return str(int(value)) if value == int(value) and abs(value) < 1e16 else f"{value:.3g}"
 
 
 def vector(value, label: str, length: int = 3, bound: float = math.inf) -> np.ndarray:

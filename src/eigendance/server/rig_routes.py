@@ -7,6 +7,7 @@ from __future__ import annotations
 from starlette.exceptions import HTTPException
 from starlette.requests import Request
 
+from eigendance.checks import number, vector
 from eigendance.modal.motion import default_mapping
 from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.music.gallery import DEFAULT_GALLERY
@@ -88,9 +89,7 @@ async def rig_stiffness(request: Request):
     if not isinstance(body, dict) or not isinstance(body.get("joints", {}), dict):
         raise HTTPException(400, "expected a JSON object {joints: {joint name: stiffness}, "
                                  "scale}")
-    scale = body.get("scale", 1.0)
-    if isinstance(scale, bool) or not isinstance(scale, int | float):
-        raise HTTPException(400, "scale must be a number ≥ 0")
+    scale = number(body.get("scale", 1.0), "scale", 0.0)
     item = await ready_rig(request)
     values = body.get("joints", {})
     bundle = await in_worker(library_of(request).edit_rig, item,
@@ -117,9 +116,7 @@ async def rig_pose(request: Request):
     joint, rotation = body["joint"], body["rotation"]
     if isinstance(joint, bool) or not isinstance(joint, str | int):
         raise HTTPException(400, "joint must be a joint name or index")
-    if len(rotation) != 3 or any(isinstance(v, bool) or not isinstance(v, int | float)
-                                 for v in rotation):
-        raise HTTPException(400, "rotation must be 3 numbers (a rotation vector, radians)")
+    rotation = vector(rotation, "rotation (a rotation vector, radians)").tolist()
     item = await ready_rig(request)
     bundle = await in_worker(library_of(request).edit_rig, item,
                                      lambda rig: rig.rotate_joint(joint, rotation))

@@ -20,6 +20,7 @@ from starlette.responses import (
     StreamingResponse,
 )
 
+from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
@@ -327,9 +328,7 @@ async def breed_route(request: Request):
     if not isinstance(body, dict) or not isinstance(body.get("parents"), list):
         raise HTTPException(400, "expected a JSON object {parents: [mappings], size, seed}")
     size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    seed = body.get("seed", 0)
-    if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**32:
-        raise HTTPException(400, "seed must be an integer from 0 to 2³² − 1")
+    seed = number(body.get("seed", 0), "seed", 0, 2**32 - 1, integer=True)
     if not body["parents"]:
         raise HTTPException(400, "select at least one parent to breed")
     if len(body["parents"]) > MAX_GALLERY:
