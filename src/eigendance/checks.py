@@ -2,11 +2,12 @@
 
 One helper per input kind, as potpourri3d's `validate_mesh` or librosa's `valid_audio`: each
 raises one `InputError` naming the input and the field, or returns the value in the form the
-code uses. The kinds with a module of their own check there, built on these: meshes
-(`harmonic.mesh.check_mesh`), audio (`music.decode.check_audio`), mappings
-(`Mapping.from_json`), skeletons (`modal.bodies.check_skeleton`), parts of a song
-(`window.check_window`), command-line numbers (`cli.options.number`, an argparse type over
-`number`).
+code uses. The kinds with a module of their own check there: meshes (`harmonic.mesh.check_mesh`),
+audio (`music.decode.open_audio` for the file; the spectrogram's analyser for the sample rate
+and the samples), mappings (`Mapping.from_json`; on the server `server.requests.mapping_from`,
+sizes first), skeletons (`modal.bodies.check_skeleton`; each JSON item in
+`modal.skeleton_file`), parts of a song (`window.Window.of`), command-line numbers
+(`cli.options.number`, an argparse type over `number`).
 """
 
 from __future__ import annotations

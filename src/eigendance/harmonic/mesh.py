@@ -86,7 +86,7 @@ class Mesh:
         -------
         Mesh, normalised into [-1, 1]³; InputError for anything that cannot be repaired.
         """
-        vertices, faces = _validated(vertices, faces, name)
+        vertices, faces = check_mesh(vertices, faces, name)
         vertices, faces, vertex_map, report = _cleaned(vertices, faces, name)
         lower, upper = vertices.min(axis=0), vertices.max(axis=0)
         center = (lower + upper) / 2
@@ -193,7 +193,26 @@ def _check_stl_length(path: str, name: str) -> None:
                          f"triangles, the file holds {(size - 84) // 50}")
 
 
-def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
+def check_mesh(vertices, faces, name: str = "mesh") -> tuple[np.ndarray, np.ndarray]:
+    """The one check of a mesh's arrays (as potpourri3d's `validate_mesh`): InputError naming
+    the mesh and the first defect that no clean-up can repair.
+
+    Parameters
+    ----------
+    vertices : (n, 3) coordinates, n ≥ 1, finite, within ±MAX_COORDINATE.
+    faces : (m, 3) vertex indices, m ≥ 1, integers in 0 … n − 1.
+    name : how messages call the mesh (a file name).
+
+    Returns
+    -------
+    (vertices float64, faces int64).
+
+    Example
+    -------
+    >>> vertices, faces = check_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    >>> vertices.dtype, faces.dtype
+    (dtype('float64'), dtype('int64'))
+    """
     vertices = np.asarray(vertices, dtype=np.float64)
     faces = np.asarray(faces)
     if vertices.ndim != 2 or vertices.shape[1] != 3 or len(vertices) == 0:
