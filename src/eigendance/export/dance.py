@@ -118,6 +118,11 @@ class Dance:
     def rest_normals(self) -> np.ndarray:
         return vertex_normals(self.rest, self.faces)
 
+    def drawn(self, positions: np.ndarray) -> np.ndarray:
+        """(…, n_d, 3) the drawn vertices' positions from the welded ones (…, n, 3): each at its
+        welded vertex (docs/design.md#appearance); the positions themselves without a look."""
+        return positions if self.appearance is None else self.appearance.drawn(positions)
+
     def frames(self, times) -> Iterator[tuple[int, np.ndarray, np.ndarray | None]]:
         """(first frame index, positions (C, n, 3) float32, normals (C, n, 3) or None when the
         rest normals hold) for `times`, chunk by chunk."""

@@ -18,7 +18,7 @@ from scipy.sparse.csgraph import connected_components
 
 # A vertex touches another piece when its closest point there lies within this many of its own
 # mean edge lengths.
-CONTACT_REACH = 1.0
+CONTACT_REACH = 2.0
 # A group of pieces that touches none is joined where it comes within its gap to the nearest
 # group plus this many of each vertex's mean edge lengths.
 JOIN_BAND = 1.0
