@@ -30,7 +30,7 @@ BLENDER_VENV := .venv-blender
 # Blender 4.2 LTS as well (the wheel for Python 3.11 of the LTS still in wide use): the export
 # tests check that both play the files, each in a virtual environment of its own.
 BLENDER_LTS_VENV := .venv-blender42
-BLENDER_LTS := bpy==4.2.0
+BLENDER_LTS := bpy==4.2.0 numpy==1.26.4  # 4.2 was built against numpy 1.x: 2.x crashes foreach_get
 blender: $(BLENDER_VENV)/.installed $(BLENDER_LTS_VENV)/.installed
 
 $(BLENDER_VENV)/.installed: pyproject.toml

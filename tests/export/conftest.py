@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from export_helpers import LONG_SONG, SONG, rig
 
@@ -72,9 +73,12 @@ def cake_basis():
 
 @pytest.fixture(scope="session")
 def cake(cake_basis, long_song):
-    """The cake on a 21 s song, gallery item 1 (negative amplification) at gain 4: morph
-    weights below 0 and above 1, which importers that clamp weights to [0, 1] must survive."""
-    mapping = initial_gallery(cake_basis, long_song, 4)[1]
+    """The cake on a 21 s song: gallery item 2 (32 harmonics) with amplifications of
+    alternating sign, at gain 4, so that morph weights go below 0 and above 1 — what importers
+    that clamp weights to [0, 1] must survive."""
+    item = initial_gallery(cake_basis, long_song, 4)[2]
+    signs = np.where(np.arange(len(item.amplification)) % 2, -1.0, 1.0)
+    mapping = item.with_genes(item.transfer, item.amplification * signs, item.seed, "alternating")
     mapping.gain = 4.0
     return HarmonicDance(cake_basis, long_song, mapping, audio=LONG_SONG, name="cake")
 
