@@ -19,6 +19,7 @@ import time
 import warnings
 
 import numpy as np
+
 from shared_data import shared_path
 
 MODELS = [("textured", "kenney_cakeBirthday.glb"), ("textured", "robot.obj"),

@@ -177,7 +177,7 @@ def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
 def _cleaned(vertices, faces, name, tolerance=0.0):
     """Merge duplicates, drop degenerate/repeated triangles and unused vertices."""
     n_input = len(vertices)
-    first, first_to_unique = weld(vertices, tolerance)  # merged vertices keep their first input order
+    first, first_to_unique = weld(vertices, tolerance)  # merged: first input order kept
     unique = vertices[first]
     faces = first_to_unique[faces]
     duplicate_vertices = n_input - len(unique)

@@ -176,9 +176,10 @@ class Skeleton:
 
     vertices (n, 3), faces (m, 3) and weights (n, n_bodies, rows summing to 1) describe the skin
     in the same coordinates as the bodies; all three are None for a bare skeleton. appearance:
-    how the skin is drawn (materials, drawn vertices on these vertices), or None (clay). After rest-pose
-    edits (`rotate_joint`), bind_vertices are the skin as loaded and pose (n_bodies, 4, 4) each
-    body's rigid transform since then: vertices = Σ_b w_b pose_b · bind_vertices.
+    how the skin is drawn (materials, drawn vertices on these vertices), or None (clay). After
+    rest-pose edits (`rotate_joint`), bind_vertices are the skin as loaded and pose
+    (n_bodies, 4, 4) each body's rigid transform since then:
+    vertices = Σ_b w_b pose_b · bind_vertices.
 
     Parameters
     ----------
