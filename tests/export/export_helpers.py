@@ -42,6 +42,7 @@ def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions")
     assert found.shape == expected.shape, (found.shape, expected.shape)
     error = np.linalg.norm(found - expected, axis=-1).max(axis=-1) / diagonal
     assert np.all(error <= tolerance), f"{what}: relative errors per frame {error}"
+    print(f"{what}: largest error {error.max():.1e} of the diagonal over {len(error)} frames")
     return error
 
 

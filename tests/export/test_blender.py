@@ -59,6 +59,9 @@ def from_blender(points: np.ndarray, kind: str) -> np.ndarray:
     ("gun_lbs", "glb"), ("gun_lbs", "usd"), ("gun_modal", "pc2")])
 def test_blender_plays_the_export_as_the_reference_moves(blender, request, tmp_path,
                                                          dance_name, kind):
+    if blender == BLENDERS["4.2"] and kind != "glb":
+        pytest.skip("Blender 4.2 LTS is checked on the glb (its shape keys and armature); "
+                    "the point cache and USD importers are checked in 5.0")
     dance = request.getfixturevalue(dance_name)
     fps = LONG_FPS if dance.duration > 20 else FPS
     path = tmp_path / f"dance.{kind}"

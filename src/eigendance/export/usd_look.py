@@ -17,7 +17,7 @@ from __future__ import annotations
 import os
 
 import numpy as np
-from pxr import Gf, Sdf, UsdGeom, UsdShade, Vt
+from pxr import Gf, Sdf, Tf, UsdGeom, UsdShade, Vt
 
 from eigendance.assets.appearance import Appearance, Material, Texture
 from eigendance.export.look_files import material_names
@@ -45,7 +45,7 @@ def bind_look(stage, mesh: UsdGeom.Mesh, appearance: Appearance, textures: list[
                                        UsdGeom.Tokens.faceVarying)
         color.Set(Vt.Vec3fArray.FromNumpy(appearance.colors[:, :3].astype(np.float32)))
         color.SetIndices(Vt.IntArray.FromNumpy(corners.astype(np.int32)))
-    names = material_names(appearance)
+    names = [Tf.MakeValidIdentifier(name) for name in material_names(appearance)]
     UsdShade.MaterialBindingAPI.Apply(mesh.GetPrim())
     UsdGeom.Xform.Define(stage, "/Dance/Materials")
     first = 0
