@@ -12,6 +12,7 @@ import pytest
 from starlette.testclient import TestClient
 from web_helpers import write_song
 
+from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, body_transforms, rig_coefficients
 from eigendance.modal.palette import default_palette
@@ -305,5 +306,22 @@ def test_a_skinned_gltf_given_alone_opens_as_a_rig(files, tmp_path):
         assert data["first"]["id"] == next(r["id"] for r in data["rigs"]
                                            if r["name"] == "RiggedSimple.glb")
         assert not data["meshes"]
+    finally:
+        library.close()
+
+
+def test_a_skinned_gltf_whose_skin_cannot_be_analysed_dances_as_a_mesh(files, tmp_path,
+                                                                       monkeypatch):
+    import eigendance.server.library as library_module
+
+    def refuse(path, name=None):
+        raise InputError(f"{name}: body 'x' has zero length")
+
+    monkeypatch.setattr(library_module, "load_rig", refuse)
+    library = Library(str(tmp_path / "broken"), k=8)
+    try:
+        item = library.add_path(files["glb"])
+        assert item.name == "RiggedSimple.glb" and item in library.meshes.values()
+        assert library.as_json()["first"] == {"kind": "mesh", "id": item.id}
     finally:
         library.close()

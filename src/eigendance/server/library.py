@@ -18,7 +18,8 @@ disk cache); each job records its progress for the page (server-sent events). `s
 solve in progress at once (its band worker processes are killed) and `close` stops the thread.
 
 Rigs: the built-in rigs are listed from the start and analysed when first asked for; a skeleton
-JSON, or a glTF file with a skin (listed once, as a rig), is analysed when added. `first` is
+JSON, or a glTF file with a skin (listed once, as a rig; as a mesh if its skin cannot be
+analysed), is analysed when added. `first` is
 the first model given to the server (a mesh or a rig): what the page opens first. Each rig item
 keeps its original skeleton and the current one (stiffness and rest-pose edits); every edit
 analyses the rig again (`Rig.from_skeleton`) and bumps its revision.
@@ -309,6 +310,11 @@ class Library:
                 item = self.add_mesh(path, name, k, key)
             elif kind == "audio":
                 item = self.add_song(path, name, key)
+            elif suffix in (".glb", ".gltf"):  # a skin that cannot be analysed: a mesh
+                try:
+                    item = self.add_rig(path, name, origin, key)
+                except InputError:
+                    item = self.add_mesh(path, name, k, key)
             else:
                 item = self.add_rig(path, name, origin, key)
         finally:
