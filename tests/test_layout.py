@@ -10,7 +10,7 @@ import ast
 import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src")
-LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure"}
+LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy"}
 TOP = "eigendance.cli"  # the command line: imports everything, imported by nothing
 
 

@@ -4,6 +4,9 @@ frame_from_xz), vertex welding, vertex normals, bounding-box diagonal."""
 from __future__ import annotations
 
 import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 
 from eigendance.errors import InputError
 
@@ -105,8 +108,9 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     Parameters
     ----------
     vertices : (n, 3) float array.
-    tolerance : 0 merges exactly equal vertices; t > 0 merges vertices whose coordinates
-        round to the same multiple of t·(bounding-box diagonal) (seams split by exporters).
+    tolerance : 0 merges exactly equal vertices; t > 0 merges vertices closer than
+        t·(bounding-box diagonal), and whatever such pairs chain together (UV seams and hard
+        edges that exporters split, docs/design.md#appearance).
 
     Returns
     -------
@@ -118,17 +122,28 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     >>> first, inverse = weld(np.array([[0., 0, 0], [1, 0, 0], [0, 0, 0]]))
     >>> first.tolist(), inverse.tolist()
     ([0, 1], [0, 1, 0])
+    >>> weld(np.array([[0., 0, 0], [1, 0, 0], [1e-9, 0, 0]]), 1e-7)[1].tolist()
+    [0, 1, 0]
     """
     vertices = np.asarray(vertices, dtype=np.float64)
-    keys = vertices
-    if tolerance > 0:
-        step = tolerance * (bounding_box_diagonal(vertices) or 1.0)
-        keys = np.round(vertices / step).astype(np.int64)
-    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
-    order = np.argsort(first)  # unique rows come sorted by value: put them in input order
+    _, first, inverse = np.unique(vertices, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    if tolerance > 0 and len(first) > 1:  # exact copies first, then pairs within the distance
+        unique = vertices[first]
+        pairs = cKDTree(unique).query_pairs(tolerance * (bounding_box_diagonal(vertices) or 1.0),
+                                            output_type="ndarray")
+        if len(pairs):
+            graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                               shape=(len(unique),) * 2)
+            _, label = connected_components(graph, directed=False)
+            lowest = np.full(label.max() + 1, len(vertices))
+            np.minimum.at(lowest, label, first)  # each group's first input vertex
+            _, first, merged = np.unique(lowest[label], return_index=True, return_inverse=True)
+            first, inverse = lowest[label][first], merged.reshape(-1)[inverse]
+    order = np.argsort(first)  # groups come sorted by value: put them in input order
     rank = np.empty_like(order)
     rank[order] = np.arange(len(order))
-    return first[order].astype(np.int64), rank[inverse.reshape(-1)].astype(np.int64)
+    return first[order].astype(np.int64), rank[inverse].astype(np.int64)
 
 
 def bounding_box_diagonal(vertices: np.ndarray) -> float:

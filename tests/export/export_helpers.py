@@ -13,14 +13,15 @@ from eigendance.modal.sample_rigs import load_rig
 from helpers import fixture_path, required  # noqa: F401 - the export tests' import
 
 SONG = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")  # 4 s
+LONG_SONG = fixture_path("audio", "kevin_macleod_vibe_ace_0s-21s.ogg")  # 21 s
 
 
-def rig(name: str, skinning: str, song, mode_count: int = 4):
+def rig(name: str, skinning: str, song, mode_count: int = 4, audio: str = SONG):
     dancer = Rig(load_rig(name), np.float64)
     modes = np.arange(min(mode_count, dancer.model.n_modes))
     mapping = dancer.mapping(song, band_mapping(song.bands, len(modes)), selected=modes,
                              amplitude=0.3, time_scale=1.0)
-    return rig_dance(dancer, song, mapping, skinning, SONG, f"{skinning}-rig")
+    return rig_dance(dancer, song, mapping, skinning, audio, f"{skinning}-rig")
 
 
 def file_times(duration: float, fps: float) -> np.ndarray:
@@ -40,4 +41,10 @@ def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions")
     assert found.shape == expected.shape, (found.shape, expected.shape)
     error = np.linalg.norm(found - expected, axis=-1).max(axis=-1) / diagonal
     assert np.all(error <= tolerance), f"{what}: relative errors per frame {error}"
+    print(f"{what}: largest error {error.max():.1e} of the diagonal over {len(error)} frames")
     return error
+
+
+def spread_frames(count: int, frames: int = 6) -> list[int]:
+    """`frames` sample indices spread over `count` samples, first and last included."""
+    return sorted({int(round(i)) for i in np.linspace(0, count - 1, frames)})

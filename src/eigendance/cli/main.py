@@ -26,7 +26,7 @@ from eigendance.cli.harmonics import (
 )
 from eigendance.cli.rigs import add_animate_rig, add_modes, run_animate_rig, run_modes
 from eigendance.cli.web import add_demo, add_serve, run_demo, run_serve
-from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.errors import EigendanceError, InputError, ModelWarning, one_line
 
 
 class Parser(argparse.ArgumentParser):
@@ -102,6 +102,18 @@ def hint(remedy: dict) -> str:
     return f"; try {' '.join(flags)}" if flags else ""
 
 
+def show_warning(message, category, *_, **__) -> None:
+    """A warning as one line on stderr: `eigendance: warning: …`.
+
+    Parameters
+    ----------
+    message : the warning.
+    category : its class.
+    *_, **__ : the rest of warnings.showwarning's arguments.
+    """
+    print(f"eigendance: warning: {one_line(str(message))}", file=sys.stderr)
+
+
 def main(argv=None) -> int:
     """Run one command.
 
@@ -121,6 +133,8 @@ def main(argv=None) -> int:
                 # would only add lines around the one line a command ends with; outputs are
                 # checked finite instead (files.check_finite).
                 warnings.simplefilter("ignore")
+            warnings.simplefilter("always", ModelWarning)  # what a model file loses: one line
+            warnings.showwarning = show_warning
             args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)

@@ -83,11 +83,13 @@ class Dance:
 
     faces (m, 3) int64; rest (n, 3) float64; center (3,) and scale: the framing of
     docs/design.md#mesh (the middle of the bounding box, half its largest side); duration (s);
-    audio: the song's file or None; name: how messages and files call it. start: where the
-    dance starts in the song (s; 0 unless it is a `window`), length: the whole song (s), note:
-    what the window changed to fit the song (or None).
+    audio: the song's file or None; name: how messages and files call it; appearance: the
+    model's look (`assets.Appearance`, drawn vertices on these), or None (clay). start: where
+    the dance starts in the song (s; 0 unless it is a `window`), length: the whole song (s),
+    note: what the window changed to fit the song (or None).
     """
 
+    appearance = None
     name: str
     faces: np.ndarray
     rest: np.ndarray
@@ -171,6 +173,20 @@ class Dance:
         """
         return vertex_normals(self.rest, self.faces, default=(0.0, 0.0, 1.0))
 
+    def drawn(self, positions: np.ndarray) -> np.ndarray:
+        """(…, n_d, 3) the drawn vertices' positions from the welded ones (…, n, 3): each at its
+        welded vertex (docs/design.md#appearance); the positions themselves without a look.
+
+        Parameters
+        ----------
+        positions : (…, n, 3).
+
+        Returns
+        -------
+        (…, n_d, 3).
+        """
+        return positions if self.appearance is None else self.appearance.drawn(positions)
+
     def frames(self, times) -> Iterator[tuple[int, np.ndarray, np.ndarray | None]]:
         """The dance at `times`, chunk by chunk.
 
@@ -242,6 +258,7 @@ class HarmonicDance(Dance):
         self.duration = self.length = float(spectrogram.duration)
         self.audio = None if audio is None else os.fspath(audio)
         self.info = {"kind": "harmonics", "k": basis.k, "mapping": mapping.to_json()}
+        self.appearance = basis.appearance
 
     def phi(self, times) -> np.ndarray:
         """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram at the dance's times
@@ -334,6 +351,8 @@ class RigDance(Dance):
         the exact body transforms, what a glTF skin plays).
     audio, name : as for `HarmonicDance`.
     info : more to write in the files' metadata.
+
+    The skin's look (`assets.Appearance`) is the skeleton's.
     """
 
     def __init__(self, rig: Rig, coefficients: Callable, duration: float,
@@ -354,6 +373,7 @@ class RigDance(Dance):
         self.audio = None if audio is None else os.fspath(audio)
         self.name = name
         self.info = {"kind": "rig", "skinning": skinning, **(info or {})}
+        self.appearance = getattr(skeleton, "appearance", None)
 
     def pose(self, times) -> tuple[np.ndarray, np.ndarray]:
         """The body transforms and mode coefficients at the dance's times.

@@ -21,6 +21,8 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance
 from eigendance.export.gltf import glb_bytes
+from eigendance.export.look_files import mtl_text, texture_files, write_textures
+from eigendance.export.look_files import obj_text as obj_text_with_look
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.song import cut_song
@@ -61,7 +63,7 @@ def format_of(path: str | os.PathLike, format: str | None = None) -> str:
 
 
 def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
-                    clipped: bool = False) -> dict:
+                    clipped: bool = False, appearance=None) -> dict:
     """The files an export writes.
 
     Parameters
@@ -70,11 +72,13 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
     format : "glb", "pc2" or "usd".
     audio : the song's file, or None.
     clipped : the song is cut to a window (it is written anew, never the song itself).
+    appearance : the model's look (`assets.Appearance`), or None.
 
     Returns
     -------
-    {"main", "mesh" (pc2's rest OBJ), "song"}: paths, None for a file not written (a whole
-    song already there under that name, from an earlier export, is not written again).
+    {"main", "mesh" (pc2's rest OBJ), "song", and with a look outside a glb "materials" (pc2's
+    MTL) and "texture<i>" (each image)}: paths, None for a file not written (a whole song
+    already there under that name, from an earlier export, is not written again).
     """
     path = os.fspath(path)
     stem = os.path.splitext(path)[0]
@@ -88,7 +92,12 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
         if not clipped and (same or (os.path.isfile(song)
                                      and filecmp.cmp(song, audio, shallow=False))):
             song = None  # the song is already there under that name (an earlier export's)
-    return {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
+    paths = {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
+    if appearance is not None and format != "glb":
+        paths["materials"] = stem + ".mtl" if format == "pc2" else None
+        paths.update({f"texture{index}": texture for index, texture in
+                      enumerate(texture_files(path, appearance))})
+    return paths
 
 
 def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
@@ -115,8 +124,10 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     if not (np.isfinite(fps) and 0 < fps <= 1000):
         raise InputError(f"frames per second must be in (0, 1000], got {fps}")
     times = frame_times(dance.duration, fps)
-    paths = companion_paths(path, format, dance.audio, dance.clipped)
-    written = [p for p in (paths["main"], paths["mesh"], paths["song"]) if p is not None]
+    look = dance.appearance
+    paths = companion_paths(path, format, dance.audio, dance.clipped, look)
+    written = [p for p in paths.values() if p is not None]
+    textures = [p for name, p in paths.items() if name.startswith("texture")]
     song_name = None if dance.audio is None else \
         os.path.basename(os.path.splitext(paths["main"])[0] + suffix_of(dance.audio))
     if paths["song"] is None and dance.audio is not None and \
@@ -129,11 +140,11 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
 
     with Outputs(written, force) as outputs:
         main = outputs.temporary(paths["main"])
-        difference = _write(format, dance, times, fps, main, song_name, step)
+        difference = _write(format, dance, times, fps, main, song_name, step, textures)
         if format == "pc2":
-            with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
-                file.write(obj_text(dance.rest, dance.faces,
-                                    f"eigendance: rest mesh of {os.path.basename(path)}"))
+            _write_obj(outputs, paths, dance, os.path.basename(path), textures)
+        if textures:
+            write_textures(outputs, look, textures)
         if paths["song"] and dance.clipped:
             cut_song(dance.audio, outputs.temporary(paths["song"]), dance.start, dance.duration)
         elif paths["song"]:
@@ -145,7 +156,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
 
 
 def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: str | None,
-           step) -> float | None:
+           step, textures) -> float | None:
     """Write the main file of an export; the skinning difference of a modal-skinned rig's glb
     (else None)."""
     if format == "glb":
@@ -160,8 +171,22 @@ def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: s
         with open(path, "wb") as file:
             write_pc2(file, dance, times, step)
     else:
-        write_usd(path, dance, times, fps, song_name, step)
+        write_usd(path, dance, times, fps, song_name, step, textures)
     return None
+
+
+def _write_obj(outputs, paths, dance: Dance, name: str, textures) -> None:
+    """The rest mesh beside a point cache (with its MTL when the dance has a look)."""
+    comment = f"eigendance: rest mesh of {name}"
+    with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
+        if dance.appearance is None:
+            file.write(obj_text(dance.rest, dance.faces, comment))
+        else:
+            file.write(obj_text_with_look(dance.rest, dance.appearance, paths["materials"],
+                                          comment))
+    if dance.appearance is not None:
+        with open(outputs.temporary(paths["materials"]), "w", encoding="utf-8") as file:
+            file.write(mtl_text(dance.appearance, textures))
 
 
 def skinning_difference(dance: RigDance, times) -> float:

@@ -73,6 +73,7 @@ class HarmonicBasis:
     residual: np.ndarray
     laplacian: str = "cotan"
     seconds: float = 0.0  # time the eigen-solve took (not saved; 0 when it came from the cache)
+    appearance: object = None  # the mesh's assets.Appearance (not saved; docs/design.md#appearance)
 
     @property
     def k(self) -> int:
@@ -110,7 +111,7 @@ class HarmonicBasis:
         coefficients = eigenvectors.T @ (mass[:, None] * mesh.vertices)
         residual = mesh.vertices - eigenvectors @ coefficients
         return cls(mesh.vertices, mesh.faces, mesh.center, mesh.scale, mass, eigenvalues,
-                   eigenvectors, coefficients, residual, laplacian, seconds)
+                   eigenvectors, coefficients, residual, laplacian, seconds, mesh.appearance)
 
     @classmethod
     def from_mesh(cls, mesh: Mesh | str | os.PathLike, k: int, laplacian: str = "cotan",

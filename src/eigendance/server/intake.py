@@ -1,8 +1,9 @@
 """Files into the library: meshes, songs, mappings and rigs (docs/design.md#server).
 
 A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind:
-a mesh (its basis queued, and its rig when a glTF has a skin), a song (decoded into its
-spectrogram), a mapping, or a rig (a skeleton JSON is a rig, any other JSON a mapping). One
+a mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a
+skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its
+skin cannot be analysed). One
 item per distinct content (`server.contents`): the same bytes again answer the item already
 there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths.
@@ -104,6 +105,8 @@ class Intake:
             document = read_json(path, name)
             if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
                 kind = "rig"
+        elif kind == "mesh" and suffix in (".glb", ".gltf") and has_skin(path):
+            kind = "rig"  # a skinned glTF is a rig (its skin the mesh the modes move)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
             return self.add_mapping(document, name)
@@ -113,9 +116,13 @@ class Intake:
         try:
             if kind == "mesh":
                 item = self.add_mesh(path, name, k, key)
-                self.add_skinned_rig(item, path, origin)
             elif kind == "audio":
                 item = self.add_song(path, name, key)
+            elif suffix in (".glb", ".gltf"):  # a skin that cannot be analysed: a mesh
+                try:
+                    item = self.add_rig(path, name, origin, key)
+                except InputError:
+                    item = self.add_mesh(path, name, k, key)
             else:
                 item = self.add_rig(path, name, origin, key)
         finally:
@@ -212,29 +219,3 @@ class Intake:
         rigs.analyse(item, Rig(load_rig(path, name)))
         self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
         return item
-
-    def add_skinned_rig(self, mesh: MeshItem, path: str, origin: str) -> RigItem | None:
-        """The rig of a mesh file that has a skin (glTF). A skin that cannot be analysed is
-        kept as an item with its error, so the page can say why.
-
-        Parameters
-        ----------
-        mesh : the mesh item of the same file.
-        path : the file.
-        origin : "file" or "upload".
-
-        Returns
-        -------
-        RigItem, or None when the file has no skin.
-        """
-        if not has_skin(path):
-            return None
-        item = RigItem(new_id(), mesh.name, origin, path)
-        try:
-            rigs.analyse(item, Rig(load_rig(path, mesh.name)))
-        except EigendanceError as error:
-            item.error = self.shelf.public(str(error), {path: mesh.name})
-        self.shelf.admit(item, self.shelf.rigs, f"{mesh.name}: the rig")
-        mesh.rig = item.id
-        return item
-

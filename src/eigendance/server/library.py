@@ -9,6 +9,9 @@ The library is the front of single-purpose parts, as trimesh's caching.py splits
   an item holds, least recently used first out), lookups and removal;
 - `server.solver`: the queue of bases computed one at a time;
 - `server.rigs`: rig analysis and edits.
+
+A skinned glTF is listed once, as a rig (as a mesh if its skin cannot be analysed). `first` is
+the first model given to the server (a mesh or a rig): what the page opens first.
 """
 
 from __future__ import annotations
@@ -56,11 +59,42 @@ class Library:
         for rig_name in SAMPLE_RIGS:
             item = RigItem(new_id(), rig_name, "built-in", rig_name)
             self.rigs[item.id] = item
+        self.first: dict | None = None  # {"kind": "mesh" | "rig", "id"} of the first model file
         # The API of the parts: the intake adds items, the shelf finds, removes and describes them.
-        self.add_path, self.add_upload = self.intake.add_path, self.intake.add_upload
-        self.add_mapping = self.intake.add_mapping
-        self.get, self.remove = self.shelf.get, self.shelf.remove
-        self.public, self.as_json = self.shelf.public, self.shelf.as_json
+        self.add_upload, self.add_mapping = self.intake.add_upload, self.intake.add_mapping
+        self.get, self.remove, self.public = self.shelf.get, self.shelf.remove, self.shelf.public
+
+    def add_path(self, path: str, name: str | None = None, k: int | None = None):
+        """Register a file given to the server (`Intake.add_path`); the first model becomes
+        `first`.
+
+        Parameters
+        ----------
+        path : the file.
+        name : how the page calls it (default: the file's name).
+        k : harmonics of a mesh's basis (default the library's).
+
+        Returns
+        -------
+        The item: new, or the one already there with the same content.
+        """
+        item = self.intake.add_path(path, name, k)
+        if self.first is None and isinstance(item, MeshItem | RigItem):
+            self.first = {"kind": "mesh" if isinstance(item, MeshItem) else "rig", "id": item.id}
+        return item
+
+    def as_json(self) -> dict:
+        """The library as `GET /api/library` answers it.
+
+        Returns
+        -------
+        `Shelf.as_json` and "first": the first model's {"kind", "id"} while it is there, else
+        None.
+        """
+        answer = self.shelf.as_json()
+        present = self.first is not None and self.shelf.find(self.first["id"]) is not None
+        answer["first"] = self.first if present else None
+        return answer
 
     # --- the solve queue's state, as the routes and the terminal see it ----------------------
     @property
