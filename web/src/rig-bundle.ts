@@ -82,6 +82,28 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
   };
 }
 
+/** A frequency as the page shows it, everywhere: as played, s·ν (Hz), labelled with the time
+ * scale s when it is not 1 ("2.40 Hz (×1.20 time scale)"). */
+export function playedFrequency(natural: number, timeScale: number): string {
+  const played = `${(natural * timeScale).toFixed(2)} Hz`;
+  return Math.abs(timeScale - 1) < 5e-3 ? played
+    : `${played} (×${timeScale.toFixed(2)} time scale)`;
+}
+
+/** "mode 4", "modes 1–3, 5": 0-based mode indices as the page numbers them (from 1). */
+export function modesLabel(modes: ArrayLike<number>): string {
+  const sorted = [...new Set(Array.from(modes))].sort((a, b) => a - b);
+  const runs: string[] = [];
+  for (let i = 0; i < sorted.length;) {
+    let j = i;
+    while (j + 1 < sorted.length && sorted[j + 1] === sorted[j] + 1) j++;
+    runs.push(j > i ? `${sorted[i] + 1}–${sorted[j] + 1}` : `${sorted[i] + 1}`);
+    i = j + 1;
+  }
+  if (!runs.length) return "still";
+  return `${sorted.length === 1 ? "mode" : "modes"} ${runs.join(", ")}`;
+}
+
 /** The scale σ = 2 / diagonal that brings the skin to the page's normalised units (the
  * harmonics' size: a diagonal of 2, centred at 0). */
 export function normalising(rig: Rig): number { return rig.diagonal > 0 ? 2 / rig.diagonal : 1; }

@@ -87,9 +87,11 @@ class Dance:
 
     faces (m, 3) int64; rest (n, 3) float64; center (3,) and scale: the framing of
     docs/design.md#mesh (the middle of the bounding box, half its largest side); duration (s);
-    audio: the song's file or None; name: how messages and files call it.
+    audio: the song's file or None; name: how messages and files call it; start: the song's
+    time (s) at the dance's time 0 (0 but for part of a song: `export.window`).
     """
 
+    start: float = 0.0
     name: str
     faces: np.ndarray
     rest: np.ndarray

@@ -59,13 +59,16 @@ def check_size(width: int, height: int) -> None:
             raise InputError(f"size {width}x{height}: H.264 in yuv420p needs even sides")
 
 
-def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str) -> list[str]:
-    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4."""
+def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str,
+                   window: tuple[float, float] | None = None) -> list[str]:
+    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4; `window`
+    (start, duration) in seconds: only that part of the song's sound."""
     rate = Fraction(fps).limit_denominator(1001)
+    part = [] if window is None else ["-ss", f"{window[0]:.6f}", "-t", f"{window[1]:.6f}"]
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-y",
             "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
             "-framerate", f"{rate.numerator}/{rate.denominator}", "-i", "pipe:0",
-            "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
+            *part, "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
             "-vf", "vflip", "-c:v", "libx264", "-preset", PRESET, "-crf", str(CRF),
             "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", AUDIO_BITRATE,
             "-map_metadata", "-1", "-fflags", "+bitexact", "-flags:v", "+bitexact",
@@ -196,7 +199,8 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     Parameters
     ----------
     path : the .mp4 to write (atomically; never overwritten unless `force`).
-    dances : one dance, or several of the same mesh drawn as the page's gallery grid.
+    dances : one dance, or several of the same mesh drawn as the page's gallery grid; part of
+        a song (`export.window`) has the sound of that part.
     looks : one `Look` per dance.
     audio : the song's file (any format ffmpeg reads), muxed as AAC.
     fps : frames per second; size : (width, height) in pixels, both even.
@@ -216,8 +220,10 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     duration = max(dance.duration for dance in dances)
     times = video_times(duration, fps)
     path = os.fspath(path)
+    # Part of a song (export.window): the sound of that part only.
+    part = (dances[0].start, duration) if "start" in dances[0].info else None
     with Outputs([path], force) as outputs:
-        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path))
+        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), part)
         log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
         encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
                                    stderr=log)

@@ -45,6 +45,7 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping
 from eigendance.server.binary import rig_meta
+from eigendance.server.export_route import EXPORT_ROUTES
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library, RigItem, check_mapping_size
 from eigendance.server.workers import in_worker
@@ -519,6 +520,7 @@ API_ROUTES = [
     Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),
     Route("/api/rigs/{id}/reset", rig_reset, methods=["POST"]),
     Route("/api/rig-gallery", rig_gallery_route, methods=["POST"]),
+    *EXPORT_ROUTES,
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
 ]
 

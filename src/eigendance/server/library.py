@@ -175,9 +175,10 @@ class MappingItem:
     name: str
     data: dict
     content: tuple | None = None
+    origin: str = "upload"  # "file": given to `serve` (the page opens it at start)
 
     def as_json(self) -> dict:
-        return {"id": self.id, "name": self.name}
+        return {"id": self.id, "name": self.name, "origin": self.origin}
 
     def held(self) -> int:
         return footprint(self.data)
@@ -293,7 +294,7 @@ class Library:
                 kind = "rig"
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
-            return self.add_mapping(document, name)
+            return self.add_mapping(document, name, origin)
         existing = self._claim(key)
         if existing is not None:
             return existing, False
@@ -357,9 +358,9 @@ class Library:
         self._admit(item, self.songs, f"{name}: its spectrogram")
         return item
 
-    def add_mapping(self, data, name: str) -> tuple[MappingItem, bool]:
+    def add_mapping(self, data, name: str, origin: str = "upload") -> tuple[MappingItem, bool]:
         """A mapping item from a parsed mapping document, and whether it is new (False: the
-        same mapping was there, and is answered)."""
+        same mapping was there, and is answered). `origin` "file": given to `serve`."""
         check_mapping_size(data, name)
         mapping = Mapping.from_json(data, name)  # EigendanceError naming the bad field
         fields = mapping.to_json()
@@ -370,7 +371,7 @@ class Library:
             if existing is not None:
                 self.budget.touch(existing.id)
                 return existing, False
-            item = MappingItem(new_id(), name, fields, content=key)
+            item = MappingItem(new_id(), name, fields, content=key, origin=origin)
             self._admit(item, self.mappings, f"{name}: the mapping")
             return item, True
 
