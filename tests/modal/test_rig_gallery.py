@@ -21,7 +21,6 @@ import math
 
 import numpy as np
 import pytest
-from helpers import fixture_path
 
 from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.palette import DANCE_BAND
@@ -29,6 +28,7 @@ from eigendance.modal.rig import Rig, rig_gallery
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, sample_rig
 from eigendance.music.demo_music import demo_track
 from eigendance.music.spectrogram import Spectrogram
+from helpers import fixture_path
 
 BOUND = math.sqrt(2 / 3)
 SONGS = ["kevin_macleod_vibe_ace_20s-24s.ogg", "sorohanro_solo_trumpet_06.ogg", "demo"]

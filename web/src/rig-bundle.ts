@@ -60,6 +60,8 @@ export interface Rig {
   bodyTwists: Float32Array; // k*b*6
   jointBodies: Uint32Array; // j*2
   jointPositions: Float32Array; // j*3
+  /** (j, k) row-major: each joint's bend per unit coefficient of each mode (the palette's cap) */
+  jointBend: Float32Array;
 }
 
 export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
@@ -78,7 +80,7 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
     boneMatrices: f("bone_matrices"), bindMatrices: f("bind_matrices"),
     bodyCenters: f("body_centers"), bodyRotations: f("body_rotations"), bodyEnds: f("body_ends"),
     bodyTwists: f("body_twists"), jointBodies: u("joint_bodies"),
-    jointPositions: f("joint_positions"),
+    jointPositions: f("joint_positions"), jointBend: f("joint_bend"),
   };
 }
 

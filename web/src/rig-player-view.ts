@@ -5,7 +5,8 @@
 // per-joint stiffness. *save mapping* writes a version-2 mapping with `modes` and `offset`.
 import { $, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
-import { paletteOf, prepareRig } from "./modal-skin";
+import { prepareRig } from "./modal-skin";
+import { paletteOf } from "./palette";
 import type { RigPrepared } from "./modal-skin";
 import { playedFrequency } from "./rig-bundle";
 import type { ModeSettings, Rig } from "./rig-bundle";

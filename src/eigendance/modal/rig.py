@@ -23,7 +23,6 @@ from eigendance.music.gallery import DEFAULT_GALLERY, initial_gallery
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 
-
 QUADRATURE = math.pi / 2  # phase between gallery items next to each other in tempo
 
 

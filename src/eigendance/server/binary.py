@@ -22,7 +22,12 @@ import struct
 
 import numpy as np
 
-from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
+from eigendance.modal.palette import (
+    default_phases,
+    joint_bend,
+    mode_reach,
+    single_mode_amplitudes,
+)
 from eigendance.modal.skeleton import CONSTRAINED_ROWS
 
 MAGIC = b"EDB1"
@@ -179,4 +184,5 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
         "body_twists": twists,
         "joint_bodies": model.joint_bodies.astype(np.uint32),
         "joint_positions": model.joint_positions,
+        "joint_bend": joint_bend(model),  # (j, k): the page's palette caps the bend with it
     })
