@@ -47,7 +47,8 @@ export interface ExportRequest {
  * (at least a tenth of a second). */
 export function clipWindow(start: number, wanted: number, length: number):
     { start: number; duration: number } {
-  const begin = Math.max(0, Math.min(Number.isFinite(start) ? start : 0, Math.max(0, length - 0.1)));
+  const from = Number.isFinite(start) ? start : 0;
+  const begin = Math.max(0, Math.min(from, Math.max(0, length - 0.1)));
   const span = Number.isFinite(wanted) && wanted > 0 ? wanted : CLIP_SECONDS;
   return { start: Math.round(begin * 100) / 100,
     duration: Math.round(Math.max(0.1, Math.min(span, length - begin)) * 100) / 100 };

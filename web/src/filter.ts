@@ -160,7 +160,8 @@ export function activeWeights(k4: number, weights: Float32Array):
   for (let j = 0; j < k4; j++) {
     for (let q = 0; q < 4; q++) {
       const w = 12 * j + q;
-      if (weights[w] !== 0 || weights[w + 4] !== 0 || weights[w + 8] !== 0) index[count++] = 4 * j + q;
+      const moves = weights[w] !== 0 || weights[w + 4] !== 0 || weights[w + 8] !== 0;
+      if (moves) index[count++] = 4 * j + q;
     }
   }
   const x = new Float32Array(count), y = new Float32Array(count), z = new Float32Array(count);

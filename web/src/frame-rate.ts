@@ -73,7 +73,8 @@ export class FrameRateWatch {
     }
     const { target } = viewer.resolution.rule;
     const slow = tiles !== null && !this.pending && this.events.playing() && fps > 0
-      && fps < target && viewer.resolution.atFloor && !this.dismissed.has(tiles);
+      && fps < target && (viewer.resolution.atFloor || !viewer.dynamic)
+      && !this.dismissed.has(tiles);
     if (!slow) { this.slowSince = null; return; }
     this.slowSince ??= now;
     if (now - this.slowSince < SLOW_FOR_MS || !$("notice").hidden) return;

@@ -32,6 +32,8 @@ export interface Rig {
   id: string;
   name: string;
   revision: number;
+  /** its pose or stiffness differs from the rig as loaded (the server keeps edits) */
+  edited: boolean;
   /** vertices, faces, bodies, joints, vibration modes, texel groups ⌈k/4⌉ */
   n: number; m: number; b: number; j: number; k: number; G: number;
   /** the skin's bounding box: centre and diagonal (file units) */
@@ -70,7 +72,8 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
   const f = (name: string) => arrays[name].data as Float32Array;
   const u = (name: string) => arrays[name].data as Uint32Array;
   return {
-    id, name: meta.name, revision: meta.revision, n: meta.n, m: meta.faces, b: meta.bodies,
+    id, name: meta.name, revision: meta.revision, edited: Boolean(meta.edited), n: meta.n,
+    m: meta.faces, b: meta.bodies,
     j: meta.joints, k: meta.modes, G: meta.groups, center: meta.center, diagonal: meta.diagonal,
     jointList: meta.joint_list, bodyNames: meta.body_names, palette: meta.palette,
     offset: meta.offset ?? 0,

@@ -17,9 +17,13 @@ import type { Shot, Look } from "./viewer";
 export type RigGalleryMode = "modes" | "dances";
 
 /** What a dance drives: the modes its bands reach with a non-zero amplification, and its time
- * scale ("modes 1–2 · ×1.15 time scale"). */
-export function danceLabel(prepared: RigPrepared): string {
+ * scale ("modes 1–2 · ×1.15 time scale"; one mode: its frequency as played). */
+export function danceLabel(rig: Rig, prepared: RigPrepared): string {
   const driven = drivenHarmonics(prepared).map((target) => prepared.selected[target]);
+  if (driven.length === 1) {
+    return `${modesLabel(driven)} · ${playedFrequency(rig.frequencies[driven[0]],
+      prepared.timeScale)}`;
+  }
   return `${modesLabel(driven)} · ×${prepared.timeScale.toFixed(2)} time scale`;
 }
 
@@ -218,7 +222,7 @@ export class RigGalleryView {
         + `${prepared.timeScale.toFixed(2)}; click to select, then combine`;
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
-      label.textContent = `#${index + 1} · ${danceLabel(prepared)}`;
+      label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`;
       label.title = "the modes this dance's mapping drives (a band reaches them with a non-zero "
         + "amplification), at its time scale";
       element.classList.toggle("selected", this.selectedDances.has(index));

@@ -164,10 +164,11 @@ export class RigPlayerView {
     const rig = this.rig;
     if (!rig) return;
     const s = this.palette?.time_scale ?? rig.palette?.time_scale ?? 1;
-    $("rig-info").textContent = `${rig.name}: ${rig.b} bodies, ${rig.j} joints, ${rig.k} modes, `
-      + `${rig.n} vertices · lowest mode ${rig.k ? playedFrequency(rig.frequencies[0], s) : "–"}`
-      + (rig.revision ? ` · pose or stiffness edited (${rig.revision} edits, kept by the server `
-        + "until reset pose)" : "");
+    const count = (n: number, one: string, many: string) => `${n} ${n === 1 ? one : many}`;
+    $("rig-info").textContent = `${rig.name}: ${count(rig.b, "body", "bodies")}, `
+      + `${count(rig.j, "joint", "joints")}, ${count(rig.k, "mode", "modes")}, `
+      + `${count(rig.n, "vertex", "vertices")} · lowest mode ${rig.k ? playedFrequency(rig.frequencies[0], s) : "–"}`
+      + (rig.edited ? " · pose or stiffness edited (kept by the server until reset pose)" : "");
   }
 
   /** Pick joint j for the pose editor and the stiffness field (−1: none). */

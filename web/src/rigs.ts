@@ -76,9 +76,10 @@ export class RigStage {
       this.enter();
       this.viewer.choosePath(this.path);
       // The server keeps a rig's edits until "reset pose": a reload shows them, and says so.
-      this.events.status(`${rig.name}: ${rig.k} vibration modes` + (rig.revision
-        ? " · its pose or stiffness was edited earlier (the server keeps edits; reset pose "
-          + "goes back to the rig as loaded)" : ""));
+      const modes = `${rig.k} vibration mode${rig.k === 1 ? "" : "s"}`;
+      this.events.status(`${rig.name}: ${modes}` + (rig.edited ? " · its pose or stiffness was "
+        + "edited earlier (the server keeps edits; reset pose goes back to the rig as loaded)"
+        : ""));
     } finally {
       this.events.loading(null);
     }

@@ -304,6 +304,9 @@ export class Viewer {
     }
   }
 
+  /** Whether the render scale follows the frame rate (not with `?scale=`). */
+  get dynamic(): boolean { return this.fixedScale === null; }
+
   /** Draw into a buffer of the render scale's size (the browser scales it up to the page). */
   private applyScale(): void {
     const ratio = Math.min(window.devicePixelRatio, 2) * this.resolution.scale;

@@ -133,13 +133,14 @@ def rest_bone_matrices(model) -> np.ndarray:
     return bones
 
 
-def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
-    """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`."""
+def rig_meta(rig, name: str = "rig", revision: int = 0, edited: bool = False) -> dict:
+    """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`;
+    `edited`: its pose or stiffness differs from the rig as loaded."""
     skeleton, model, palette = rig.skeleton, rig.model, rig.palette
     nm = model.n_modes
     low, high = skeleton.vertices.min(axis=0), skeleton.vertices.max(axis=0)
     return {
-        "kind": "rig", "name": name, "revision": int(revision),
+        "kind": "rig", "name": name, "revision": int(revision), "edited": bool(edited),
         "n": int(len(skeleton.vertices)),
         "faces": int(len(skeleton.faces)), "bodies": model.n_bodies,
         "joints": len(skeleton.joints), "modes": int(nm), "groups": (nm + 3) // 4,
@@ -161,7 +162,7 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
     }
 
 
-def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
+def rig_bundle(rig, name: str = "rig", revision: int = 0, edited: bool = False) -> bytes:
     """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32."""
     skeleton, model, skin = rig.skeleton, rig.model, rig.skin
     n, nm = len(skin.vertices), model.n_modes
@@ -169,7 +170,7 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
     bones = rest_bone_matrices(model)
     column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
     twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
-    return pack(rig_meta(rig, name, revision), {
+    return pack(rig_meta(rig, name, revision, edited), {
         "vertices": skin.vertices, "faces": skeleton.faces.astype(np.uint32),
         "tau": packed_modes(skin.displacement, n), "rho": packed_modes(skin.rotation, n),
         "frequencies": model.frequencies,

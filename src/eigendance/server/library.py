@@ -198,6 +198,7 @@ class RigItem:
     rig: Rig | None = None
     bundle: bytes | None = None
     revision: int = 0
+    edited: bool = False  # its pose or stiffness differs from the rig as loaded
     error: str = ""
     content: tuple | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
@@ -209,7 +210,7 @@ class RigItem:
     def as_json(self) -> dict:
         info = {"id": self.id, "name": self.name, "origin": self.origin,
                 "ready": self.rig is not None, "revision": self.revision,
-                "error": self.error or None}
+                "edited": self.edited, "error": self.error or None}
         if self.rig is not None:
             info.update(bodies=self.rig.skeleton.n_bodies, joints=len(self.rig.skeleton.joints),
                         vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes)
@@ -519,10 +520,11 @@ class Library:
 
     def _analyse(self, item: RigItem, skeleton: Skeleton, original: Skeleton | None = None):
         rig = Rig.from_skeleton(skeleton)
-        bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None))
+        edited = original is not None and skeleton is not original  # a reset is not an edit
+        bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None), edited)
         item.original = original or skeleton
         item.revision += item.rig is not None
-        item.rig, item.bundle = rig, bundle
+        item.rig, item.bundle, item.edited = rig, bundle, edited
 
     # --- lookups, removal ---------------------------------------------------------------------
     def get(self, kind: str, item_id: str):
