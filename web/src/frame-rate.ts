@@ -54,8 +54,10 @@ export class FrameRateWatch {
     const { fps } = viewer;
     const readout = $("fps");
     const scale = viewer.resolution.scale;
+    const detail = viewer.resolution.detail;
     readout.textContent = fps > 0 ? `${fps.toFixed(fps < 10 ? 1 : 0)} fps`
-      + (scale < 1 ? ` at ${Math.round(100 * scale)}% resolution` : "") : "";
+      + (scale < 1 ? ` at ${Math.round(100 * scale)}% resolution` : "")
+      + (detail < 1 ? ` · ${Math.round(100 * detail)}% triangles` : "") : "";
     readout.title = viewer.resolution.describe() ?? "frames the page draws per second while "
       + "the song plays";
     readout.classList.toggle("slow", fps > 0 && fps < viewer.resolution.rule.target);
@@ -73,15 +75,15 @@ export class FrameRateWatch {
     }
     const { target } = viewer.resolution.rule;
     const slow = tiles !== null && !this.pending && this.events.playing() && fps > 0
-      && fps < target && (viewer.resolution.atFloor || !viewer.dynamic)
+      && fps < target && (viewer.resolution.exhausted || !viewer.dynamic)
       && !this.dismissed.has(tiles);
     if (!slow) { this.slowSince = null; return; }
     this.slowSince ??= now;
     if (now - this.slowSince < SLOW_FOR_MS || !$("notice").hidden) return;
     const offer = fewerTiles(tiles, fps, target, this.events.smallest());
     const rate = fps.toFixed(fps < 10 ? 1 : 0);
-    const floor = viewer.resolution.scale < 1
-      ? `, even at ${Math.round(100 * viewer.resolution.scale)}% resolution` : "";
+    const said = viewer.resolution.describe();
+    const floor = said ? `, even ${said.replace(/ to keep .*/, "")}` : "";
     $("notice-text").textContent = `This page draws only ${rate} frames per second with `
       + `${tiles} tiles${floor} (it aims at ${target}).`;
     const button = $<HTMLButtonElement>("notice-fewer");

@@ -86,6 +86,7 @@ function makeHooks(app: App, ready: Promise<void>) {
     setPath: (path: DeformationPath) => viewer.setPath(path),
     /** The render scale (dynamic resolution) of the harmonics' viewer. */
     resolution: () => ({ scale: viewer.resolution.scale, atFloor: viewer.resolution.atFloor,
+      detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
       said: viewer.resolution.describe(), pixelRatio: viewer.renderer.getPixelRatio() }),
     /** The export panel's request for the window in its fields (what `export` would send). */
     exportRequest: () => app.exporter.request(),

@@ -343,6 +343,7 @@ export class Viewer {
     this.studio.setAspect(rect.width / rect.height);
     const { look } = shot;
     const player = stage.view === "player";
+    deformer.useDetail(player ? 1 : this.resolution.detail); // one model: all its triangles
     deformer.setTile(weights, cpu, {
       color: CLAY,
       wireframe: look.shading === "wireframe",
