@@ -7,7 +7,7 @@ import { bodyMatrices } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { toFileUnits } from "./rig-bundle";
 import type { Skinning } from "./rig-player-view";
-import type { DeformationPath, View } from "./viewer";
+import type { DeformationPath, View, Viewer } from "./viewer";
 
 export type Hooks = ReturnType<typeof makeHooks>;
 
@@ -52,9 +52,9 @@ function makeHooks(app: App, ready: Promise<void>) {
       return Array.from(deformCPU(motion.basis!, motion.weights(prepared(tile), t)));
     },
     /** Downsampled RGB pixels of each tile's view, read from the canvas. */
-    tilePixels: (step = 4): number[][] => viewer.pixelsOf(gallery.views(), step),
+    tilePixels: (step = 4): number[][] => pixelsOf(viewer, gallery.views(), step),
     /** The same for the player's view. */
-    playerPixels: (step = 4): number[] => viewer.pixelsOf([document.getElementById(
+    playerPixels: (step = 4): number[] => pixelsOf(viewer, [document.getElementById(
       "player-area")!], step)[0],
     mappings: () => gallery.mappings(),
     /** The player's mapping as "save mapping" writes it. */
@@ -169,8 +169,8 @@ function rigHooks(app: App) {
       figure.pose(bodyMatrices(rigs.rig!, rigs.motion.coefficients(prepared("player"), t)));
       return Array.from(figure.lbsPositions());
     },
-    tilePixels: (step = 4): number[][] => rigs.viewer.pixelsOf(rigs.gallery.views(), step),
-    playerPixels: (step = 4): number[] => rigs.viewer.pixelsOf([document.getElementById(
+    tilePixels: (step = 4): number[][] => pixelsOf(rigs.viewer, rigs.gallery.views(), step),
+    playerPixels: (step = 4): number[] => pixelsOf(rigs.viewer, [document.getElementById(
       "rig-player-area")!], step)[0],
     labels: () => rigs.gallery.labels(),
     setView: (view: View) => app.setView(view),
@@ -237,4 +237,26 @@ function rigHooks(app: App) {
       return { frame: (performance.now() - start) / count };
     },
   };
+}
+
+/** Downsampled RGB pixels of each element's area of the viewer's canvas, as drawn. */
+function pixelsOf(viewer: Viewer, elements: HTMLElement[], step: number): number[][] {
+  const gl = viewer.renderer.getContext();
+  const height = viewer.renderer.domElement.height;
+  const ratio = viewer.renderer.getPixelRatio();
+  return elements.map((element) => {
+    const r = element.getBoundingClientRect();
+    const w = Math.floor(r.width * ratio), h = Math.floor(r.height * ratio);
+    const pixels = new Uint8Array(w * h * 4);
+    gl.readPixels(Math.floor(r.left * ratio), height - Math.floor(r.bottom * ratio), w, h,
+      gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    const out: number[] = [];
+    for (let y = 0; y < h; y += step) {
+      for (let x = 0; x < w; x += step) {
+        const i = 4 * (y * w + x);
+        out.push(pixels[i], pixels[i + 1], pixels[i + 2]);
+      }
+    }
+    return out;
+  });
 }

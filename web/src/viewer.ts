@@ -254,28 +254,6 @@ export class Viewer {
       width: Math.floor(r.width * ratio), height: Math.floor(r.height * ratio) };
   }
 
-  /** Downsampled RGB pixels of each element's area of the canvas, as drawn. */
-  pixelsOf(elements: HTMLElement[], step: number): number[][] {
-    const gl = this.renderer.getContext();
-    const height = this.renderer.domElement.height;
-    const ratio = this.renderer.getPixelRatio();
-    return elements.map((element) => {
-      const r = element.getBoundingClientRect();
-      const w = Math.floor(r.width * ratio), h = Math.floor(r.height * ratio);
-      const pixels = new Uint8Array(w * h * 4);
-      gl.readPixels(Math.floor(r.left * ratio), height - Math.floor(r.bottom * ratio), w, h,
-        gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      const out: number[] = [];
-      for (let y = 0; y < h; y += step) {
-        for (let x = 0; x < w; x += step) {
-          const i = 4 * (y * w + x);
-          out.push(pixels[i], pixels[i + 1], pixels[i + 2]);
-        }
-      }
-      return out;
-    });
-  }
-
   /** Frame the player's model again (after the window changed shape, or on request). */
   resetPlayerCamera(): void { this.playerFramed = null; this.requestDraw(); }
 
