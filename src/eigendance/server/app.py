@@ -45,7 +45,7 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping
 from eigendance.server.binary import rig_meta
-from eigendance.server.export_route import EXPORT_ROUTES
+from eigendance.server.export_route import download_export, start_export
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library, RigItem, check_mapping_size
 from eigendance.server.workers import in_worker
@@ -470,6 +470,22 @@ async def rig_gallery_route(request: Request):
     return await answer(make)
 
 
+async def export_clip(request: Request):
+    """Part of a song as MP4 or glb: {mesh | rig, song, mapping, format, start, duration, size?,
+    fps?} → 202 {job} (`server.export_route`)."""
+    body = await json_body(request)
+    if not isinstance(body, dict):
+        raise HTTPException(400, "expected a JSON object {mesh or rig, song, mapping, format, "
+                                 "start, duration}")
+    song = song_of(request, str(body.get("song")))
+    if "rig" in body:
+        item = item_of(request, "rig", body.get("rig"))
+        await in_worker(library_of(request).ready_rig, item)
+    else:
+        item = ready_basis(request, str(body.get("mesh")))
+    return await start_export(request, body, item, song)
+
+
 async def api_missing(request: Request):
     raise HTTPException(404, f"no API route {request.url.path}")
 
@@ -520,7 +536,8 @@ API_ROUTES = [
     Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),
     Route("/api/rigs/{id}/reset", rig_reset, methods=["POST"]),
     Route("/api/rig-gallery", rig_gallery_route, methods=["POST"]),
-    *EXPORT_ROUTES,
+    Route("/api/export", export_clip, methods=["POST"]),
+    Route("/api/exports/{id}", download_export),
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
 ]
 

@@ -1,7 +1,8 @@
 """The page's export: part of a song as an MP4 video with its sound, or a glTF (.glb), rendered
 by the server (docs/web.md#http-api, docs/design.md#server).
 
-`POST /api/export` checks the request and starts a job (`Job`, kind "export": its progress is
+`POST /api/export` (its route in `server.app` reads the body and finds the items) checks the
+request and starts a job (`Job`, kind "export": its progress is
 the frames done, read like a basis solve's by `GET /api/jobs/{id}` and its server-sent
 events); the rendering runs in a thread of its own, never on the event loop. `GET
 /api/exports/{id}` then downloads the file. One export runs at a time (a second one is refused
@@ -18,7 +19,6 @@ import threading
 from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import FileResponse, JSONResponse
-from starlette.routing import Route
 
 from eigendance.errors import EigendanceError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
@@ -117,25 +117,24 @@ def _size(body: dict) -> tuple[int, int]:
     return width, height
 
 
-async def start_export(request: Request):
+async def start_export(request: Request, body: dict, item, song) -> JSONResponse:
     """{mesh | rig, song, mapping, format: mp4 | glb, start, duration, size?, fps?} → 202
     {job}: the dance the player shows, from `start` for `duration` seconds, rendered in a
-    thread; its progress is the job's (`GET /api/jobs/{id}`, `/events`)."""
-    from eigendance.server.app import (  # the app's helpers: one way to read a request
-        item_of,
-        json_body,
-        ready_basis,
-        song_of,
-    )
+    thread; its progress is the job's (`GET /api/jobs/{id}`, `/events`).
 
-    body = await json_body(request)
-    if not isinstance(body, dict) or not isinstance(body.get("mapping"), dict):
+    Parameters
+    ----------
+    request : the HTTP request (its app holds the library).
+    body : the parsed JSON body.
+    item : the mesh item (its basis ready) or the rig item (analysed) of the body's id.
+    song : the song item.
+    """
+    if not isinstance(body.get("mapping"), dict):
         raise HTTPException(400, "expected a JSON object {mesh or rig, song, mapping, format, "
                                  "start, duration}")
     format = body.get("format", "mp4")
     if format not in FORMATS:
         raise HTTPException(400, f"format must be one of {', '.join(FORMATS)}")
-    song = song_of(request, str(body.get("song")))
     start, duration = check_window(_number(body, "start", 0.0, 0.0, 1e6),
                                    _number(body, "duration", 15.0, 0.01, MAX_SECONDS),
                                    float(song.spectrogram.duration))
@@ -144,13 +143,8 @@ async def start_export(request: Request):
     check_mapping_size(body["mapping"], "mapping")
     library = library_of(request)
     audio = song.path if format == "mp4" else None  # a glb comes alone; it names the song
-    if "rig" in body:
-        item = item_of(request, "rig", body.get("rig"))
-        await in_worker(library.ready_rig, item)
-        if item.rig.palette is None:
-            raise HTTPException(409, f"{item.name}: the rig has no vibration mode")
-    else:
-        item = ready_basis(request, str(body.get("mesh")))
+    if "rig" in body and item.rig.palette is None:
+        raise HTTPException(409, f"{item.name}: the rig has no vibration mode")
     stem = os.path.splitext(item.name)[0] or "dance"
 
     def clip():
@@ -198,7 +192,3 @@ async def download_export(request: Request):
                         filename=f"eigendance{os.path.splitext(path)[1]}")
 
 
-EXPORT_ROUTES = [
-    Route("/api/export", start_export, methods=["POST"]),
-    Route("/api/exports/{id}", download_export),
-]
