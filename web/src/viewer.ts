@@ -1,7 +1,8 @@
 // The Viewer owns the WebGL canvas: renderer, cameras, the render loop, drawing the gallery's
 // tiles or the player into their viewports, the studio around each model, the page's real frame
-// rate, and the choice of deformation path (docs/design.md#rendering). What to draw comes from
-// the views through `Stage`; time from a `Clock`.
+// rate and the render scale and detail that hold it (resolution.ts), and the choice of
+// deformation path (docs/design.md#rendering). What to draw comes from the views through
+// `Stage`; time from a `Clock`.
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Basis } from "./bundle";
