@@ -50,10 +50,11 @@ def rows_of(page, selector: str) -> list[int]:
 
 def test_no_gallery_leaves_a_tile_alone_on_a_row(browser, live_server):
     """Every size of the tiles menu: the last row at least half full (16: 4 × 4, not
-    5 + 5 + 5 + 1), the columns those of the video renderer's grid."""
+    5 + 5 + 5 + 1), the columns those of the video renderer's grid; on a phone (two columns)
+    an odd last tile spans the row."""
     page = open_app(browser, live_server["url"], "?render&size=16", 1280, 800)
     grids = {}
-    for size in (16, 9, 11, 4, 5, 12):
+    for size in (16, 9, 11, 4, 12, 5):
         if size != 16:  # the page opened with 16
             made = page.evaluate("window.eigendance.info().generations")
             page.select_option("#size", str(size))
@@ -66,6 +67,12 @@ def test_no_gallery_leaves_a_tile_alone_on_a_row(browser, live_server):
     from eigendance.export.renderer import gallery_columns
 
     assert grids == {size: gallery_columns(size) for size in grids}
+    # A phone shows two columns: the odd last tile (5 tiles on screen) takes the whole row.
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.wait_for_timeout(200)
+    widths = page.eval_on_selector_all(".tile", "tiles => tiles.map(t => "
+                                                "t.getBoundingClientRect().width)")
+    assert rows_of(page, ".tile") == [2, 2, 1] and widths[-1] > 1.8 * widths[0], widths
     assert not page.errors, page.errors
     page.close()
 
