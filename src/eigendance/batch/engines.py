@@ -19,6 +19,7 @@ most `slots` tasks submitted.
 from __future__ import annotations
 
 import concurrent.futures
+import logging
 import multiprocessing
 import os
 import signal
@@ -232,7 +233,8 @@ class RayEngine:
             raise InputError("Ray is not installed; pip install 'eigendance[ray]'") from None
         self.ray, self.cache, self.started = ray, cache, False
         if not ray.is_initialized():
-            options = {"log_to_driver": False, "include_dashboard": True}
+            options = {"log_to_driver": False, "include_dashboard": True,
+                       "logging_level": logging.WARNING}  # the dashboard is said by the batch
             try:
                 if address == "local":
                     context = ray.init(num_cpus=workers, **options)
@@ -266,7 +268,6 @@ class RayEngine:
         """
         report, value = self.remote.options(num_returns=2, name=task.name[:100]).remote(
             task.function, *task.arguments, cache=self.cache)
-        task.attempts += 1
         self.running[report] = (task, value)
 
     def finished(self, timeout: float | None = None) -> list[tuple[Task, dict, object]]:
@@ -287,6 +288,7 @@ class RayEngine:
         results = []
         for reference in ready:
             task, value = self.running.pop(reference)
+            task.attempts = None  # Ray runs a task again by itself when its worker dies
             try:
                 report = self.ray.get(reference)
             except self.ray.exceptions.RayError:  # its worker died MAX_RETRIES + 1 times

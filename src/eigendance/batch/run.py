@@ -332,7 +332,8 @@ class Scheduler:
             for format, files in report["outputs"].items():
                 self.record.add(each.job.stem + FORMATS[format], each.keys[format], files)
             line = _line(each, "done", seconds=report["seconds"], times=report["times"],
-                         attempts=task.attempts, memory=report["memory"], note=report["note"])
+                         attempts=task.attempts, memory=report["memory"], note=report["note"],
+                         pid=report["pid"])
         else:
             if not quiet:
                 self.outcome.kinds.add(report["kind"])

@@ -62,7 +62,8 @@ def task(function, *arguments, cache: str | None = None):
     Returns
     -------
     (report, value): report {"error": one line or None, "kind": "input" | "internal" | None,
-    "seconds", "memory"} updated with what the function reports; value the function's result
+    "seconds", "memory", "pid"} updated with what the function reports; value the function's
+    result
     (None after an error).
     """
     if cache is not None:
@@ -85,6 +86,7 @@ def task(function, *arguments, cache: str | None = None):
                             f"{one_line(error)}", kind="internal")
     report["seconds"] = time.perf_counter() - began
     report["memory"] = memory()
+    report["pid"] = os.getpid()
     return report, value
 
 

@@ -69,7 +69,7 @@ class Console:
         if line["status"] == "failed" and not quiet:
             self.say(f"eigendance: error: {line['job']}: {line['error']}")
         elif self.verbose and line["status"] == "done":
-            retried = f", attempt {line['attempts']}" if line["attempts"] > 1 else ""
+            retried = f", attempt {line['attempts']}" if (line["attempts"] or 1) > 1 else ""
             self.say(f"{line['job']}: {', '.join(line['outputs'])} ({line['seconds']:.1f} s"
                      f"{retried})")
         if self.update is not None:
