@@ -13,7 +13,7 @@ system:
 $(VENV)/.installed: pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -c constraints.txt -e '.[dev]'
+	$(BIN)/pip install -q -c constraints.txt -e '.[dev,ray]'  # ray: the batch tests run on Ray too
 	touch $@
 
 # The front end (web/, TypeScript + three.js + Vite) is built into src/eigendance/static/.

@@ -35,8 +35,18 @@ MAX_RETRIES = 3  # runs of a task whose worker died, after the first (Ray's defa
 
 @dataclass
 class Task:
-    """A task for an engine: `function` (a name in `batch.work`), its `arguments` (`Shared`
-    values allowed at the top level), whether its value is kept (`keep`), and what to call it."""
+    """A task for an engine.
+
+    Parameters
+    ----------
+    name : what to call it (Ray's dashboard lists tasks by it).
+    function : a function's name in `batch.work`.
+    arguments : its arguments; prepared values (`Shared`, Ray's object references) only at the
+        top level.
+    keep : its value is kept for later tasks (a prepared input).
+    attempts : runs so far (None on Ray, which runs a task again by itself).
+    extra : the driver's bookkeeping.
+    """
 
     name: str
     function: str
@@ -48,7 +58,12 @@ class Task:
 
 @dataclass(frozen=True)
 class Shared:
-    """A value a local task prepared: the store file workers map."""
+    """A value a local task prepared.
+
+    Parameters
+    ----------
+    path : the store's file that workers map (`shared.load`).
+    """
 
     path: str
 
@@ -111,7 +126,12 @@ class LocalEngine:
         self._names = 0
 
     def describe(self) -> str:
-        """The engine in words."""
+        """The engine in words.
+
+        Returns
+        -------
+        str, e.g. "2 local worker processes".
+        """
         return f"{self.slots} local worker process{'es' if self.slots > 1 else ''}"
 
     def submit(self, task: Task) -> None:
@@ -228,7 +248,7 @@ class RayEngine:
 
     def __init__(self, address: str, workers: int | None, cache: str | None):
         try:
-            import ray
+            import ray  # an optional extra, 400 MB: only when asked for
         except ImportError:
             raise InputError("Ray is not installed; pip install 'eigendance[ray]'") from None
         self.ray, self.cache, self.started = ray, cache, False
@@ -255,7 +275,12 @@ class RayEngine:
         self.running: dict = {}
 
     def describe(self) -> str:
-        """The engine in words, with the dashboard's address."""
+        """The engine in words, with the dashboard's address.
+
+        Returns
+        -------
+        str, e.g. "Ray, 8 CPUs, dashboard http://127.0.0.1:8265".
+        """
         where = f", dashboard http://{self.dashboard}" if self.dashboard else ""
         return f"Ray, {self.cpus} CPUs{where}"
 

@@ -22,6 +22,7 @@ except ModuleNotFoundError:  # Python 3.10: the same parser, as a package
 from eigendance import checks
 from eigendance.batch.names import unique_parts
 from eigendance.errors import InputError, one_line
+from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
 from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
@@ -55,8 +56,14 @@ duration = 15.0                   # the clip's length, s (optional, default: to 
 
 @dataclass(frozen=True)
 class Model:
-    """A model of the plan: `path` (absolute, or a built-in rig's name), `kind` "mesh" or "rig",
-    `name` its part of the output names."""
+    """A model of the plan.
+
+    Parameters
+    ----------
+    name : its part of the output names.
+    path : its file (absolute), or a built-in rig's name.
+    kind : "mesh" or "rig".
+    """
 
     name: str
     path: str
@@ -65,7 +72,13 @@ class Model:
 
 @dataclass(frozen=True)
 class Song:
-    """A song of the plan: its audio file (absolute) and its part of the output names."""
+    """A song of the plan.
+
+    Parameters
+    ----------
+    name : its part of the output names.
+    path : its audio file (absolute).
+    """
 
     name: str
     path: str
@@ -73,8 +86,15 @@ class Song:
 
 @dataclass(frozen=True)
 class Item:
-    """What a pair plays: the initial gallery's item `index` of `gallery`, or a mapping file
-    (`mapping` loaded, `path` absolute); `name` its part of the output names."""
+    """What a pair plays: an item of the initial gallery, or a mapping file.
+
+    Parameters
+    ----------
+    name : its part of the output names.
+    index, gallery : the gallery's item and size (None for a mapping file).
+    mapping : the mapping file's `Mapping` (None for a gallery's item).
+    path : the mapping file (absolute), or None.
+    """
 
     name: str
     index: int | None = None
@@ -85,7 +105,13 @@ class Item:
 
 @dataclass(frozen=True)
 class Job:
-    """One (model, song, item): the outputs named `{stem}.{ext}` in the plan's folder `out`."""
+    """One (model, song, item), whose outputs are `{stem}.{ext}` in the plan's folder `out`.
+
+    Parameters
+    ----------
+    model, song, item : what it plays.
+    stem : `{model}-{song}-{item}`.
+    """
 
     model: Model
     song: Song
@@ -301,8 +327,6 @@ class _Reader:
         return items
 
     def size(self) -> tuple[int, int]:
-        from eigendance.export.video import check_size, parse_size  # OpenGL: only when asked
-
         value = self.document["size"]
         try:
             if isinstance(value, str):

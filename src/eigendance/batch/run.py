@@ -42,8 +42,15 @@ class Input(tuple):
 
 @dataclass
 class Pending:
-    """A job with the formats it still has to make ({format: output key}) and those the record
-    holds complete."""
+    """A job and what it has left to make.
+
+    Parameters
+    ----------
+    index : its place in the plan's jobs.
+    job : the job.
+    keys : {format still to make: its output key}.
+    complete : the formats the record holds complete.
+    """
 
     index: int
     job: Job
@@ -53,7 +60,16 @@ class Pending:
 
 @dataclass
 class Outcome:
-    """What a run did: one report line per job, the failures' kinds, the wall time."""
+    """What a run did.
+
+    Parameters
+    ----------
+    lines : one report line per job.
+    kinds : the kinds of the failures ("input", "internal", "crash").
+    seconds : the run's wall time.
+    report : the report's path.
+    interrupted : Ctrl-C stopped it.
+    """
 
     lines: list[dict] = field(default_factory=list)
     kinds: set = field(default_factory=set)
@@ -62,8 +78,17 @@ class Outcome:
     interrupted: bool = False
 
     def count(self, status: str) -> tuple[int, int]:
-        """(jobs, outputs) of a status ("done", "skipped", "failed", "interrupted"); the
-        skipped outputs of jobs that made others count as skipped."""
+        """How many jobs and outputs ended so.
+
+        Parameters
+        ----------
+        status : "done", "skipped", "failed" or "interrupted" (the skipped outputs of jobs that
+            made others count as skipped).
+
+        Returns
+        -------
+        (jobs, outputs).
+        """
         jobs = sum(line["status"] == status for line in self.lines)
         if status == "skipped":
             return jobs, sum(len(line["skipped"]) for line in self.lines)
@@ -228,7 +253,13 @@ class Scheduler:
         self.sequence = 0
 
     def run(self, todo: list[Pending], found: dict[str, str]) -> None:
-        """Run every pending job (and its inputs) to its end."""
+        """Run every pending job (and its inputs) to its end.
+
+        Parameters
+        ----------
+        todo : the jobs with something to make.
+        found : `digests` of the plan.
+        """
         for each in todo:
             self.add_job(each, found)
         while self.ready or self.engine.running:
@@ -242,6 +273,14 @@ class Scheduler:
 
     # --- the graph: inputs prepared once, jobs when their inputs are ready --------------------
     def add_job(self, each: Pending, found: dict[str, str]) -> None:
+        """Schedule a job after its inputs (asked for once: its model, its song at the
+        mapping's bands, its gallery).
+
+        Parameters
+        ----------
+        each : the job.
+        found : `digests` of the plan.
+        """
         job, plan = each.job, self.plan
         bands = job.item.mapping.bands if job.item.mapping is not None else DEFAULT_BANDS
         model = Input(("model", job.model.path))
@@ -266,7 +305,18 @@ class Scheduler:
             self.users[name] = self.users.get(name, 0) + 1
         self.schedule(task, (each.index, 1), inputs)
 
-    def prepare(self, name, function, arguments, index, inputs) -> None:
+    def prepare(self, name: Input, function: str, arguments: tuple, index: int,
+                inputs: list) -> None:
+        """Schedule a prepared input, unless it was asked for already.
+
+        Parameters
+        ----------
+        name : the input.
+        function : the task's function (`batch.work`).
+        arguments : its arguments.
+        index : the first job needing it (its priority).
+        inputs : the inputs it needs itself.
+        """
         if name in self.known:
             return
         self.known.add(name)
@@ -276,27 +326,49 @@ class Scheduler:
         task = Task(label, function, arguments, keep=True, extra={"what": name})
         self.schedule(task, (index, 0), inputs)
 
-    def schedule(self, task: Task, priority, inputs) -> None:
+    def schedule(self, task: Task, priority: tuple, inputs: list) -> None:
+        """Make a task ready when its inputs are (at once if they are; failed if one failed).
+
+        Parameters
+        ----------
+        task : the task.
+        priority : (first job's index, 0 for an input or 1 for a job): lowest first.
+        inputs : the inputs it needs.
+        """
         self.sequence += 1
         task.extra["priority"] = (priority, self.sequence)
         missing = [name for name in inputs if name not in self.values]
         failed = [name for name in missing if name in self.failed]
         if failed:
-            return self.fail(task, self.failed[failed[0]])
-        if not missing:
-            return self.push(task)
-        task.extra["missing"] = set(missing)
-        for name in missing:
-            self.waiting.setdefault(name, []).append(task)
+            self.fail(task, self.failed[failed[0]])
+        elif not missing:
+            self.push(task)
+        else:
+            task.extra["missing"] = set(missing)
+            for name in missing:
+                self.waiting.setdefault(name, []).append(task)
 
     def push(self, task: Task) -> None:
+        """A task whose inputs are ready: their handles in its arguments, in the ready queue.
+
+        Parameters
+        ----------
+        task : the task.
+        """
         task.arguments = tuple(self.values[value] if isinstance(value, Input) else value
                                for value in task.arguments)
         heapq.heappush(self.ready, (task.extra["priority"], self.sequence, task))
 
     def prepared(self, task: Task, report: dict, handle, quiet: bool = False) -> None:
-        """A prepared input is ready, or failed (said once, unless `quiet`: its own input's
-        failure was said)."""
+        """A prepared input is ready, or failed: its waiting tasks go on, or fail.
+
+        Parameters
+        ----------
+        task : the input's task.
+        report : its report.
+        handle : its value's handle (None after a failure).
+        quiet : its failure comes from its own input's, said already.
+        """
         name = task.extra["what"]
         if report["error"]:
             self.failed[name] = report
@@ -317,7 +389,13 @@ class Scheduler:
 
     def fail(self, task: Task, report: dict) -> None:
         """A task whose input failed: a job fails with that error (said once, by `prepared`); a
-        prepared input fails in turn. A task waiting for two failed inputs fails once."""
+        prepared input fails in turn. A task waiting for two failed inputs fails once.
+
+        Parameters
+        ----------
+        task : the task.
+        report : the failed input's report.
+        """
         if task.extra.get("failed"):
             return
         task.extra["failed"] = True
@@ -327,6 +405,15 @@ class Scheduler:
             self.prepared(task, report, None, quiet=True)
 
     def finish_job(self, task: Task, report: dict, quiet: bool = False) -> None:
+        """A job ended: its outputs recorded, its line reported, the inputs nobody needs any
+        more released.
+
+        Parameters
+        ----------
+        task : the job's task.
+        report : its report.
+        quiet : a failure said already (its input's).
+        """
         each: Pending = task.extra["pending"]
         if report["error"] is None:
             for format, files in report["outputs"].items():

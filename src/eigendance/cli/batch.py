@@ -9,10 +9,12 @@ import sys
 
 from tqdm import tqdm
 
+from eigendance.batch.engines import LocalEngine, RayEngine
 from eigendance.batch.plan import EXAMPLE, read_plan
 from eigendance.batch.run import run_plan
 from eigendance.cli.options import number, progress_bar
 from eigendance.errors import InputError, InternalError
+from eigendance.harmonic.cache import cache_folder
 
 
 def add_batch(parser):
@@ -53,8 +55,14 @@ class Console:
         self.verbose, self.bar, self.update, self.done = verbose, None, None, 0
 
     def start(self, total: int, skipped: int, engine: str | None) -> None:
-        """The run starts: `total` jobs, `skipped` of them up to date, on `engine` (None: no
-        work to do)."""
+        """The run starts: the engine's line (with Ray, its dashboard) and the bar.
+
+        Parameters
+        ----------
+        total : jobs in the plan.
+        skipped : those up to date.
+        engine : the engine in words (None: nothing to do).
+        """
         if engine is None:
             return
         print(f"eigendance: {total - skipped} of {total} jobs to make on {engine}",
@@ -64,7 +72,13 @@ class Console:
         self.update(skipped)
 
     def job(self, line: dict, quiet: bool) -> None:
-        """A job ended (`line`: its report line); `quiet`: its failure was said already."""
+        """A job ended: its failure said (once), with --verbose its outputs.
+
+        Parameters
+        ----------
+        line : its report line.
+        quiet : its failure was said already (its input's).
+        """
         self.done += 1
         if line["status"] == "failed" and not quiet:
             self.say(f"eigendance: error: {line['job']}: {line['error']}")
@@ -76,11 +90,21 @@ class Console:
             self.update(self.done)
 
     def failure(self, message: str) -> None:
-        """A prepared input failed: said once for all its jobs."""
+        """A prepared input failed: said once for all its jobs.
+
+        Parameters
+        ----------
+        message : the error's line.
+        """
         self.say(f"eigendance: error: {message}")
 
     def planned(self, pending) -> None:
-        """A dry run: each job and what it would make."""
+        """A dry run: each job and what it would make.
+
+        Parameters
+        ----------
+        pending : `batch.run.Pending` of every job.
+        """
         for each in pending:
             what = ", ".join(each.keys) if each.keys else "up to date"
             print(f"{each.job.stem}: {what}")
@@ -88,9 +112,16 @@ class Console:
         print(f"{left} of {len(pending)} jobs to make")
 
     def say(self, text: str) -> None:
+        """A line on stderr, above the bar.
+
+        Parameters
+        ----------
+        text : the line.
+        """
         tqdm.write(text, file=sys.stderr)
 
     def close(self) -> None:
+        """Remove the bar."""
         if self.bar is not None:
             self.bar.close()
 
@@ -129,7 +160,21 @@ def summary(outcome) -> list[str]:
 
 
 def format_seconds(seconds: float) -> str:
-    """'1 h 02 min', '3 min 05 s', '12.3 s'."""
+    """A duration as the summary writes it.
+
+    Parameters
+    ----------
+    seconds : s.
+
+    Returns
+    -------
+    str.
+
+    Example
+    -------
+    >>> format_seconds(3725), format_seconds(185), format_seconds(12.34)
+    ('1 h 02 min', '3 min 05 s', '12.3 s')
+    """
     if seconds >= 3600:
         return f"{int(seconds // 3600)} h {int(seconds % 3600 // 60):02d} min"
     if seconds >= 60:
@@ -138,10 +183,17 @@ def format_seconds(seconds: float) -> str:
 
 
 def engine_factory(args, plan):
-    """() → the engine `--ray` and `-j` ask for (made only when there is work)."""
-    from eigendance.batch.engines import LocalEngine, RayEngine
-    from eigendance.harmonic.cache import cache_folder
+    """The engine `--ray` and `-j` ask for, made only when there is work.
 
+    Parameters
+    ----------
+    args : the parsed command line.
+    plan : the plan (its cache folder).
+
+    Returns
+    -------
+    callable() → LocalEngine or RayEngine.
+    """
     cache = plan.cache or cache_folder()
     if args.ray:
         return lambda: RayEngine(args.ray, args.jobs, cache)
