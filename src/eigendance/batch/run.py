@@ -69,6 +69,7 @@ class Outcome:
     seconds : the run's wall time.
     report : the report's path.
     interrupted : Ctrl-C stopped it.
+    prepared : {"model" | "song" | "gallery": worker seconds preparing them}.
     """
 
     lines: list[dict] = field(default_factory=list)
@@ -76,6 +77,7 @@ class Outcome:
     seconds: float = 0.0
     report: str = ""
     interrupted: bool = False
+    prepared: dict = field(default_factory=dict)
 
     def count(self, status: str) -> tuple[int, int]:
         """How many jobs and outputs ended so.
@@ -370,6 +372,9 @@ class Scheduler:
         quiet : its failure comes from its own input's, said already.
         """
         name = task.extra["what"]
+        if not quiet:
+            self.outcome.prepared[name[0]] = self.outcome.prepared.get(name[0], 0.0) + \
+                (report["seconds"] or 0.0)
         if report["error"]:
             self.failed[name] = report
             if not quiet:
@@ -419,6 +424,7 @@ class Scheduler:
             for format, files in report["outputs"].items():
                 self.record.add(each.job.stem + FORMATS[format], each.keys[format], files)
             line = _line(each, "done", seconds=report["seconds"], times=report["times"],
+                         cpu=report["cpu"],
                          attempts=task.attempts, memory=report["memory"], note=report["note"],
                          pid=report["pid"])
         else:

@@ -196,20 +196,32 @@ def make_outputs(job: dict, model, spectrogram: Spectrogram, mapping, index=None
 
     Returns
     -------
-    {"report": {"outputs": {format: {file name: `record.file_entry`}}, "times": {format: s},
-    "note": the window's note or None}}.
+    {"report": {"outputs": {format: {file name: `record.file_entry`}}, "times": {format: wall
+    s}, "cpu": {format: CPU s, the encoder's included}, "note": the window's note or None}}.
     """
     if index is not None:
         mapping = mapping[index]
     dance = _dance(job, model, spectrogram, mapping)
-    outputs, times = {}, {}
+    outputs, times, cpu = {}, {}, {}
     for format in job["formats"]:
-        began = time.perf_counter()
+        began, used = time.perf_counter(), cpu_seconds()
         path = os.path.join(job["out"], job["stem"] + FORMATS[format])
         files = _write(format, path, job, dance, model, spectrogram, mapping)
         outputs[format] = {os.path.basename(file): file_entry(file) for file in files}
-        times[format] = time.perf_counter() - began
-    return {"report": {"outputs": outputs, "times": times, "note": dance.note}}
+        times[format], cpu[format] = time.perf_counter() - began, cpu_seconds() - used
+    return {"report": {"outputs": outputs, "times": times, "cpu": cpu, "note": dance.note}}
+
+
+def cpu_seconds() -> float:
+    """CPU time of this process and of the children it waited for (the video encoder), s.
+
+    Returns
+    -------
+    float.
+    """
+    mine, children = (resource.getrusage(who) for who in (resource.RUSAGE_SELF,
+                                                            resource.RUSAGE_CHILDREN))
+    return mine.ru_utime + mine.ru_stime + children.ru_utime + children.ru_stime
 
 
 def _dance(job: dict, model, spectrogram, mapping):

@@ -67,7 +67,7 @@ def add_output(parser, what: str) -> None:
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
 
-def progress_bar(total: int | None, description: str, unit: str = "pair"):
+def progress_bar(total: int | None, description: str, unit: str = "pair", initial: int = 0):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
     Parameters
@@ -76,13 +76,14 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
         count).
     description : the bar's label.
     unit : what is counted.
+    initial : the count done already (not counted in the rate, nor so in the ETA).
 
     Returns
     -------
     (bar, update): the bar (a context manager) and update(done), which moves it to `done`.
     """
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
-               disable=not sys.stderr.isatty(), leave=False)
+               disable=not sys.stderr.isatty(), leave=False, initial=initial)
 
     def update(done):
         bar.update(max(0, done - bar.n))
