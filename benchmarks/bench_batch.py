@@ -116,8 +116,8 @@ def stop(processes) -> None:
 
 
 def quiet_host(limit: float | None) -> None:
-    """Wait (at most 15 min) until the 1-minute load is at most `limit` (None: do not wait)."""
-    deadline = time.time() + 900
+    """Wait (at most 5 min) until the 1-minute load is at most `limit` (None: do not wait)."""
+    deadline = time.time() + 300
     while limit is not None and float(load().split()[0]) > limit and time.time() < deadline:
         time.sleep(10)
 
@@ -158,7 +158,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=1,
                         help="runs of each configuration, interleaved; the fastest is kept")
     parser.add_argument("--wait-load", type=float, default=None, metavar="LOAD",
-                        help="before each run, wait (up to 15 min) for a 1-minute load ≤ LOAD")
+                        help="before each run, wait (up to 5 min) for a 1-minute load ≤ LOAD")
     parser.add_argument("--skip-ray", action="store_true")
     args = parser.parse_args()
     folder = tempfile.mkdtemp(prefix="bench-batch-")
@@ -182,8 +182,26 @@ def main():
         print(f"\n1280x720, bunny, 1 worker: {min(per_frame) * 1000:.0f} ms per frame (CPU of one "
               f"core, drawing + encoding); mp4 {sum(sizes) / len(sizes) / args.seconds / 1e6:.2f}"
               f" MB per second of video; load {hd['load']}")
+        song_cost()
     finally:
         shutil.rmtree(folder, ignore_errors=True)
+
+
+def song_cost() -> None:
+    """CPU seconds of a song's analysis (spectrogram and rhythm) per minute of audio, in this
+    process (one thread), for the cluster estimate of docs/batch.md."""
+    from threadpoolctl import threadpool_limits
+
+    from eigendance.music.spectrogram import Spectrogram
+
+    with threadpool_limits(1):
+        Spectrogram.from_file(shared_path("audio", SONGS[0]))  # imports, librosa's JIT
+        used, minutes = time.process_time(), 0.0
+        for name in SONGS:
+            minutes += Spectrogram.from_file(shared_path("audio", name)).duration / 60
+        used = time.process_time() - used
+    print(f"a song's analysis: {used / minutes:.2f} s of CPU per minute of audio "
+          f"({minutes:.1f} min of audio); load {load()}")
 
 
 def report(rows) -> None:
