@@ -1,0 +1,216 @@
+"""Rhythm next to the spectrogram: onset strength, onsets, beats, tempo (docs/design.md#rhythm).
+
+The onset-strength envelope is ours, computed frame by frame by the spectrogram's own analysis
+(same frames, same window, same frame rate), so that a streaming analysis can reproduce it:
+
+- mel power P_j,m = Σ_q M_m,q·|X_j(q)|², M librosa's mel filter bank (MEL_BANDS Slaney bands
+  from 0 to min(MEL_FMAX, sr/2) Hz over the window's bins), |X| the spectrogram's magnitude
+  (a full-scale sine reads ≈ 1);
+- S_j,m = max(10·log₁₀ P_j,m, FLOOR_DB) (a fixed floor: the song's maximum is not known while
+  it streams);
+- e_j = mean over m of max(0, S_j,m − S_{j−L},m), L = max(1, round(LAG·rate)) frames, with
+  S_{j<0} = FLOOR_DB (silence before the song).
+
+Onsets, beats and the tempo are librosa's (onset_detect, beat_track, feature.tempo) run on
+that envelope at the spectrogram's frame rate (sr = rate, hop_length = 1); the tempo's
+tempogram is averaged over chunks of CHUNK_SECONDS so that an hour of audio needs no more memory
+than a few minutes. The beat phase B(t) (`beat_phase`) counts beats continuously: B(b_i) = i,
+linear between beats and extrapolated with the first and last intervals; the tempo over time is
+60·dB/dt (beats per minute, piecewise constant between beats).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+MEL_BANDS = 128  # bands of the onset envelope's mel spectrum
+MEL_FMAX = 11025.0  # Hz: librosa's default analysis (22050 Hz) sees no higher
+FLOOR_DB = -100.0  # dB of full scale: the mel power's floor
+LAG = 0.02  # s: the flux compares a frame with the one this much earlier
+CHUNK_SECONDS = 60.0  # the tempogram is averaged over chunks this long
+MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
+QUIET = 1e-3  # an envelope whose 99th percentile is below this (dB per frame) is silence
+
+
+class OnsetEnvelope:
+    """The streaming onset-strength envelope (module docstring): feed magnitude frames.
+
+    Parameters
+    ----------
+    sample_rate : Hz.
+    window : N, the analysis window (the spectrogram's).
+    rate : frames per second.
+    """
+
+    def __init__(self, sample_rate: int, window: int, rate: float):
+        import librosa  # heavy (numba): only when a song is analysed
+
+        with warnings.catch_warnings():  # a low sample rate leaves some mel bands empty
+            warnings.simplefilter("ignore")
+            mel = librosa.filters.mel(sr=sample_rate, n_fft=window, n_mels=MEL_BANDS,
+                                      fmin=0.0, fmax=min(MEL_FMAX, sample_rate / 2))
+        used = np.flatnonzero(mel.any(axis=0))
+        self.stop = int(used[-1]) + 1 if len(used) else 1
+        self.mel = np.ascontiguousarray(mel[:, :self.stop].T, dtype=np.float32)  # (bins, m)
+        self.lag = max(1, round(LAG * rate))
+        self.previous = np.full((self.lag, MEL_BANDS), FLOOR_DB, dtype=np.float32)
+
+    def feed(self, magnitude: np.ndarray) -> np.ndarray:
+        """(F, bins) magnitudes of consecutive frames → (F,) envelope values, float32."""
+        power = np.square(magnitude[:, :self.stop], dtype=np.float32) @ self.mel
+        level = np.maximum(10 * np.log10(np.maximum(power, 1e-30)), FLOOR_DB)
+        stacked = np.concatenate([self.previous, level])
+        flux = np.maximum(stacked[self.lag:] - stacked[:-self.lag], 0).mean(axis=1)
+        self.previous = stacked[-self.lag:]
+        return flux.astype(np.float32)
+
+
+@dataclass
+class Rhythm:
+    """What the rhythm analysis found in a song (docs/design.md#rhythm).
+
+    onset_strength (T,) ≥ 0 at the spectrogram's frames (dB per frame); onsets, beats and
+    downbeats: times in seconds, ascending (downbeats: empty, librosa's tracker gives none);
+    tempo: the song's tempo, beats per minute (0 when no beat was found); rate: frames per
+    second of `onset_strength`.
+    """
+
+    onset_strength: np.ndarray
+    onsets: np.ndarray
+    beats: np.ndarray
+    tempo: float
+    rate: float
+    downbeats: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+    @property
+    def has_beats(self) -> bool:
+        return len(self.beats) >= MIN_BEATS and self.tempo > 0
+
+    def beat_phase(self, times) -> np.ndarray:
+        """B(t): beats counted continuously (`beat_phase`); NaN-free, needs has_beats."""
+        return beat_phase(self.beats, times)
+
+    def tempo_curve(self, times) -> np.ndarray:
+        """Tempo over time, beats per minute: 60·dB/dt, piecewise constant between beats
+        (0 everywhere without beats)."""
+        times = np.asarray(times, dtype=np.float64)
+        if not self.has_beats:
+            return np.zeros(times.shape)
+        intervals = np.diff(self.beats)
+        index = np.clip(np.searchsorted(self.beats, times, side="right") - 1, 0,
+                        len(intervals) - 1)
+        return 60.0 / intervals[index]
+
+    def summary(self) -> str:
+        """One line for a person: the tempo and the number of beats, or that there is none."""
+        if not self.has_beats:
+            return ("no beat detected: the dance follows the loudness alone "
+                    f"({len(self.onsets)} onsets)")
+        return (f"tempo {self.tempo:.1f} BPM, {len(self.beats)} beats, "
+                f"{len(self.onsets)} onsets")
+
+
+def beat_phase(beats, times) -> np.ndarray:
+    """B(t) (…,): B(b_i) = i, linear between beats, extrapolated with the first and last
+    intervals before the first beat and after the last one. beats: ≥ 2 ascending times."""
+    beats = np.asarray(beats, dtype=np.float64)
+    times = np.asarray(times, dtype=np.float64)
+    count = len(beats)
+    inside = np.interp(times, beats, np.arange(count, dtype=np.float64))
+    first, last = beats[1] - beats[0], beats[-1] - beats[-2]
+    before = (times - beats[0]) / first
+    after = count - 1 + (times - beats[-1]) / last
+    return np.where(times < beats[0], before, np.where(times > beats[-1], after, inside))
+
+
+def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
+    """librosa's tempo (feature.tempo, its default prior around 120 BPM) of the tempogram
+    averaged over chunks of CHUNK_SECONDS, beats per minute."""
+    import librosa
+
+    chunk = max(1, int(CHUNK_SECONDS * rate))
+    total, frames = None, 0
+    for start in range(0, len(envelope), chunk):
+        piece = envelope[start:start + chunk]
+        gram = librosa.feature.tempogram(onset_envelope=piece, sr=rate, hop_length=1)
+        total = gram.sum(axis=1) if total is None else total + gram.sum(axis=1)
+        frames += gram.shape[1]
+    tempo = librosa.feature.tempo(tg=(total / frames)[:, None], sr=rate, hop_length=1,
+                                  aggregate=None)
+    return float(np.ravel(tempo)[0])
+
+
+def analyse_rhythm(envelope, rate: float) -> Rhythm:
+    """Onsets, beats and the tempo from the onset-strength envelope (T,) at `rate` frames/s.
+
+    Example
+    -------
+    >>> rate = 100.0
+    >>> envelope = np.zeros(1000, dtype=np.float32)
+    >>> envelope[25::50] = 10.0                      # a click every 0.5 s: 120 BPM
+    >>> rhythm = analyse_rhythm(envelope, rate)
+    >>> round(rhythm.tempo), len(rhythm.beats) >= 15
+    (120, True)
+    """
+    import librosa
+
+    envelope = np.asarray(envelope, dtype=np.float32)
+    nothing = Rhythm(envelope, np.zeros(0), np.zeros(0), 0.0, float(rate))
+    if len(envelope) < 3 or not np.percentile(envelope, 99) > QUIET:
+        return nothing
+    onsets = librosa.onset.onset_detect(onset_envelope=envelope, sr=rate, hop_length=1,
+                                        units="time")
+    tempo = mean_tempogram_tempo(envelope, rate)
+    if not (math.isfinite(tempo) and tempo > 0):
+        return Rhythm(envelope, onsets, np.zeros(0), 0.0, float(rate))
+    _, beats = librosa.beat.beat_track(onset_envelope=envelope, sr=rate, hop_length=1,
+                                       bpm=tempo, units="time")
+    beats = np.asarray(beats, dtype=np.float64)
+    if len(beats) < MIN_BEATS:
+        return Rhythm(envelope, onsets, beats, 0.0, float(rate))
+    return Rhythm(envelope, np.asarray(onsets, dtype=np.float64), beats, tempo, float(rate))
+
+
+# ---------------------------------------------------------------------------------------------
+# The spectrogram file's rhythm fields (docs/design.md#spectrogram-file, version 2)
+
+FILE_KEYS = ("onset_strength", "onsets", "beats", "downbeats", "tempo")
+
+
+def rhythm_arrays(rhythm: Rhythm) -> dict:
+    """The arrays a version-2 spectrogram file holds for the rhythm."""
+    return {"onset_strength": np.asarray(rhythm.onset_strength, dtype=np.float32),
+            "onsets": np.asarray(rhythm.onsets, dtype=np.float64),
+            "beats": np.asarray(rhythm.beats, dtype=np.float64),
+            "downbeats": np.asarray(rhythm.downbeats, dtype=np.float64),
+            "tempo": np.float64(rhythm.tempo)}
+
+
+def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: float) -> Rhythm:
+    """The rhythm of a version-2 file, checked: InputError naming the field otherwise."""
+    from eigendance.errors import InputError
+    from eigendance.files import checked_array
+
+    missing = [key for key in FILE_KEYS if key not in data]
+    if missing:
+        raise InputError(f"{path}: a version-2 spectrogram file lacks {', '.join(missing)}")
+    strength = checked_array(data, "onset_strength", path, shape=(frames,))
+    if np.any(strength < 0):
+        raise InputError(f"{path}: onset_strength must be ≥ 0")
+    times = {}
+    for key in ("onsets", "beats", "downbeats"):
+        values = checked_array(data, key, path, shape=(None,))
+        if np.any(np.diff(values) <= 0) or np.any(values < 0) or \
+                np.any(values > duration + 1.0):
+            raise InputError(f"{path}: {key} must be increasing times within the song "
+                             f"(0 … {duration:g} s)")
+        times[key] = values
+    tempo = float(checked_array(data, "tempo", path))
+    if not 0 <= tempo <= 1000:
+        raise InputError(f"{path}: tempo must be 0 … 1000 beats per minute, got {tempo:g}")
+    return Rhythm(strength.astype(np.float32), times["onsets"], times["beats"], tempo, rate,
+                  times["downbeats"])
