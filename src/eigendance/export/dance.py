@@ -162,10 +162,8 @@ class HarmonicDance(Dance):
         self.info = {"kind": "harmonics", "k": basis.k, "mapping": mapping.to_json()}
 
     def phi(self, times) -> np.ndarray:
-        """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram."""
-        values = self.spectrogram.smoothed(self.mapping.smoothing).at(
-            np.asarray(times, dtype=np.float64))
-        return self.mapping.filter(values, self.basis.k)
+        """φ(t) (T, k): the mapping's filter on the song (`Mapping.play`)."""
+        return self.mapping.play(self.spectrogram, times, self.basis.k)
 
     def loudest_times(self, count: int) -> np.ndarray:
         """The song's `count` loudest moments (largest sum over bands of a spectrogram frame),

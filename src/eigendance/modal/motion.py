@@ -226,14 +226,14 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
                offset: float | None = None) -> np.ndarray:
     """φ (T, n_modes) = gain·a·Σ g̃ + b: the mapping's filter over the modes at `times`.
 
-    b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
+    b = `offset`, else the mapping's own offset; the song goes through `Mapping.play`
+    (smoothing, envelope, pulse).
     """
     if mapping.bands != spectrogram.bands:
         raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands, the song's "
                          f"spectrogram {spectrogram.bands}; analyse the song into "
                          f"{mapping.bands} bands")
-    values = spectrogram.smoothed(mapping.smoothing).at(np.asarray(times, dtype=float))
-    return mapping.filter(values, n_modes, mapping.offset if offset is None else offset)
+    return mapping.play(spectrogram, times, n_modes, mapping.offset if offset is None else offset)
 
 
 def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:

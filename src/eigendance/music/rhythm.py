@@ -32,6 +32,8 @@ MEL_FMAX = 11025.0  # Hz: librosa's default analysis (22050 Hz) sees no higher
 FLOOR_DB = -100.0  # dB of full scale: the mel power's floor
 LAG = 0.02  # s: the flux compares a frame with the one this much earlier
 CHUNK_SECONDS = 60.0  # the tempogram is averaged over chunks this long
+BASS_FMAX = 200.0  # Hz: the bass envelope's mel bands are centred below this
+OFFBEAT_RATIO = 1.5  # beats move half a beat when the bass hits there this much harder
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
 QUIET = 1e-3  # an envelope whose 99th percentile is below this (dB per frame) is silence
 
@@ -53,6 +55,9 @@ class OnsetEnvelope:
             warnings.simplefilter("ignore")
             mel = librosa.filters.mel(sr=sample_rate, n_fft=window, n_mels=MEL_BANDS,
                                       fmin=0.0, fmax=min(MEL_FMAX, sample_rate / 2))
+        centres = librosa.mel_frequencies(MEL_BANDS + 2, fmin=0.0,
+                                          fmax=min(MEL_FMAX, sample_rate / 2))[1:-1]
+        self.low = centres < BASS_FMAX  # the bands of the bass envelope
         used = np.flatnonzero(mel.any(axis=0))
         self.stop = int(used[-1]) + 1 if len(used) else 1
         self.mel = np.ascontiguousarray(mel[:, :self.stop].T, dtype=np.float32)  # (bins, m)
@@ -60,13 +65,15 @@ class OnsetEnvelope:
         self.previous = np.full((self.lag, MEL_BANDS), FLOOR_DB, dtype=np.float32)
 
     def feed(self, magnitude: np.ndarray) -> np.ndarray:
-        """(F, bins) magnitudes of consecutive frames → (F,) envelope values, float32."""
+        """(F, bins) magnitudes of consecutive frames → (F, 2) float32: the envelope e_j and
+        the bass envelope (the same mean over the mel bands centred below BASS_FMAX)."""
         power = np.square(magnitude[:, :self.stop], dtype=np.float32) @ self.mel
         level = np.maximum(10 * np.log10(np.maximum(power, 1e-30)), FLOOR_DB)
         stacked = np.concatenate([self.previous, level])
-        flux = np.maximum(stacked[self.lag:] - stacked[:-self.lag], 0).mean(axis=1)
+        flux = np.maximum(stacked[self.lag:] - stacked[:-self.lag], 0)
         self.previous = stacked[-self.lag:]
-        return flux.astype(np.float32)
+        bass = flux[:, self.low].mean(axis=1) if self.low.any() else np.zeros(len(flux))
+        return np.stack([flux.mean(axis=1), bass], axis=1).astype(np.float32)
 
 
 @dataclass
@@ -144,8 +151,32 @@ def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
     return float(np.ravel(tempo)[0])
 
 
-def analyse_rhythm(envelope, rate: float) -> Rhythm:
-    """Onsets, beats and the tempo from the onset-strength envelope (T,) at `rate` frames/s.
+def bass_phase(beats: np.ndarray, bass: np.ndarray, rate: float) -> np.ndarray:
+    """The beats, moved by half a beat where the bass hits the half-beats harder.
+
+    A tracker can lock onto the off-beat (a guitar's "chick", off-beat hi-hats); the bass
+    and the kick drum mark the beat itself. With h the largest bass envelope within ±30 ms
+    (`bass`, (T,) at `rate`), if the mean h at the midpoints between beats is more than
+    OFFBEAT_RATIO times the mean h at the beats, the midpoints are the beats.
+    """
+    if len(beats) < MIN_BEATS or not np.any(bass > 0):
+        return beats
+    reach = max(1, round(0.03 * rate))
+
+    def strength(times):
+        frames = np.clip(np.round(times * rate).astype(np.int64), 0, len(bass) - 1)
+        window = frames[:, None] + np.arange(-reach, reach + 1)
+        return bass[np.clip(window, 0, len(bass) - 1)].max(axis=1).mean()
+
+    middles = (beats[:-1] + beats[1:]) / 2
+    if strength(middles) > OFFBEAT_RATIO * strength(beats[:-1]):
+        return middles
+    return beats
+
+
+def analyse_rhythm(envelope, rate: float, bass=None) -> Rhythm:
+    """Onsets, beats and the tempo from the onset-strength envelope (T,) at `rate` frames/s
+    (bass: the bass envelope (T,) that `bass_phase` checks the beats' phase with).
 
     Example
     -------
@@ -170,6 +201,8 @@ def analyse_rhythm(envelope, rate: float) -> Rhythm:
     _, beats = librosa.beat.beat_track(onset_envelope=envelope, sr=rate, hop_length=1,
                                        bpm=tempo, units="time")
     beats = np.asarray(beats, dtype=np.float64)
+    if bass is not None:
+        beats = bass_phase(beats, np.asarray(bass, dtype=np.float32), rate)
     if len(beats) < MIN_BEATS:
         return Rhythm(envelope, onsets, beats, 0.0, float(rate))
     return Rhythm(envelope, np.asarray(onsets, dtype=np.float64), beats, tempo, float(rate))

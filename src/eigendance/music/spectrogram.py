@@ -276,8 +276,8 @@ class Spectrogram:
         rhythm = None
         if analyser.onsets is not None:
             envelope = np.concatenate(analyser.envelope) if analyser.envelope else \
-                np.zeros(len(values), np.float32)
-            rhythm = analyse_rhythm(envelope, analyser.rate)
+                np.zeros((len(values), 2), np.float32)
+            rhythm = analyse_rhythm(envelope[:, 0], analyser.rate, envelope[:, 1])
         return cls(np.arange(len(values)) / analyser.rate, analyser.edges, values,
                    analyser.rate, int(sample_rate), analyser.total / sample_rate, rhythm)
 
