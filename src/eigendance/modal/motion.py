@@ -25,6 +25,8 @@ from eigendance.files import atomic_save_npz
 from eigendance.modal.model import ModalModel
 from eigendance.modal.palette import (
     Palette,
+    lock_ratios,
+    locked_phases,
     mode_reach,
     resolve_palette,
     single_mode_amplitudes,
@@ -39,13 +41,17 @@ FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend 
 
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
-                      time_scale: float = 1.0, drive=None, modes=None) -> np.ndarray:
+                      time_scale: float = 1.0, drive=None, modes=None,
+                      beat=None) -> np.ndarray:
     """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ), shape (T, nm): the kernel of the motion.
 
     amplitudes: μ per mode (nm,) in coefficient units, default each mode alone at its default
     bend (`palette.single_mode_amplitudes`); phases: γ (nm,), default 0. modes: indices of the
     modes that move (others get c = 0); default all. drive: φ, shape (T, nm) (or
-    (T, len(modes)) when `modes` is given), default 1.
+    (T, len(modes)) when `modes` is given), default 1. beat: None (free-running), or
+    (B(t) (T,) the beat phase, tempo in beats per minute): the tempo lock, where the angle is
+    2π r_κ B(t) + γ′_κ with r_κ = `lock_ratios` and γ′ = `locked_phases`
+    (docs/design.md#tempo-lock).
     """
     times = np.asarray(times, dtype=float).reshape(-1)
     count = model.n_modes
@@ -58,8 +64,14 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
     phases = np.zeros(count) if phases is None else \
         np.broadcast_to(np.asarray(phases, dtype=float), (count,))
     result = np.zeros((times.size, count))
-    argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
-        + phases[selected]
+    if beat is None:
+        argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
+            + phases[selected]
+    else:
+        phase, tempo = beat
+        ratios = lock_ratios(model.frequencies[selected], time_scale, tempo)
+        argument = 2 * math.pi * ratios * np.asarray(phase, dtype=float).reshape(-1, 1) \
+            + locked_phases(phases[selected])
     values = amplitudes[selected] * np.sin(argument)
     if drive is not None:
         drive = np.asarray(drive, dtype=float)
@@ -103,6 +115,9 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
     >>> c = rig_coefficients(model, None, None, np.linspace(0, 1, 5))
     >>> c.shape, bool(np.all(c[0] == 0))          # sin(γ) with γ_0 = 0 … and the others not 0
     ((5, 5), False)
+
+    With a song whose spectrogram holds beats, the default palette (or `modes.tempo` "beat")
+    locks to them (`tempo_lock`); `modes.tempo` "free" keeps the free-running sinusoids.
     """
     times = np.asarray(times, dtype=float).reshape(-1)
     palette = mapping_palette(model, mapping)
@@ -117,7 +132,22 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
     amplitudes[palette.selected] = palette.coefficient_amplitudes(model)
     phases[palette.selected] = palette.phases
     return mode_coefficients(model, times, amplitudes, phases, palette.time_scale, drive,
-                             palette.selected)
+                             palette.selected, tempo_lock(spectrogram, mapping, times))
+
+
+def tempo_lock(spectrogram: Spectrogram | None, mapping: Mapping | None, times):
+    """(B(t), tempo) when the dance locks to the song's beats, else None (free-running).
+
+    It locks when the palette's `tempo` is "beat" or unset and the song has beats
+    (`Rhythm.has_beats`: a spectrogram file of version 2 with at least 4 beats).
+    """
+    rhythm = getattr(spectrogram, "rhythm", None)
+    settings = mapping.modes if mapping is not None else None
+    if settings is not None and settings.tempo == "free":
+        return None
+    if rhythm is None or not rhythm.has_beats:
+        return None
+    return rhythm.beat_phase(times), rhythm.tempo
 
 
 def twists(model: ModalModel, coefficients) -> np.ndarray:
@@ -218,7 +248,7 @@ def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
     if mapping is None:
         mapping = band_mapping(bands, len(palette.selected)) if spectrogram is None else \
             default_mapping(spectrogram, len(palette.selected))
-    return replace(mapping, modes=palette.to_settings(),
+    return replace(mapping, modes=replace(palette.to_settings(), tempo=settings.tempo),
                    offset=mapping.offset if offset is None else float(offset))
 
 
