@@ -37,12 +37,11 @@ import numpy as np
 from scipy.signal import find_peaks
 
 sys.path.insert(0, os.path.dirname(__file__))
-from rhythm_pieces import PIECES  # noqa: E402
-from shared_data import shared_path  # noqa: E402
-
 from eigendance.music.decode import open_audio  # noqa: E402
 from eigendance.music.envelope import Envelope, Pulse  # noqa: E402
 from eigendance.music.spectrogram import Spectrogram  # noqa: E402
+from rhythm_pieces import PIECES  # noqa: E402
+from shared_data import shared_path  # noqa: E402
 
 TOLERANCE = 0.07
 
@@ -95,7 +94,7 @@ def analysis(clips_) -> dict:
         song = Spectrogram.from_samples(samples, rate)
         ours_time = (time.perf_counter() - start) / minutes
         start = time.perf_counter()
-        plain = Spectrogram.from_samples(samples, rate, rhythm=False)
+        Spectrogram.from_samples(samples, rate, rhythm=False)
         plain_time = (time.perf_counter() - start) / minutes
         start = time.perf_counter()
         resampled = librosa.resample(samples, orig_sr=rate, target_sr=22050)
@@ -118,9 +117,19 @@ def analysis(clips_) -> dict:
     return songs
 
 
+def item_f(basis, song, beats, item) -> float:
+    """F of the peaks of one gallery item's motion magnitude against the beats."""
+    from eigendance.music.gallery import frame_motion, motion_gram
+
+    w = item.play(song, song.times, basis.k) - 1.0
+    targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
+    magnitude = frame_motion(w[:, targets], motion_gram(basis, targets))
+    return events_f(beats, turning_points(magnitude, song.rate, extrema=False))
+
+
 def harmonics(songs: dict) -> None:
     from eigendance.harmonic.basis import HarmonicBasis
-    from eigendance.music.gallery import frame_motion, initial_gallery, motion_gram
+    from eigendance.music.gallery import initial_gallery
 
     mesh = os.path.join(os.path.dirname(__file__), "..", "src", "eigendance", "data",
                         "cat_lowres.obj")
@@ -130,16 +139,9 @@ def harmonics(songs: dict) -> None:
           f"{'pulse items':>11s}")
     for name, (song, beats) in songs.items():
         gallery = initial_gallery(basis, song, 8)
-        times = song.times
-
-        def f_of(item):
-            w = item.play(song, times, basis.k) - 1.0
-            targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
-            magnitude = frame_motion(w[:, targets], motion_gram(basis, targets))
-            return events_f(beats, turning_points(magnitude, song.rate, extrema=False))
-
-        before = [f_of(replace(item, envelope=Envelope(), pulse=Pulse())) for item in gallery]
-        pulsing = [f_of(item) for item in gallery if item.pulse.amount > 0]
+        before = [item_f(basis, song, beats, replace(item, envelope=Envelope(), pulse=Pulse()))
+                  for item in gallery]
+        pulsing = [item_f(basis, song, beats, item) for item in gallery if item.pulse.amount > 0]
         print(f"{name:28s} {max(before):12.2f} {min(pulsing):12.2f} {np.mean(pulsing):6.2f} "
               f"{len(pulsing):11d}")
 
