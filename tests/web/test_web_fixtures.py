@@ -30,3 +30,19 @@ def test_committed_rig_fixtures_match_the_python_reference():
         assert old["mapping"]["modes"] == new["mapping"]["modes"]
         for key in ("coefficients", "positions", "rotations", "centres"):
             np.testing.assert_allclose(old[key], new[key], atol=1e-6, err_msg=key)
+
+
+def test_committed_rhythm_fixtures_match_the_python_reference():
+    fresh = json.loads(build()["rhythm.json"])
+    with open(os.path.join(FOLDER, "rhythm.json")) as file:
+        committed = json.load(file)
+    assert committed["times"] == fresh["times"]
+    np.testing.assert_allclose(committed["beats"], fresh["beats"])
+    for old, new in zip(committed["cases"] + committed["rig_cases"],
+                        fresh["cases"] + fresh["rig_cases"], strict=True):
+        assert old["mapping"]["envelope"] == new["mapping"]["envelope"]
+        assert old["mapping"]["pulse"] == new["mapping"]["pulse"]
+        for key in ("phi", "shaped", "coefficients"):
+            if key in old:
+                np.testing.assert_allclose(old[key], new[key], rtol=1e-5, atol=1e-6,
+                                           err_msg=key)

@@ -11,7 +11,7 @@ import { Motion } from "./motion";
 import { fewerTiles, galleryRule, gallerySize, sizeChoices } from "./options";
 import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
-import { drawSpectrum } from "./plots";
+import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
@@ -56,6 +56,7 @@ export class App {
       if (this.rigs?.active) this.rigs.viewer.requestDraw(); // a seek or a rewind moves rigs too
       this.showFrame(t);
       drawSpectrum($("spectrum"), this.motion.bandValuesAt(t));
+      drawBeat($("spectrum"), this.motion.spectrum, t);
     };
     const requestDraw = () => this.viewer.requestDraw();
     const status = (text: string) => this.status(text);
