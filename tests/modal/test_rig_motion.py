@@ -45,7 +45,7 @@ def test_coefficients_follow_the_formula_band_by_band(loop, song, rng):
     model = loop.model
     selected = [7, 2, 4]  # taken in ascending order: targets 0, 1, 2 are modes 2, 4, 7
     palette = ModeSettings(np.array(selected), np.array([0.3, 0.1, 0.2]),
-                           np.array([0.5, 1.0, 2.0]), 1.7)
+                           np.array([0.5, 1.0, 2.0]), 1.7, "free")  # the thesis's motion
     mapping = Mapping(rng.uniform(0, 1, 16), rng.normal(size=5), gain=1.3, offset=0.25,
                       modes=palette)
     times = np.linspace(0, 3.9, 40)

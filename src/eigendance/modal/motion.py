@@ -34,10 +34,12 @@ from eigendance.modal.palette import (
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
+from eigendance.music.envelope import Envelope
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 
 FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
+DRIVE_ATTACK, DRIVE_RELEASE = 0.15, 0.8  # s: the default mapping's envelope (a slow swell)
 
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
@@ -185,10 +187,13 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
 
     Band ξ drives the mode ⌊(ξ + ½)·nm/B⌋ (low sounds drive low modes), each with the
     amplification nm/B, so that a full-scale spectrum gives φ ≈ 1 on every mode that a band
-    reaches.
+    reaches. The loudness swells (attack DRIVE_ATTACK, release DRIVE_RELEASE): the sway's
+    amplitude follows the music while its turning points stay the sinusoids' (on the beats,
+    docs/design.md#tempo-lock), not every drum hit's.
     """
     transfer = (np.arange(bands) + 0.5) / bands
-    return Mapping(transfer, np.array([n_modes / bands]), name="bands in order")
+    return Mapping(transfer, np.array([n_modes / bands]), name="bands in order",
+                   envelope=Envelope([DRIVE_ATTACK], [DRIVE_RELEASE], [0.0]))
 
 
 def song_calibrated(mapping: Mapping, spectrogram: Spectrogram, n_modes: int) -> Mapping:

@@ -34,6 +34,7 @@ LAG = 0.02  # s: the flux compares a frame with the one this much earlier
 CHUNK_SECONDS = 60.0  # the tempogram is averaged over chunks this long
 BASS_FMAX = 200.0  # Hz: the bass envelope's mel bands are centred below this
 OFFBEAT_RATIO = 1.5  # beats move half a beat when the bass hits there this much harder
+FAST = 160.0  # BPM: above this, every other beat is kept when the bass marks one parity
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
 QUIET = 1e-3  # an envelope whose 99th percentile is below this (dB per frame) is silence
 
@@ -154,10 +155,12 @@ def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
 def bass_phase(beats: np.ndarray, bass: np.ndarray, rate: float) -> np.ndarray:
     """The beats, moved by half a beat where the bass hits the half-beats harder.
 
-    A tracker can lock onto the off-beat (a guitar's "chick", off-beat hi-hats); the bass
-    and the kick drum mark the beat itself. With h the largest bass envelope within ±30 ms
-    (`bass`, (T,) at `rate`), if the mean h at the midpoints between beats is more than
-    OFFBEAT_RATIO times the mean h at the beats, the midpoints are the beats.
+    A tracker can lock onto the off-beat (a guitar's "chick", off-beat hi-hats), or onto the
+    eighth notes; the bass and the kick drum mark the beat itself. With h the largest bass
+    envelope within ±30 ms (`bass`, (T,) at `rate`): if the mean h at the midpoints between
+    beats is more than OFFBEAT_RATIO times the mean h at the beats, the midpoints are the
+    beats; then, above FAST beats per minute, if one parity of the beats (even or odd) has a
+    mean h more than OFFBEAT_RATIO times the other's, only that parity is kept.
     """
     if len(beats) < MIN_BEATS or not np.any(bass > 0):
         return beats
@@ -170,7 +173,11 @@ def bass_phase(beats: np.ndarray, bass: np.ndarray, rate: float) -> np.ndarray:
 
     middles = (beats[:-1] + beats[1:]) / 2
     if strength(middles) > OFFBEAT_RATIO * strength(beats[:-1]):
-        return middles
+        beats = middles
+    if 60 / np.median(np.diff(beats)) > FAST and len(beats) >= 2 * MIN_BEATS:
+        even, odd = strength(beats[0::2]), strength(beats[1::2])
+        if max(even, odd) > OFFBEAT_RATIO * min(even, odd):  # a tracker at double tempo
+            beats = beats[0::2] if even >= odd else beats[1::2]
     return beats
 
 
@@ -202,7 +209,10 @@ def analyse_rhythm(envelope, rate: float, bass=None) -> Rhythm:
                                        bpm=tempo, units="time")
     beats = np.asarray(beats, dtype=np.float64)
     if bass is not None:
-        beats = bass_phase(beats, np.asarray(bass, dtype=np.float32), rate)
+        checked = bass_phase(beats, np.asarray(bass, dtype=np.float32), rate)
+        if len(checked) < len(beats) * 0.75:  # every other beat: half the tempo
+            tempo /= 2
+        beats = checked
     if len(beats) < MIN_BEATS:
         return Rhythm(envelope, onsets, beats, 0.0, float(rate))
     return Rhythm(envelope, np.asarray(onsets, dtype=np.float64), beats, tempo, float(rate))
