@@ -10,7 +10,6 @@ import mir_eval
 import numpy as np
 import pytest
 import soundfile
-from helpers import fixture_path
 from scipy.signal import find_peaks
 
 from eigendance.cli import main

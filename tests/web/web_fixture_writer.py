@@ -53,7 +53,8 @@ def build():
                  "eigenvectors": basis.eigenvectors.ravel().tolist(),
                  "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
     rig_files = rig_reference(spectrogram, values)
-    return {**rig_files, **rhythm_reference(basis), "reference.json": json.dumps(reference, indent=0).encode(),
+    return {**rig_files, **rhythm_reference(basis),
+            "reference.json": json.dumps(reference, indent=0).encode(),
             "basis.bin": basis_bundle(basis, "ellipsoid"),
             "basis16.bin": basis_bundle(basis, "ellipsoid", half=True),
             "spectrogram.bin": spectrogram_bundle(spectrogram, "demo-2s")}

@@ -257,3 +257,18 @@ def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: flo
         raise InputError(f"{path}: tempo must be 0 … 1000 beats per minute, got {tempo:g}")
     return Rhythm(strength.astype(np.float32), times["onsets"], times["beats"], tempo, rate,
                   times["downbeats"])
+
+
+def warm_up() -> float:
+    """Analyse two seconds of clicks once, so that numba compiles (and caches on disk) librosa's
+    kernels now rather than at the first song (2–10 s the first time ever); returns the
+    seconds it took. `make setup` (so `make demo` and `make test`) calls it."""
+    import time
+
+    from eigendance.music.spectrogram import Spectrogram
+
+    start = time.perf_counter()
+    clicks = np.zeros(2 * 22050)
+    clicks[::11025] = 1.0
+    Spectrogram.from_samples(clicks, 22050)
+    return time.perf_counter() - start
