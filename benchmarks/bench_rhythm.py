@@ -20,6 +20,8 @@ CC BY 4.0). No annotated real song could be reached from PyPI, npm or Debian.
    projection of the skin's displacement on its first principal direction; local extrema with
    the same prominence rule) against the beats or the half-beat grid (the better of the two),
    F at ±70 ms; "free" is the thesis's free-running palette, "beat" the tempo lock.
+2 and 3 also run on five shared real recordings (45 s each; country, jazz, lo-fi, pop,
+classical), scored against the beats of librosa's default call: no annotations.
 
 Run: EIGENDANCE_SHARED_DATA=/path/to/shared/data .venv/bin/python benchmarks/bench_rhythm.py
 """
@@ -174,10 +176,34 @@ def rigs(songs: dict) -> None:
                                          for i in range(0, len(row), 2)))
 
 
+REAL_SONGS = ("emegeme_country.mp3", "kevin_macleod_vibe_ace.ogg", "tad_florist_lofi.mp3",
+              "kevin_macleod_monkeys_spinning_monkeys.ogg",
+              "brahms_hungarian_dance_5_us_army_strings.ogg")
+
+
+def real_songs(seconds: float = 45.0) -> dict:
+    """Shared real recordings (no annotations): the first `seconds`, with librosa's default
+    call's beats as the reference the dances are scored against (an independent tracker)."""
+    import librosa
+
+    songs = {}
+    for name in REAL_SONGS:
+        path = shared_path("audio", name)
+        if not os.path.exists(path):
+            continue
+        rate, chunks = open_audio(path)
+        samples = np.concatenate(list(chunks))[:int(seconds * rate)]
+        resampled = librosa.resample(samples, orig_sr=rate, target_sr=22050)
+        _, beats = librosa.beat.beat_track(y=resampled, sr=22050, units="time")
+        songs[f"{name[:22]} (ref: librosa)"] = (Spectrogram.from_samples(samples, rate), beats)
+    return songs
+
+
 def main() -> None:
     print(f"load: {os.getloadavg()[0]:.1f} (1-minute average, 2 cores)")
     with tempfile.TemporaryDirectory() as folder:
         songs = analysis(clips(folder))
+    songs.update(real_songs())
     harmonics(songs)
     rigs(songs)
 

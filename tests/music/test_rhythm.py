@@ -4,7 +4,6 @@ mapping v3 against hand-derived numbers; the rig dance locked to the beats."""
 
 import math
 import os
-import shutil
 
 import mir_eval
 import numpy as np
@@ -21,12 +20,11 @@ from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.envelope import Envelope, Pulse, shape_values
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
+from helpers import fixture_path
 
 SR = 22050
-SHARED = os.environ.get("EIGENDANCE_SHARED_DATA") or os.path.join(
-    os.path.dirname(__file__), "..", "..", "..", "shared", "data")
-KICK_MP3 = os.path.join(SHARED, "audio", "beatnet_808kick120bpm.mp3")
-GUITAR_192K = os.path.join(SHARED, "audio", "florianreichelt_mysterious_acoustic_guitar.ogg")
+KICK_MP3 = fixture_path("audio", "beatnet_808kick120bpm.mp3")  # a real kick track, 120 BPM
+GUITAR_192K = fixture_path("audio", "florianreichelt_mysterious_acoustic_guitar.ogg")  # 192 kHz
 
 
 def beat_times(seconds, bpm_start, bpm_end=None, first=0.2):
@@ -125,7 +123,6 @@ def test_tempo_over_time_follows_a_drift(analysed):
     assert late > early + 10
 
 
-@pytest.mark.skipif(not os.path.exists(KICK_MP3), reason="shared data not found")
 def test_a_real_kick_track_at_120_bpm():
     song = Spectrogram.from_file(KICK_MP3)
     assert abs(song.rhythm.tempo - 120) < 2
@@ -233,11 +230,9 @@ def test_surround_and_high_sample_rates(tmp_path):
     soundfile.write(tmp_path / "surround.wav", surround, SR)
     song = Spectrogram.from_file(tmp_path / "surround.wav", bands=16)
     assert beat_f(beats, song.rhythm.beats) >= 0.9
-    if os.path.exists(GUITAR_192K):
-        shutil.copy(GUITAR_192K, tmp_path / "guitar.ogg")
-        guitar = Spectrogram.from_file(tmp_path / "guitar.ogg", bands=16)
-        assert guitar.sample_rate == 192000
-        check_plays(guitar)
+    guitar = Spectrogram.from_file(GUITAR_192K, bands=16)
+    assert guitar.sample_rate == 192000
+    check_plays(guitar)
 
 
 # --------------------------------------------------------------------------------------------

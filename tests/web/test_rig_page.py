@@ -199,7 +199,7 @@ def test_combined_modes_save_a_mapping_python_plays_the_same_and_dances_breed(pa
     page.evaluate("window.eigendance.rig.select(0); window.eigendance.rig.select(2); "
                   "window.eigendance.rig.combine()")
     saved = page.evaluate("window.eigendance.rig.playerMapping()")
-    assert saved["version"] == 2 and saved["offset"] == 0 and saved["modes"]["selected"] == [0, 2]
+    assert saved["version"] == 3 and saved["offset"] == 0 and saved["modes"]["selected"] == [0, 2]
     mapping = Mapping.from_json(saved)
     model = Rig.from_skeleton(sample_rig("loop8"), dtype=np.float64).model
     expected = rig_coefficients(model, song, mapping, TIMES)

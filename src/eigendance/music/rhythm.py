@@ -27,6 +27,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from eigendance.errors import InputError
+from eigendance.files import checked_array
+
 MEL_BANDS = 128  # bands of the onset envelope's mel spectrum
 MEL_FMAX = 11025.0  # Hz: librosa's default analysis (22050 Hz) sees no higher
 FLOOR_DB = -100.0  # dB of full scale: the mel power's floor
@@ -50,7 +53,7 @@ class OnsetEnvelope:
     """
 
     def __init__(self, sample_rate: int, window: int, rate: float):
-        import librosa  # heavy (numba): only when a song is analysed
+        import librosa  # heavy (numba, 1–2 s): only when a song is analysed
 
         with warnings.catch_warnings():  # a low sample rate leaves some mel bands empty
             warnings.simplefilter("ignore")
@@ -138,7 +141,7 @@ def beat_phase(beats, times) -> np.ndarray:
 def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
     """librosa's tempo (feature.tempo, its default prior around 120 BPM) of the tempogram
     averaged over chunks of CHUNK_SECONDS, beats per minute."""
-    import librosa
+    import librosa  # heavy (numba): only when a song is analysed
 
     chunk = max(1, int(CHUNK_SECONDS * rate))
     total, frames = None, 0
@@ -194,7 +197,7 @@ def analyse_rhythm(envelope, rate: float, bass=None) -> Rhythm:
     >>> round(rhythm.tempo), len(rhythm.beats) >= 15
     (120, True)
     """
-    import librosa
+    import librosa  # heavy (numba): only when a song is analysed
 
     envelope = np.asarray(envelope, dtype=np.float32)
     nothing = Rhythm(envelope, np.zeros(0), np.zeros(0), 0.0, float(rate))
@@ -235,9 +238,6 @@ def rhythm_arrays(rhythm: Rhythm) -> dict:
 
 def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: float) -> Rhythm:
     """The rhythm of a version-2 file, checked: InputError naming the field otherwise."""
-    from eigendance.errors import InputError
-    from eigendance.files import checked_array
-
     missing = [key for key in FILE_KEYS if key not in data]
     if missing:
         raise InputError(f"{path}: a version-2 spectrogram file lacks {', '.join(missing)}")
@@ -258,17 +258,3 @@ def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: flo
     return Rhythm(strength.astype(np.float32), times["onsets"], times["beats"], tempo, rate,
                   times["downbeats"])
 
-
-def warm_up() -> float:
-    """Analyse two seconds of clicks once, so that numba compiles (and caches on disk) librosa's
-    kernels now rather than at the first song (2–10 s the first time ever); returns the
-    seconds it took. `make setup` (so `make demo` and `make test`) calls it."""
-    import time
-
-    from eigendance.music.spectrogram import Spectrogram
-
-    start = time.perf_counter()
-    clicks = np.zeros(2 * 22050)
-    clicks[::11025] = 1.0
-    Spectrogram.from_samples(clicks, 22050)
-    return time.perf_counter() - start

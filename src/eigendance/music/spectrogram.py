@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -432,3 +433,14 @@ def save_picture(spectrogram: Spectrogram, path: str | os.PathLike,
     figure.colorbar(image, ax=axes, label="loudness")
     figure.tight_layout()
     atomic_write(path, lambda file: figure.savefig(file, format=format))
+
+
+def warm_up() -> float:
+    """Analyse two seconds of clicks once, so that numba compiles (and caches on disk) librosa's
+    kernels now rather than at the first song (2–10 s the first time ever); returns the
+    seconds it took. `make setup` (so `make demo` and `make test`) calls it."""
+    start = time.perf_counter()
+    clicks = np.zeros(2 * 22050)
+    clicks[::11025] = 1.0
+    Spectrogram.from_samples(clicks, 22050)
+    return time.perf_counter() - start
