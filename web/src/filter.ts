@@ -179,6 +179,8 @@ export interface Pulse {
   decay: number;
   source: "beats" | "onsets";
   routed: Float64Array;
+  /** the targets in the range (where routed is 1) */
+  targets: Int32Array;
 }
 
 export function pulseOf(mapping: Mapping, k: number): Pulse {
@@ -188,7 +190,9 @@ export function pulseOf(mapping: Mapping, k: number): Pulse {
     const centre = (v + 0.5) / k;
     return centre >= low && centre <= high ? 1 : 0;
   });
-  return { amount: p.amount ?? 0, decay: p.decay ?? 0.15, source: p.source ?? "beats", routed };
+  const targets = Int32Array.from([...routed.keys()].filter((v) => routed[v] === 1));
+  return { amount: p.amount ?? 0, decay: p.decay ?? 0.15, source: p.source ?? "beats", routed,
+    targets };
 }
 
 /** The events a pulse kicks on: the song's beats (none without a beat) or onsets. */
@@ -280,8 +284,8 @@ export function filterValues(prepared: Prepared, bandValues: ArrayLike<number>,
   const B = prepared.harmonicOfBand.length;
   for (let b = 0; b < B; b++) sums[prepared.harmonicOfBand[b]] += bandValues[b];
   if (kick !== 0) {
-    const routed = prepared.pulse.routed;
-    for (let v = 0; v < prepared.k; v++) sums[v] += kick * routed[v];
+    const targets = prepared.pulse.targets;
+    for (let i = 0; i < targets.length; i++) sums[targets[i]] += kick;
   }
   for (let v = 0; v < prepared.k; v++) phi[v] = gain * prepared.amplification[v] * sums[v] + 1;
   return phi;

@@ -11,16 +11,24 @@ import type { Envelope, Mapping, Prepared } from "./filter";
 /** Smoothed spectrograms kept (each is frames × bands floats): the slider visits many τ. */
 const SMOOTHED_KEPT = 4;
 
+interface Heard {
+  spectrum: Spectrum;
+  values: Float32Array;
+  buffer: Float32Array;
+  events: Float32Array;
+}
+
 export class Motion {
   basis: Basis | null = null;
   spectrum: Spectrum | null = null;
   /** the spectrogram as mappings hear it (smoothing τ, envelope), by `Envelope.key`, most
    * recently used last */
   private smoothedValues = new Map<string, Float32Array>();
-  /** reused every frame: band values at the time being drawn, one buffer per shaping */
-  private buffers = new Map<string, Float32Array>();
-  /** the events each pulse kicks on, per prepared mapping */
-  private events = new WeakMap<Prepared, { spectrum: Spectrum; events: Float32Array }>();
+  /** reused every frame: the raw band values at the time being drawn */
+  private buffer = new Float32Array(0);
+  /** per prepared mapping (one lookup a frame): the values it hears, its band-values buffer
+   * and the events its pulse kicks on */
+  private heard = new WeakMap<Prepared, Heard>();
   private loudest: { spectrum: Spectrum; count: number; times: number[] } | null = null;
 
   /** Whether there is something to draw. */
@@ -37,27 +45,29 @@ export class Motion {
    * spectrogram itself); the array is reused by the next call with the same shaping. */
   bandValuesAt(t: number, prepared?: Prepared): Float32Array {
     const spectrum = this.spectrum!;
-    const key = prepared ? prepared.envelope.key : "0";
-    let buffer = this.buffers.get(key);
-    if (!buffer || buffer.length !== spectrum.bands) {
-      buffer = new Float32Array(spectrum.bands);
-      this.buffers.set(key, buffer);
-      if (this.buffers.size > SMOOTHED_KEPT + 1) {
-        this.buffers.delete(this.buffers.keys().next().value!);
-      }
+    if (prepared) {
+      const heard = this.heardBy(prepared);
+      return spectrumAt(spectrum, t, heard.buffer, heard.values);
     }
-    return spectrumAt(spectrum, t, buffer, prepared ? this.valuesFor(prepared) : spectrum.values);
+    if (this.buffer.length !== spectrum.bands) this.buffer = new Float32Array(spectrum.bands);
+    return spectrumAt(spectrum, t, this.buffer, spectrum.values);
   }
 
   /** amount·p(t) of a mapping's pulse on the song's beats or onsets (0 without). */
   kick(prepared: Prepared, t: number): number {
     if (!(prepared.pulse.amount > 0) || !this.spectrum) return 0;
-    let cached = this.events.get(prepared);
-    if (!cached || cached.spectrum !== this.spectrum) {
-      cached = { spectrum: this.spectrum, events: pulseEvents(this.spectrum, prepared.pulse) };
-      this.events.set(prepared, cached);
+    return kickAt(prepared.pulse, this.heardBy(prepared).events, t);
+  }
+
+  private heardBy(prepared: Prepared): Heard {
+    const spectrum = this.spectrum!;
+    let heard = this.heard.get(prepared);
+    if (!heard || heard.spectrum !== spectrum) {
+      heard = { spectrum, values: this.valuesFor(prepared),
+        buffer: new Float32Array(spectrum.bands), events: pulseEvents(spectrum, prepared.pulse) };
+      this.heard.set(prepared, heard);
     }
-    return kickAt(prepared.pulse, cached.events, t);
+    return heard;
   }
 
   /** The times (s) of the song's `count` loudest frames (sum over the bands), at least a

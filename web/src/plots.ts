@@ -6,7 +6,8 @@ import type { Prepared } from "./filter";
 
 /** How long a beat tick on the spectrum strip takes to fade, s. */
 const TICK_DECAY = 0.12;
-const TICK = { amount: 1, decay: TICK_DECAY, source: "beats" as const, routed: new Float64Array(0) };
+const TICK = { amount: 1, decay: TICK_DECAY, source: "beats" as const,
+  routed: new Float64Array(0), targets: new Int32Array(0) };
 
 /** The beat tick of the spectrum strip: its top edge lights up on each of the song's beats and
  * fades in TICK_DECAY (CSS variable --beat, the opacity of #spectrum::after); the strip's title
