@@ -13,7 +13,7 @@ from scipy.signal import find_peaks
 
 from eigendance.cli import main
 from eigendance.errors import EigendanceError
-from eigendance.modal.motion import rig_coefficients, rig_mapping
+from eigendance.modal.motion import rig_coefficients, rig_mapping, twists
 from eigendance.modal.palette import lock_ratios, locked_phases
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
@@ -311,7 +311,7 @@ def test_rig_dance_locks_to_the_beats(analysed):
         mapping = rig_mapping(rig.model, song)
         mapping.modes.tempo = tempo
         c = rig_coefficients(rig.model, song, mapping, song.times)
-        moved = rig.skin.positions(c).reshape(len(c), -1)
+        moved = twists(rig.model, c).reshape(len(c), -1)  # the bodies' motion (the bench: skin)
         moved -= moved.mean(axis=0)
         sway = moved @ np.linalg.svd(moved[::4], full_matrices=False)[2][0]
         points = turning_points(sway, song.rate)
