@@ -1,6 +1,7 @@
-"""Work once: every model, every song (its spectrogram at each band count) and every gallery of
-a plan is prepared by one task, whatever the number of jobs that use it; a prepared value is
-released once its last user is done. The engine here runs the tasks in this process and
+"""Work once: every model, every song (its spectrogram at each band count, its rhythm once) and
+every gallery of a plan is prepared by one task, whatever the number of jobs that use it; a
+prepared value is released once its last user is done; a second plan on the same songs reads
+their analysis from the content cache. The engine here runs the tasks in this process and
 records them (the real engines run the same graph: tests/batch/test_faults.py)."""
 
 import numpy as np
@@ -9,6 +10,7 @@ from conftest import write_plan
 from eigendance.batch import work
 from eigendance.batch.plan import read_plan
 from eigendance.batch.run import run_plan
+from eigendance.music import spectrogram as spectrogram_module
 from eigendance.music.mapping import Mapping
 
 
@@ -75,8 +77,22 @@ def called(engine, function):
     return [arguments for name, arguments in engine.calls if name == function]
 
 
+def count_rhythm_analyses(monkeypatch) -> list:
+    """Every rhythm analysis made in this process from now on."""
+    calls = []
+    analyse = spectrogram_module.analyse_rhythm
+
+    def counted(*arguments, **options):
+        calls.append(1)
+        return analyse(*arguments, **options)
+
+    monkeypatch.setattr(spectrogram_module, "analyse_rhythm", counted)
+    return calls
+
+
 def test_each_model_song_and_gallery_is_prepared_once(inputs, monkeypatch):
     monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(inputs / "cache"))
+    rhythms = count_rhythm_analyses(monkeypatch)
     plan = write_plan(str(inputs), models=["sphere.obj", "loop4"], songs=["*.wav"], gallery=3,
                       outputs=["npz"], out="out", fps=10, k=8)
     engine, outcome = run(plan)
@@ -90,10 +106,16 @@ def test_each_model_song_and_gallery_is_prepared_once(inputs, monkeypatch):
     assert len(galleries) == 4  # one per (model, song), of 3 items
     assert len(called(engine, "make_outputs")) == 12
     assert len(engine.released) == 2 + 2 + 4  # every prepared value, once its jobs are done
+    assert len(rhythms) == 2
+    # Another plan on the same songs: their spectrograms and rhythms come from the cache.
+    engine, _ = run(write_plan(str(inputs), models=["loop4"], songs=["*.wav"], gallery=2,
+                               outputs=["npz"], out="out2", fps=10))
+    assert len(called(engine, "prepare_song")) == 2 and len(rhythms) == 2
 
 
-def test_each_song_is_analysed_once_per_band_count(inputs, monkeypatch):
+def test_each_song_is_analysed_once_per_band_count_and_its_rhythm_once(inputs, monkeypatch):
     monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(inputs / "cache"))
+    rhythms = count_rhythm_analyses(monkeypatch)
     for name, bands in (("narrow", 16), ("wide", 64), ("wide2", 64)):
         Mapping(np.linspace(0, 1, bands), np.linspace(-1, 1, 8), name=name).save(
             inputs / f"{name}.json")
@@ -104,6 +126,15 @@ def test_each_song_is_analysed_once_per_band_count(inputs, monkeypatch):
     songs = sorted((arguments[0].rsplit("/", 1)[-1], arguments[2])
                    for arguments in called(engine, "prepare_song"))
     assert songs == [("a.wav", 16), ("a.wav", 64), ("b.wav", 16), ("b.wav", 64)]
+    assert len(rhythms) == 2  # once per song, shared by its two band counts
     for arguments in called(engine, "make_outputs"):
         spectrogram, mapping = arguments[2], arguments[3]
-        assert spectrogram.bands == mapping.bands
+        assert spectrogram.bands == mapping.bands and spectrogram.rhythm is not None
+    # The rhythm does not depend on the bands: shared, it is what each band count would get.
+    wide = [arguments for arguments in called(engine, "prepare_song") if len(arguments) == 4][-1]
+    alone = spectrogram_module.Spectrogram.from_file(wide[0], bands=wide[2])
+    shared = [arguments[2] for arguments in called(engine, "make_outputs")
+              if arguments[2].bands == wide[2] and arguments[0]["song"] == wide[0]][0]
+    for name in ("onset_strength", "onsets", "beats"):
+        np.testing.assert_array_equal(getattr(shared.rhythm, name), getattr(alone.rhythm, name))
+    assert shared.rhythm.tempo == alone.rhythm.tempo

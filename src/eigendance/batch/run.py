@@ -252,6 +252,7 @@ class Scheduler:
         self.users: dict = {}  # prepared input → jobs that will use it
         self.failed: dict = {}  # prepared input → its error
         self.known: set = set()  # prepared inputs asked for
+        self.songs: dict = {}  # song path → its first prepared input (the rhythm's)
         self.sequence = 0
 
     def run(self, todo: list[Pending], found: dict[str, str]) -> None:
@@ -289,8 +290,10 @@ class Scheduler:
         song = Input(("song", job.song.path, bands))
         self.prepare(model, "prepare_model", (job.model.path, job.model.kind, plan.k),
                      each.index, [])
-        self.prepare(song, "prepare_song", (job.song.path, found[job.song.path], bands),
-                     each.index, [])
+        first = self.songs.setdefault(job.song.path, song)  # its rhythm, for other bands
+        self.prepare(song, "prepare_song", (job.song.path, found[job.song.path], bands) +
+                     ((first,) if first != song else ()), each.index,
+                     [first] if first != song else [])
         inputs = [model, song]
         if job.item.gallery is not None:
             gallery = Input(("gallery", job.model.path, job.song.path, job.item.gallery))
@@ -325,7 +328,9 @@ class Scheduler:
         what = {"model": "preparing", "song": "analysing", "gallery": "gallery of"}[name[0]]
         label = f"{what} {os.path.basename(name[1])}" + \
             (f" on {os.path.basename(name[2])}" if name[0] == "gallery" else "")
-        task = Task(label, function, arguments, keep=True, extra={"what": name})
+        task = Task(label, function, arguments, keep=True, extra={"what": name, "inputs": inputs})
+        for needed in inputs:
+            self.users[needed] = self.users.get(needed, 0) + 1
         self.schedule(task, (index, 0), inputs)
 
     def schedule(self, task: Task, priority: tuple, inputs: list) -> None:
@@ -384,6 +389,7 @@ class Scheduler:
                                       "not made)")
         else:
             self.values[name] = handle
+        self.done_with(task.extra["inputs"])
         for waiting in self.waiting.pop(name, []):
             if report["error"]:
                 self.fail(waiting, report)
@@ -435,7 +441,17 @@ class Scheduler:
                          memory=report["memory"])
         self.outcome.lines.append(line)
         self.observer.job(line, quiet)
-        for name in task.extra["inputs"]:
+        self.done_with(task.extra["inputs"])
+
+    def done_with(self, inputs: list) -> None:
+        """A task that needed these inputs has ended: those no task needs any more are
+        released.
+
+        Parameters
+        ----------
+        inputs : the prepared inputs the task needed.
+        """
+        for name in inputs:
             self.users[name] -= 1
             if self.users[name] == 0 and name in self.values:
                 self.engine.release(self.values.pop(name))

@@ -1,12 +1,12 @@
 """What a batch's workers run, on any engine (docs/design.md#batch).
 
-Four tasks: `prepare_model` (a mesh's basis through the content cache, or a rig's modal
-analysis and modal skin), `prepare_song` (the spectrogram, through the content cache),
+Four tasks: `prepare_model` (a mesh's basis through the content cache, or a rig's modal analysis
+and modal skin), `prepare_song` (the spectrogram and the rhythm, through the content cache),
 `prepare_gallery` (the initial gallery of a model on a song) and `make_outputs` (one job: the
 dance of a model, a song and a mapping, written in each format). Each is called through `task`,
 which gives the worker one thread for numbers and one for drawing (a batch runs one task per
-core), points the content cache where the driver says, and turns every failure into one line,
-so a task never raises: it returns (report, value). The report holds the task's seconds, the
+core), points the content cache where the driver says, and turns every failure into one line, so
+a task never raises: it returns (report, value). The report holds the task's seconds, the
 worker's memory and, for a job, the files written with their sizes and SHA-256.
 """
 
@@ -15,6 +15,7 @@ from __future__ import annotations
 import os
 import resource
 import time
+from dataclasses import replace
 
 import numpy as np
 from threadpoolctl import threadpool_limits
@@ -38,7 +39,7 @@ from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 from eigendance.window import Window
 
-SPECTROGRAM_VERSION = 1  # part of a cached spectrogram's key
+SPECTROGRAM_VERSION = 2  # part of a cached spectrogram's key (2: with the rhythm)
 
 
 def setup_worker() -> None:
@@ -134,29 +135,41 @@ def prepare_model(path: str, kind: str, k: int):
     return rig
 
 
-def prepare_song(path: str, digest: str, bands: int) -> Spectrogram:
-    """A song's spectrogram of `bands` bands, through the content cache (folder
+def prepare_song(path: str, digest: str, bands: int, rhythm_of: Spectrogram | None = None
+                 ) -> Spectrogram:
+    """A song's spectrogram of `bands` bands with its rhythm, through the content cache (folder
     `spectrograms`, keyed by the song's SHA-256 and the analysis).
+
+    The rhythm (onsets, beats, tempo: docs/design.md#rhythm) does not depend on the bands: a
+    song asked at a second band count takes it from `rhythm_of`, its spectrogram at the first,
+    so the rhythm is analysed once per song.
 
     Parameters
     ----------
     path : the audio file.
     digest : its SHA-256 (`content.file_digest`).
     bands : bands.
+    rhythm_of : the same song's spectrogram at another band count, or None (analyse it here).
 
     Returns
     -------
-    Spectrogram.
+    Spectrogram, its `rhythm` set.
     """
     cache = DiskCache("spectrograms")
     entry = cache.path(f"eigendance.spectrogram audio={digest} bands={bands} "
                        f"version={SPECTROGRAM_VERSION}")
     if os.path.isfile(entry):
         try:
-            return Spectrogram.load(entry)
+            spectrogram = Spectrogram.load(entry)
+            if spectrogram.rhythm is not None:
+                return spectrogram
         except InputError:
             pass  # damaged: made again
-    spectrogram = Spectrogram.from_file(path, bands=bands)
+    if rhythm_of is not None and rhythm_of.rhythm is not None:
+        spectrogram = replace(Spectrogram.from_file(path, bands=bands, rhythm=False),
+                              rhythm=rhythm_of.rhythm)
+    else:
+        spectrogram = Spectrogram.from_file(path, bands=bands)
     try:
         spectrogram.save(entry)
     except InputError:
