@@ -51,6 +51,7 @@ fps = 30                          # frames per second (optional, default 30)
 k = 300                           # harmonics of a mesh (optional, default 300)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
+# cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
 """
 
 

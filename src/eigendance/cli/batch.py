@@ -16,6 +16,13 @@ from eigendance.cli.options import number, progress_bar
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.cache import cache_folder
 
+# What --help says after the example plan.
+AFTER = """
+A second run makes only what is missing, changed or altered (out/batch-record.jsonl); each
+job's status, times and outputs: out/batch-report.jsonl. Exit status 0; 1 when a job failed on
+its input; 2 on an internal failure; 130 after Ctrl-C (what was finished stays finished).
+"""
+
 
 def add_batch(parser):
     """The options of `eigendance batch` (its --help ends with an example plan).
@@ -25,7 +32,7 @@ def add_batch(parser):
     parser : the command's parser.
     """
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
-    parser.epilog = "An example plan:\n\n" + EXAMPLE
+    parser.epilog = "An example plan:\n\n" + EXAMPLE + AFTER
     parser.add_argument("plan", help="the plan (TOML): models, songs, outputs, gallery or "
                                      "mappings, out (see below)")
     parser.add_argument("-j", "--jobs", type=number(1, 4096, integer=True), default=None,
