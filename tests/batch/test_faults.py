@@ -12,8 +12,8 @@ import time
 import av
 import numpy as np
 import pytest
+from batch_helpers import lock_holders, song, temporaries, write_plan
 
-from conftest import lock_holders, song, temporaries, write_plan
 from eigendance.batch.record import RECORD, read_entries
 from eigendance.cli.main import main
 from helpers import alive, descendants, start

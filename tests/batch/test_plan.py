@@ -4,8 +4,8 @@ are safe and unique; the example of --help is a plan."""
 import os
 
 import pytest
+from batch_helpers import write_plan
 
-from conftest import write_plan
 from eigendance.batch import plan as plan_module
 from eigendance.batch.names import unique_parts
 from eigendance.batch.plan import read_plan

@@ -5,8 +5,8 @@ their analysis from the content cache. The engine here runs the tasks in this pr
 records them (the real engines run the same graph: tests/batch/test_faults.py)."""
 
 import numpy as np
+from batch_helpers import write_plan
 
-from conftest import write_plan
 from eigendance.batch import work
 from eigendance.batch.plan import read_plan
 from eigendance.batch.run import run_plan
