@@ -164,7 +164,7 @@ def main():
     folder = tempfile.mkdtemp(prefix="bench-batch-")
     os.environ["EIGENDANCE_CACHE_DIR"] = os.path.join(folder, "cache")
     # A cluster on this machine's loopback, for this benchmark only: without Ray's token
-    # authentication (on by default since Ray 2.5x; a real cluster keeps it, docs/batch.md).
+    # authentication (Ray 2.60 turns it on where a token exists; a real cluster keeps it).
     os.environ["RAY_AUTH_MODE"] = "disabled"
     models = [shared_path("meshes", "bunny_stanford.obj"), shared_path("rigged", "CesiumMan.glb")]
     try:
