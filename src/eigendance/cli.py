@@ -643,10 +643,10 @@ def run_render(args) -> None:
         items = items or initial_gallery(basis, spectrogram, size)
         name = os.path.splitext(os.path.basename(args.output))[0]
         dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name) for item in items]
-        looks = [Look(item.shading, item.deformed_normal_weight) for item in items]
+        looks = [Look.of(item) for item in items]
     else:
         dances = [dance_from(args, mapping)]
-        looks = [Look(mapping.shading, mapping.deformed_normal_weight) if mapping else Look()]
+        looks = [Look.of(mapping)]
     bar, update = progress_bar(None, "frames", unit="frame")
     with bar:
         def step(done, total):

@@ -99,6 +99,8 @@ class Mapping:
     deformed_normal_weight : weight of the deformed triangle's flat normal against the original
         vertex normal, in [0, 1] (thesis Fig. 6.4(d): 0.4).
     shading : "smooth", "flat" or "wireframe".
+    materials : draw a model that has materials in them (False: in the clay studio look);
+        a model without materials is drawn in clay either way (docs/design.md#mapping-file).
 
     Example
     -------
@@ -119,6 +121,7 @@ class Mapping:
     modes: ModeSettings | None = None
     deformed_normal_weight: float = 0.4
     shading: str = "smooth"
+    materials: bool = True
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
@@ -136,6 +139,10 @@ class Mapping:
         if self.shading not in SHADINGS:
             raise InputError(f"{self.name}: shading must be one of {', '.join(SHADINGS)}, got "
                              f"{self.shading!r}")
+        if not isinstance(self.materials, bool | np.bool_):
+            raise InputError(f"{self.name}: look.materials must be true or false, got "
+                             f"{_shown(self.materials)}")
+        self.materials = bool(self.materials)
 
     @property
     def bands(self) -> int:
@@ -172,7 +179,7 @@ class Mapping:
                 "gain": self.gain, "smoothing": self.smoothing, "offset": self.offset,
                 "modes": None if self.modes is None else self.modes.to_json(),
                 "look": {"deformed_normal_weight": self.deformed_normal_weight,
-                         "shading": self.shading}}
+                         "shading": self.shading, "materials": self.materials}}
 
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> Mapping:
@@ -214,6 +221,8 @@ class Mapping:
                     look["deformed_normal_weight"], "look.deformed_normal_weight", name)
             if "shading" in look:
                 settings["shading"] = look["shading"]
+            if "materials" in look:
+                settings["materials"] = look["materials"]
         return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
                    seed, name, **settings)
 
