@@ -44,6 +44,7 @@ from eigendance.music.gallery import (
     initial_gallery,
 )
 from eigendance.music.mapping import Mapping
+from eigendance.server.archive import is_archive
 from eigendance.server.binary import rig_meta
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library, RigItem, check_mapping_size
@@ -77,6 +78,9 @@ def sniff(name: str, head: bytes) -> str | None:
         ".ogg": head[:4] == b"OggS", ".oga": head[:4] == b"OggS", ".opus": head[:4] == b"OggS",
         ".flac": head[:4] == b"fLaC", ".m4a": head[4:8] == b"ftyp",
         ".json": text_like and head.lstrip()[:1] == b"{",
+        ".zip": head[:2] == b"PK",  # a model in several files (server.archive)
+        # read through Blender when it is installed; else the reader says how to convert them
+        ".fbx": True, ".blend": True, ".dae": True, ".3ds": True,
     }
     if suffix not in checks:
         return f"unknown file type '{suffix}'"
@@ -211,6 +215,13 @@ async def get_basis(request: Request):
                     headers={"Cache-Control": "no-cache"})
 
 
+async def get_mesh_look(request: Request):
+    """The mesh's appearance bundle (docs/web.md#appearance-bundle): drawn vertices, materials,
+    images; ready before its basis. 404 for a mesh without materials (drawn in clay)."""
+    item = mesh_of(request, request.path_params["id"])
+    return bundle_response(await in_worker(library_of(request).look_bundle, item))
+
+
 async def get_spectrogram(request: Request):
     item = song_of(request, request.path_params["id"])
     return Response(item.bundle, media_type="application/octet-stream")
@@ -263,7 +274,7 @@ async def upload(request: Request):
     name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
     if not name or name.startswith("."):
         raise HTTPException(400, "upload needs ?name=FILE with a file name and suffix")
-    kind = kind_of(name)
+    kind = "mesh" if is_archive(name) else kind_of(name)
     stored, digest, head = await receive_file(request, library, name)
     try:
         if (why := sniff(name, head)) is not None:
@@ -397,6 +408,12 @@ async def get_rig_bundle(request: Request):
     return bundle_response((await ready_rig(request)).bundle)
 
 
+async def get_rig_look(request: Request):
+    """The appearance bundle of the rig's skin; 404 for a skin without materials."""
+    item = await ready_rig(request)
+    return bundle_response(await in_worker(library_of(request).look_bundle, item))
+
+
 async def get_rig_skeleton(request: Request):
     """The current skeleton as a skeleton JSON document (the edits included)."""
     item = await ready_rig(request)
@@ -500,6 +517,7 @@ API_ROUTES = [
     Route("/api/meshes/{id}", get_mesh),
     Route("/api/meshes/{id}", removal("mesh"), methods=["DELETE"]),
     Route("/api/meshes/{id}/basis.bin", get_basis),
+    Route("/api/meshes/{id}/appearance.bin", get_mesh_look),
     Route("/api/songs/{id}/spectrogram.bin", get_spectrogram),
     Route("/api/songs/{id}/audio", get_audio),
     Route("/api/jobs/{id}", get_job),
@@ -514,6 +532,7 @@ API_ROUTES = [
     Route("/api/rigs/{id}", get_rig),
     Route("/api/rigs/{id}", removal("rig"), methods=["DELETE"]),
     Route("/api/rigs/{id}/rig.bin", get_rig_bundle),
+    Route("/api/rigs/{id}/appearance.bin", get_rig_look),
     Route("/api/rigs/{id}/skeleton.json", get_rig_skeleton),
     Route("/api/rigs/{id}/stiffness", rig_stiffness, methods=["POST"]),
     Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),

@@ -35,6 +35,7 @@ import os
 import queue
 import re
 import secrets
+import shutil
 import threading
 import time
 from dataclasses import dataclass, field
@@ -50,7 +51,13 @@ from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig, sample_rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
-from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
+from eigendance.server.archive import is_archive, unpack
+from eigendance.server.binary import (
+    appearance_bundle,
+    basis_bundle,
+    rig_bundle,
+    spectrogram_bundle,
+)
 from eigendance.server.memory import DEFAULT_BUDGET, Budget, footprint
 
 UPLOAD_PREFIX = "upload-"
@@ -63,6 +70,8 @@ BYTES_PER_VERTEX = 256  # vertices, mass, faces (≈ 2 per vertex) in the basis 
 # What a mapping sent to the server may hold: the bands of a spectrogram (`eigendance spectrum
 # --bands`) and the harmonics of a basis (-k) at most, so that breeding answers a bounded size.
 MAX_BANDS, MAX_HARMONICS = 1024, 20000
+# A model's zip may unpack to this many times the upload limit (docs/design.md#server).
+UNPACKED_FACTOR = 4
 
 
 def new_id() -> str:
@@ -141,17 +150,22 @@ class MeshItem:
     rig: str | None = None  # id of the rig item of the same file (a glTF with a skin)
     content: tuple | None = None  # the key of its content in Library.contents
     removed: bool = False
+    appearance: object = None  # its assets.Appearance (materials), None: clay
+    look_bundle: bytes | None = None  # the appearance bundle, made when first asked for
 
     def as_json(self) -> dict:
         return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
                 "ready": self.basis is not None,
-                "job": self.job.as_json() if self.job else None, "rig": self.rig}
+                "job": self.job.as_json() if self.job else None, "rig": self.rig,
+                "look": look_summary(self.appearance)}
 
     def held(self) -> int:
         """Bytes kept: the basis and bundles once solved, the planned ones until then."""
+        look = footprint(self.appearance, self.look_bundle)
         if self.basis is None:
-            return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX)
-        return footprint(self.basis, self.bundle, self.half_bundle)
+            return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX) + look
+        return footprint(self.basis, self.bundle, self.half_bundle, self.appearance,
+                         self.look_bundle)
 
 
 @dataclass
@@ -202,6 +216,12 @@ class RigItem:
     error: str = ""
     content: tuple | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
+    look_bundle: bytes | None = None  # the skin's appearance bundle, made when first asked for
+
+    @property
+    def appearance(self):
+        """The skin's look (`assets.Appearance`), or None (clay, or not analysed yet)."""
+        return getattr(self.original, "appearance", None)
 
     @property
     def path(self) -> str:
@@ -213,11 +233,21 @@ class RigItem:
                 "error": self.error or None}
         if self.rig is not None:
             info.update(bodies=self.rig.skeleton.n_bodies, joints=len(self.rig.skeleton.joints),
-                        vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes)
+                        vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes,
+                        look=look_summary(self.appearance))
         return info
 
     def held(self) -> int:
-        return footprint(self.original, self.rig, self.bundle)
+        return footprint(self.original, self.rig, self.bundle, self.look_bundle)
+
+
+def look_summary(appearance) -> dict | None:
+    """What the page needs to know of a model's look before asking for it: None (clay), or
+    {materials, images, drawn} counts."""
+    if appearance is None:
+        return None
+    return {"materials": len(appearance.materials), "images": len(appearance.images),
+            "drawn": int(appearance.n)}
 
 
 class Library:
@@ -246,6 +276,7 @@ class Library:
         self.rigs: dict[str, RigItem] = {}
         self.first: dict | None = None  # {"kind": "mesh" | "rig", "id"} of the first model file
         self.contents: dict[tuple, str] = {}  # content key → item id
+        self.unpacked: dict[str, str] = {}  # a zip's folder → its model file, relative
         self.arriving: dict[tuple, threading.Event] = {}  # content keys being added now
         self.budget = Budget(memory_budget)
         self.lock = threading.RLock()
@@ -264,9 +295,11 @@ class Library:
     def add_path(self, path: str, name: str | None = None, k: int | None = None):
         """Register a file by its kind (suffix). Meshes start a basis job; songs are decoded."""
         name = name or os.path.basename(path)
-        kind = kind_of(name)
         check_readable(path)
-        item = self._add_file(path, name, kind, file_digest(path), "file", k)[0]
+        if is_archive(name):
+            item = self._add_archive(path, name, file_digest(path), "file", k)[0]
+        else:
+            item = self._add_file(path, name, kind_of(name), file_digest(path), "file", k)[0]
         if self.first is None and isinstance(item, MeshItem | RigItem):
             self.first = {"kind": "mesh" if isinstance(item, MeshItem) else "rig", "id": item.id}
         return item
@@ -274,7 +307,12 @@ class Library:
     def add_upload(self, stored: str, name: str, kind: str, digest: str):
         """Register an uploaded file, written to `stored` inside the library folder, under a
         name of our own; the item and whether it is new (False: the same content was there).
-        An upload that fails leaves no file behind."""
+        An upload that fails leaves no file behind. A .zip is a model in several files."""
+        if is_archive(name):
+            try:
+                return self._add_archive(stored, name, digest, "upload")
+            finally:
+                os.unlink(stored)
         final = os.path.join(self.folder, f"{UPLOAD_PREFIX}{digest[:24]}{suffix_of(name)}")
         try:
             os.replace(stored, final)
@@ -282,11 +320,47 @@ class Library:
         except BaseException as error:
             self._discard(stored, final)
             if isinstance(error, EigendanceError):
-                error.args = (self.public(str(error), {final: name}),)
+                message = self.public(str(error), {final: name})
+                if "is missing" in message:  # a .gltf's buffer or image: not uploaded with it
+                    message += "; add the model together with the files it names (drop them " \
+                               "together, or as one .zip)"
+                error.args = (message,)
             raise
         if not new:
             self._discard(final)  # unless it is the file of the item already there
         return item, new
+
+    def _add_archive(self, path: str, name: str, digest: str, origin: str,
+                     k: int | None = None):
+        """A model's zip (`server.archive`): unpacked once into the library's folder
+        `upload-<digest>/` and its model file added (named by that file); the item and whether
+        it is new. A zip that fails leaves no folder behind."""
+        folder = os.path.join(self.folder, f"{UPLOAD_PREFIX}{digest[:24]}")
+        if folder not in self.unpacked:
+            part = f"{folder}.{new_id()}"
+            try:
+                model = os.path.relpath(unpack(path, part, UNPACKED_FACTOR *
+                                               self.max_upload_bytes, name), part)
+            except BaseException as error:
+                shutil.rmtree(part, ignore_errors=True)
+                if isinstance(error, EigendanceError):
+                    error.args = (self.public(str(error), {path: name}),)
+                raise
+            with self.lock:  # the same zip unpacked meanwhile: keep the first
+                if folder in self.unpacked:
+                    shutil.rmtree(part, ignore_errors=True)
+                else:
+                    os.rename(part, folder)
+                    self.unpacked[folder] = model
+        model = os.path.join(folder, self.unpacked[folder])
+        try:
+            return self._add_file(model, os.path.basename(model), kind_of(model), digest,
+                                  origin, k)
+        except BaseException as error:
+            self._discard(model)
+            if isinstance(error, EigendanceError):
+                error.args = (self.public(str(error), {model: os.path.basename(model)}),)
+            raise
 
     def _add_file(self, path: str, name: str, kind: str, digest: str, origin: str,
                   k: int | None = None):
@@ -348,7 +422,8 @@ class Library:
         mesh = dataclasses.replace(load_mesh(path), name=name)  # EigendanceError if unreadable
         laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
-        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content)
+        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
+                        appearance=mesh.appearance)
         item.job = Job(new_id(), "basis", k, name)
         self._admit(item, self.meshes, f"{name}: a basis of {k} harmonics of "
                                       f"{len(mesh.vertices)} vertices")
@@ -539,6 +614,18 @@ class Library:
             self._recharge(item)
         return item.half_bundle
 
+    def look_bundle(self, item) -> bytes:
+        """The appearance bundle of a mesh or (analysed) rig item, made once and charged;
+        InputError 404 for a model without materials (drawn in clay)."""
+        appearance = item.appearance
+        if appearance is None:
+            raise InputError(f"{item.name} has no materials or colours of its own (it is drawn "
+                             "in clay)", status=404)
+        if item.look_bundle is None:
+            item.look_bundle = appearance_bundle(appearance, item.name)
+            self._recharge(item)
+        return item.look_bundle
+
     def remove(self, kind: str, item_id: str) -> list[str]:
         """Remove an item (a mesh with the rig of its skin), stopping its solve; the ids
         removed. InputError 404 for an unknown id, 409 for a built-in rig."""
@@ -562,7 +649,7 @@ class Library:
         stored file once no item uses it. Called with the lock held."""
         item = self._find(item_id)
         if isinstance(item, RigItem) and item.origin == "built-in":
-            item.original = item.rig = item.bundle = None
+            item.original = item.rig = item.bundle = item.look_bundle = None
             item.revision, item.error = 0, ""
             return
         for store in (self.meshes, self.songs, self.mappings, self.rigs):
@@ -585,14 +672,26 @@ class Library:
         self._discard(getattr(item, "path", ""))
 
     def _discard(self, *paths: str) -> None:
-        """Delete files of the library folder that no item uses."""
+        """Delete files of the library folder that no item uses (a zip's whole folder once no
+        item uses its model)."""
         with self.lock:
             for path in paths:
-                if path and os.path.dirname(path) == self.folder and not self._in_use(path):
+                folder = self._unpacked_folder(path)
+                if folder and not self._in_use(os.path.join(folder, self.unpacked[folder])):
+                    shutil.rmtree(folder, ignore_errors=True)
+                    del self.unpacked[folder]
+                elif path and os.path.dirname(path) == self.folder and not self._in_use(path):
                     try:
                         os.unlink(path)
                     except OSError:
                         pass
+
+    def _unpacked_folder(self, path: str) -> str | None:
+        """The zip folder of the library holding `path`, or None."""
+        for folder in self.unpacked:
+            if path.startswith(folder + os.sep):
+                return folder
+        return None
 
     def _find(self, item_id: str):
         for store in (self.meshes, self.songs, self.mappings, self.rigs):
@@ -617,7 +716,7 @@ class Library:
         names = dict(names or {})
         for store in (self.meshes, self.songs, self.rigs):
             for item in list(store.values()):
-                if item.path and os.path.dirname(item.path) == self.folder:
+                if item.path and item.path.startswith(self.folder + os.sep):
                     names[item.path] = item.name
         for path, name in names.items():
             text = text.replace(path, name).replace(os.path.basename(path), name)
