@@ -16,7 +16,8 @@ from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, body_transforms, rig_coefficients
 from eigendance.modal.palette import default_palette
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, open_chain, sample_rig
 from eigendance.modal.skeleton import Skeleton
@@ -37,7 +38,7 @@ ARRAYS = {  # name: (dtype, shape with n vertices, m faces, b bodies, j joints, 
     "body_centers": ("float32", "b,3"), "body_rotations": ("float32", "b,3,3"),
     "body_ends": ("float32", "b,2,3"), "body_radii": ("float32", "b"),
     "body_twists": ("float32", "k,b,6"), "joint_bodies": ("uint32", "j,2"),
-    "joint_positions": ("float32", "j,3")}
+    "joint_positions": ("float32", "j,3"), "joint_bend": ("float32", "j,k")}
 
 
 @pytest.fixture(scope="module")
@@ -122,7 +123,7 @@ def test_the_rig_bundle_holds_the_contract_of_web_md(client, name):
                                           for s in shape.split(",")), key
     np.testing.assert_allclose(arrays["frequencies"], rig.model.frequencies, rtol=1e-6)
     assert meta["palette"] == rig.palette.to_settings().to_json() and meta["offset"] == 0.0
-    assert meta["revision"] == 0 and meta["kind"] == "rig"
+    assert meta["revision"] == 0 and meta["kind"] == "rig" and meta["edited"] is False
 
 
 def test_gpu_modal_skinning_from_the_packed_texels_equals_python(client):
@@ -212,6 +213,7 @@ def test_pose_edits_and_reset(client):
     np.testing.assert_allclose(meta["frequencies"], ModalModel.from_skeleton(bent).frequencies,
                                rtol=1e-9)
     assert meta["revision"] == 1 and meta["frequencies"] != before["frequencies"]
+    assert meta["edited"] and client.get(f"/api/rigs/{chain}").json()["edited"]
     saved = client.get(f"/api/rigs/{chain}/skeleton.json").json()
     np.testing.assert_allclose(ModalModel.from_skeleton(Skeleton.from_dict(saved)).frequencies,
                                meta["frequencies"], rtol=1e-9)
@@ -219,7 +221,7 @@ def test_pose_edits_and_reset(client):
                                                                    "rotation": [0.1, 0, 0]}))
     assert meta["revision"] == 2
     meta, arrays = bundle(client.post(f"/api/rigs/{chain}/reset"))
-    assert meta["revision"] == 3
+    assert meta["revision"] == 3 and not meta["edited"]  # a reset is not an edit
     np.testing.assert_allclose(meta["frequencies"], before["frequencies"], rtol=1e-12)
     np.testing.assert_allclose(arrays["vertices"], sample_rig("chain").vertices, atol=1e-6)
     loop = rig_id(client, "loop8")
@@ -312,12 +314,12 @@ def test_a_skinned_gltf_given_alone_opens_as_a_rig(files, tmp_path):
 
 def test_a_skinned_gltf_whose_skin_cannot_be_analysed_dances_as_a_mesh(files, tmp_path,
                                                                        monkeypatch):
-    import eigendance.server.library as library_module
+    import eigendance.server.intake as intake_module
 
     def refuse(path, name=None):
         raise InputError(f"{name}: body 'x' has zero length")
 
-    monkeypatch.setattr(library_module, "load_rig", refuse)
+    monkeypatch.setattr(intake_module, "load_rig", refuse)
     library = Library(str(tmp_path / "broken"), k=8)
     try:
         item = library.add_path(files["glb"])

@@ -22,9 +22,10 @@ from eigendance.cli import main
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import load_animation, positions_at
 from eigendance.music.breeding import breed
-from eigendance.music.gallery import gallery_motion
+from eigendance.music.dancer import gallery_motion
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
+from helpers import start
 
 pytestmark = pytest.mark.web
 TIMES = (0.5, 1.7, 4.2)
@@ -414,10 +415,10 @@ def test_a_mapping_given_to_serve_shows_in_the_player(browser, web_files, tmp_pa
     mapping.save(tmp_path / "favourite.json")
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", CAT,
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", CAT,
                                 web_files["song"], str(tmp_path / "favourite.json"), "-k",
                                 str(E2E_K), "--port", str(port)], env=env,
-                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+                    stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     try:
         url = process.stdout.readline().split()[-1]
         served = open_app(browser, url, "?render&size=4")
@@ -432,10 +433,30 @@ def test_a_mapping_given_to_serve_shows_in_the_player(browser, web_files, tmp_pa
         process.wait(10)
 
 
-def test_the_frame_rate_is_honest_and_fewer_tiles_are_offered_when_slow(browser, live_server):
-    """The readout is the page's real frame rate (frames drawn per second, counted here
-    independently); below 20 fps the gallery says so and offers fewer tiles."""
+def test_the_resolution_follows_the_frame_rate_and_the_page_says_so(browser, live_server):
+    """Below the target the page draws at a lower resolution, then fewer triangles, and says
+    so beside the frame rate (dynamic resolution)."""
     page = open_app(browser, live_server["url"], "?test&size=16&path=cpu")
+    page.click("#play")
+    page.wait_for_function("document.getElementById('fps').textContent.includes('fps')",
+                           timeout=20_000)
+    if not keep_playing(page, "window.eigendance.resolution().scale < 1", 15):
+        fps = page.evaluate("window.eigendance.info().fps")
+        page.close()
+        pytest.skip(f"this machine draws 16 tiles at {fps:.0f} fps: nothing to lower")
+    page.wait_for_function("document.getElementById('fps').textContent.includes('resolution')")
+    assert "to keep 12 fps" in page.get_attribute("#fps", "title")
+    assert_no_band_cut_out(page)
+    page.close()
+
+
+def test_fewer_tiles_are_offered_when_slow_and_the_page_says_the_new_size(browser,
+                                                                          live_server):
+    """The readout is the page's real frame rate (frames drawn per second, counted here
+    independently). At full resolution (`?scale=1`: nothing left to lower) and below the
+    target, the gallery says so and offers fewer tiles. The offer taken, the *tiles* menu and
+    the notice say the new size, and a rig's player never has the notice over it."""
+    page = open_app(browser, live_server["url"], "?test&size=16&path=cpu&scale=1")
     page.click("#play")
     page.wait_for_function("document.getElementById('fps').textContent.includes('fps')",
                            timeout=20_000)
@@ -445,18 +466,46 @@ def test_the_frame_rate_is_honest_and_fewer_tiles_are_offered_when_slow(browser,
     counted = 1000 * (end[1] - start[1]) / (end[0] - start[0])
     shown = float(page.inner_text("#fps").split()[0])
     assert counted > 0 and abs(shown - counted) <= max(1.5, 0.35 * counted), (shown, counted)
-    if counted >= 20:
+    if not keep_playing(page, "!document.getElementById('notice').hidden", 20):
+        fps = page.evaluate("window.eigendance.info().fps")
         page.close()
-        pytest.skip(f"this machine draws 16 tiles at {counted:.0f} fps: nothing to offer")
-    page.wait_for_selector("#notice", state="visible", timeout=15_000)
+        pytest.skip(f"this machine draws 16 tiles at {fps:.0f} fps: nothing to offer")
     assert "frames per second with 16 tiles" in page.inner_text("#notice-text")
     page.wait_for_timeout(500)
     assert_no_band_cut_out(page)
+    # A rig opens: the notice is about the tiles, it goes (and stays gone in its player).
+    mesh = page.evaluate("window.eigendance.info().meshId")
+    rigs = page.evaluate("fetch('api/library').then(r => r.json()).then(l => l.rigs)")
+    page.evaluate(f"window.eigendance.rig.open('{rigs[0]['id']}')")
+    page.evaluate("window.eigendance.rig.setView('player')")
+    keep_playing(page, "false", 3.5)
+    assert page.is_hidden("#notice")
+    page.select_option("#mesh", mesh)  # back to the model's gallery of 16: slow again
+    page.wait_for_function("!window.eigendance.rig.info().active")
+    page.click("#tab-gallery")
+    assert keep_playing(page, "!document.getElementById('notice').hidden", 20)
     offer = int(page.inner_text("#notice-fewer").split()[1])
     assert 2 <= offer < 16
     page.click("#notice-fewer")
-    page.wait_for_function(f"window.eigendance.info().tiles === {offer}", timeout=30_000)
+    keep_playing(page, f"window.eigendance.info().tiles === {offer}", 30)
+    assert page.input_value("#size") == str(offer)  # the menu says what is on screen
+    for _ in range(8):  # never again "16 tiles" about the smaller gallery
+        keep_playing(page, "false", 0.5)
+        assert page.is_hidden("#notice") or f"with {offer} tiles" in page.inner_text(
+            "#notice-text")
     page.close()
+
+
+def keep_playing(page, condition: str, seconds: float) -> bool:
+    """Play (again at the song's end: the test song lasts 6 s) until `condition` holds in the
+    page; whether it did within `seconds`."""
+    for _ in range(int(seconds * 4)):
+        if page.evaluate(condition):
+            return True
+        if not page.evaluate("window.eigendance.info().playing"):
+            page.click("#play")
+        page.wait_for_timeout(250)
+    return bool(page.evaluate(condition))
 
 
 def test_live_playback_follows_the_audio_clock_and_records_webm_with_audio(browser,
@@ -536,9 +585,9 @@ def test_float16_download_stays_close_to_the_reference(browser, live_server, ref
 def test_empty_library_fills_up_from_uploads(browser, web_files, tmp_path):
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", "-k", "12",
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", "-k", "12",
                                 "--port", str(port)], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.DEVNULL, text=True)
+                    stderr=subprocess.DEVNULL, text=True)
     try:
         url = process.stdout.readline().split()[-1]
         page = open_app(browser, url, "?render&size=4")

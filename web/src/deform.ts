@@ -4,6 +4,7 @@
 // The GLSL is in shaders.ts, the batched positions pass in positions-pass.ts.
 import * as THREE from "three";
 import type { Basis } from "./bundle";
+import { simplifiedFaces } from "./detail";
 import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
 import type { HarmonicsSource } from "./positions-pass";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX, TEXELS } from "./shaders";
@@ -32,6 +33,8 @@ export class Deformer implements HarmonicsSource {
   readonly batch: number;
   private single: PositionsPass | null = null;
   private batched: PositionsPass | null = null;
+  /** the triangles of each detail level drawn so far (detail.ts); 1 is the mesh's own */
+  private readonly detailIndex = new Map<number, THREE.BufferAttribute>();
   useCPU = false;
 
   constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer, maxBatch = 8) {
@@ -53,6 +56,7 @@ export class Deformer implements HarmonicsSource {
     this.geometry = new THREE.BufferGeometry();
     this.geometry.setAttribute("position", new THREE.BufferAttribute(basis.vertices, 3));
     this.geometry.setIndex(new THREE.BufferAttribute(basis.faces, 1));
+    this.detailIndex.set(1, this.geometry.index!);
     this.geometry.computeVertexNormals();
     const ids = new Float32Array(basis.n).map((_, i) => i);
     this.geometry.setAttribute("vid", new THREE.BufferAttribute(ids, 1));
@@ -113,6 +117,20 @@ export class Deformer implements HarmonicsSource {
       (attribute.array as Float32Array).set(cpuPositions);
       attribute.needsUpdate = true;
     }
+  }
+
+  /** Draw about `fraction` of the triangles (the gallery's level of detail, detail.ts) over
+   * the same vertices; all of them until the simplifier is loaded. Returns the fraction drawn. */
+  useDetail(fraction: number): number {
+    let index = this.detailIndex.get(fraction);
+    if (!index) {
+      const faces = simplifiedFaces(this.basis.faces, this.basis.vertices, fraction);
+      if (!faces) return this.useDetail(1);
+      index = new THREE.BufferAttribute(faces, 1);
+      this.detailIndex.set(fraction, index);
+    }
+    if (this.geometry.index !== index) this.geometry.setIndex(index);
+    return fraction;
   }
 
   /** GPU pass 1: deformed positions of every tile into float render targets, `batch` tiles per

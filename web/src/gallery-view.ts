@@ -3,6 +3,7 @@
 // (the harmonics it drives) and its two plots.
 import * as api from "./api";
 import { $, saveJSON } from "./dom";
+import { gridColumns } from "./grid";
 import { drivenHarmonics, settingsOf } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { History } from "./history";
@@ -84,7 +85,7 @@ export class GalleryView {
   /** Each tile's drawing area (for reading its pixels back). */
   views(): HTMLElement[] { return this.tiles.map((tile) => tile.view); }
 
-  /** A first generation from the server (`eigendance.mapping.initial_gallery`, calibrated on the
+  /** A first generation from the server (`eigendance.music.gallery.initial_gallery`, calibrated on the
    * song) of `size` tiles, added to the mesh's history. Throws the server's error; the gallery
    * on screen then stays as it was. */
   async create(meshId: string, songId: string, note: string, size = this.size): Promise<void> {
@@ -97,7 +98,7 @@ export class GalleryView {
     this.events.status("");
   }
 
-  /** The next generation, bred by the server (`eigendance.mapping.breed`) from the selected
+  /** The next generation, bred by the server (`eigendance.music.breeding.breed`) from the selected
    * tiles: a child of the generation on screen (a new branch if it already has children). */
   async breed(seed = Math.floor(Math.random() * 2 ** 31)): Promise<void> {
     const parents = this.selection.map((i) => this.mappings()[i]);
@@ -163,14 +164,14 @@ export class GalleryView {
       : "breed selected";
   }
 
-  /** One tile per mapping, in a grid about 1.5 times wider than tall (2 columns on a narrow
-   * screen: style.css). */
+  /** One tile per mapping, in the gallery's grid (grid.ts; 2 columns on a narrow screen:
+   * style.css). */
   private buildTiles(): void {
     const container = $("tiles");
     container.innerHTML = "";
     const mappings = this.mappings();
     container.style.setProperty("--columns",
-      String(Math.max(1, Math.ceil(Math.sqrt(mappings.length * 1.5)))));
+      String(gridColumns(mappings.length)));
     this.tiles = mappings.map((mapping, index) => {
       const tile = this.makeTile(mapping, index);
       container.appendChild(tile.element);

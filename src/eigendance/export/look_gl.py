@@ -138,8 +138,13 @@ class MaterialLook:
         return texture
 
     def update(self, positions: np.ndarray, normals: np.ndarray | None) -> None:
-        """The drawn vertices at the welded `positions` (n, 3); `normals` (n, 3) the welded
-        vertices' turned normals, or None (the rest normals hold)."""
+        """Move the drawn vertices to their welded vertices' positions.
+
+        Parameters
+        ----------
+        positions : (n, 3) the welded vertices.
+        normals : (n, 3) the welded vertices' turned normals, or None (the rest normals hold).
+        """
         self.positions.write(np.ascontiguousarray(positions[self.welded], dtype=np.float32))
         if normals is not None:
             now = np.asarray(normals, dtype=np.float64)[self.welded]
@@ -196,8 +201,18 @@ class MaterialLook:
 
 
 def decoded(data: bytes, largest: int) -> np.ndarray:
-    """An image's RGBA pixels (height, width, 4) uint8, top row first (glTF's UV origin), made
-    at most `largest` pixels on a side (as three.js resizes what the GPU cannot hold)."""
+    """An image's pixels, top row first (glTF's UV origin), at most `largest` pixels on a side
+    (as three.js resizes what the GPU cannot hold).
+
+    Parameters
+    ----------
+    data : PNG or JPEG bytes.
+    largest : the GPU's largest texture side.
+
+    Returns
+    -------
+    (height, width, 4) uint8 RGBA; InputError for an image that cannot be decoded.
+    """
     from PIL import Image as PillowImage  # imported when a textured model is drawn
 
     try:

@@ -46,7 +46,16 @@ NEAR, FAR = 0.05, 100.0  # in units of the mesh's half size
 GALLERY_PADDING, GALLERY_GAP = 10, 6  # pixels, as the page's tiles grid
 
 def linear(value: int) -> tuple[float, float, float]:
-    """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`)."""
+    """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`).
+
+    Parameters
+    ----------
+    value : 0xRRGGBB.
+
+    Returns
+    -------
+    (r, g, b) linear, in [0, 1].
+    """
     srgb = np.array([(value >> 16) & 255, (value >> 8) & 255, value & 255]) / 255
     out = np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
     return tuple(float(c) for c in out)
@@ -101,7 +110,16 @@ def _axes(direction: np.ndarray) -> np.ndarray:
 
 def silhouette(points: np.ndarray) -> np.ndarray:
     """(N, 3) points seen along VIEW_DIRECTION: rows (s, x, y), depth s toward the camera and
-    position across the view (studio.ts `silhouette`)."""
+    position across the view (studio.ts `silhouette`).
+
+    Parameters
+    ----------
+    points : (N, 3).
+
+    Returns
+    -------
+    (N, 3).
+    """
     return np.asarray(points, dtype=np.float64).reshape(-1, 3) @ _axes(VIEW_DIRECTION).T
 
 
@@ -112,7 +130,16 @@ def _middle(shape: np.ndarray) -> tuple[float, float]:
 
 def rim(rest: np.ndarray) -> np.ndarray:
     """Indices of the vertices that frame the model (studio.ts `rim`): the RIM of them reaching
-    farthest, by depth plus distance from the middle of the view (all of a small model)."""
+    farthest, by depth plus distance from the middle of the view (all of a small model).
+
+    Parameters
+    ----------
+    rest : (n, 3) the rest shape.
+
+    Returns
+    -------
+    (≤ RIM,) int indices.
+    """
     shape = silhouette(rest)
     n = len(shape)
     cx, cy = _middle(shape)
@@ -124,7 +151,17 @@ def rim(rest: np.ndarray) -> np.ndarray:
 def framing(points: np.ndarray, aspect: float) -> tuple[np.ndarray, float]:
     """Where the camera stands so that every point (N, 3) fits a view of this aspect with
     MOTION_MARGIN to spare (studio.ts `framing`): the target and the distance from it along
-    VIEW_DIRECTION. The page frames views by their aspect rounded to 1/50."""
+    VIEW_DIRECTION. The page frames views by their aspect rounded to 1/50.
+
+    Parameters
+    ----------
+    points : (N, 3).
+    aspect : width / height of the view.
+
+    Returns
+    -------
+    (target (3,), distance).
+    """
     aspect = math.floor(aspect * 50 + 0.5) / 50
     shape = silhouette(points)
     _, right, up = _axes(VIEW_DIRECTION)
@@ -137,7 +174,13 @@ def framing(points: np.ndarray, aspect: float) -> tuple[np.ndarray, float]:
 
 @dataclass
 class Camera:
-    """A perspective camera: view (4, 4) world → view and projection (4, 4), OpenGL style."""
+    """A perspective camera: view (4, 4) world → view and projection (4, 4), OpenGL style.
+
+    Parameters
+    ----------
+    view : (4, 4).
+    projection : (4, 4).
+    """
 
     view: np.ndarray
     projection: np.ndarray
@@ -147,7 +190,19 @@ class Camera:
                 aspect: float) -> Camera:
         """The page's camera for a model (viewer.ts `aim`): framed on the rest shape (n, 3) and
         the rim in the loudest poses (P, r, 3); `scale` the half size of the model file's
-        coordinates (the page's unit) for the near and far planes."""
+        coordinates (the page's unit) for the near and far planes.
+
+        Parameters
+        ----------
+        rest : (n, 3).
+        poses : (P, r, 3) the rim in the loudest poses.
+        scale : the model's half size.
+        aspect : width / height of the view.
+
+        Returns
+        -------
+        Camera.
+        """
         target, distance = framing(np.concatenate([rest, np.reshape(poses, (-1, 3))]), aspect)
         eye = target + VIEW_DIRECTION * distance
         view = np.eye(4)
@@ -163,7 +218,17 @@ class Camera:
 
 def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
     """(4, 4) placing the contact shadow's unit square under the rest shape (studio.ts
-    `placeShadow`): on the plane just below its lowest point, as wide as its footprint."""
+    `placeShadow`): on the plane just below its lowest point, as wide as its footprint.
+
+    Parameters
+    ----------
+    rest : (n, 3) the rest shape.
+    scale : the model's half size.
+
+    Returns
+    -------
+    (4, 4).
+    """
     low, high = rest.min(axis=0), rest.max(axis=0)
     size = high - low
     model = np.diag([0.62 * size[0] + 0.05 * scale, 1.0, 0.62 * size[2] + 0.05 * scale, 1.0])
@@ -171,10 +236,44 @@ def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
     return model
 
 
+def gallery_columns(count: int) -> int:
+    """Columns of the gallery's grid of `count` tiles, the page's rule (web/src/grid.ts):
+    ⌈√(1.5·S)⌉ (at most S), a grid about 1.5 times wider than tall, then fewer while the last
+    row would be less than half full, so no tile is left alone on a row.
+
+    Parameters
+    ----------
+    count : tiles S, ≥ 1.
+
+    Returns
+    -------
+    int, the number of columns.
+
+    Example
+    -------
+    >>> [gallery_columns(count) for count in (4, 8, 9, 16)]    # 2×2, 4×2, 3×3, 4×4
+    [2, 4, 3, 4]
+    """
+    columns = max(1, min(count, math.ceil(math.sqrt(count * 1.5))))
+    while columns > 1 and 2 * (count - (math.ceil(count / columns) - 1) * columns) < columns:
+        columns -= 1
+    return columns
+
+
 def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, int, int]]:
-    """Viewports (x, y from the bottom, w, h) of `count` tiles in the page's grid: ⌈√(1.5·S)⌉
-    columns, rows as needed, row-major from the top left."""
-    columns = math.ceil(math.sqrt(count * 1.5))
+    """Viewports (x, y from the bottom, w, h) of `count` tiles in the page's grid
+    (`gallery_columns`), rows as needed, row-major from the top left.
+
+    Parameters
+    ----------
+    count : tiles S.
+    width, height : the frame, pixels.
+
+    Returns
+    -------
+    list of (x, y, w, h).
+    """
+    columns = gallery_columns(count)
     rows = math.ceil(count / columns)
     cell_w = (width - 2 * GALLERY_PADDING - (columns - 1) * GALLERY_GAP) / columns
     cell_h = (height - 2 * GALLERY_PADDING - (rows - 1) * GALLERY_GAP) / rows
@@ -197,12 +296,22 @@ _started = {"gl": False}  # set once this process has started OpenGL
 def gl_started() -> bool:
     """Whether this process has created an OpenGL context. llvmpipe keeps its threads in a
     process-wide screen: a process forked after that inherits the state without the threads and
-    hangs at its first draw, so only a process that never drew may fork renderers."""
+    hangs at its first draw, so only a process that never drew may fork renderers.
+
+    Returns
+    -------
+    bool.
+    """
     return _started["gl"]
 
 
 def create_context() -> moderngl.Context:
-    """A headless OpenGL 3.3 context (EGL; Mesa's llvmpipe without a GPU)."""
+    """A headless OpenGL 3.3 context (EGL; Mesa's llvmpipe without a GPU).
+
+    Returns
+    -------
+    moderngl.Context; InputError when no OpenGL 3.3 is available.
+    """
     _started["gl"] = True
     try:
         return moderngl.create_standalone_context(backend="egl", libgl="libGL.so.1",

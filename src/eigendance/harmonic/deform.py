@@ -34,10 +34,12 @@ class Deformer:
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         return self.eigenvectors.shape[0]
 
     @property
     def k(self) -> int:
+        """Harmonics k."""
         return self.eigenvectors.shape[1]
 
     def __call__(self, phi: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:

@@ -91,8 +91,18 @@ def members(archive: zipfile.ZipFile, name: str, limit: int) -> list[tuple[zipfi
 
 
 def safe_path(info: zipfile.ZipInfo, name: str) -> str | None:
-    """A member's path relative to the folder, or None for one to skip (a folder, a system
-    file); InputError for a path that would leave the folder or a link."""
+    """A member's path relative to the folder.
+
+    Parameters
+    ----------
+    info : the member.
+    name : how messages call the zip.
+
+    Returns
+    -------
+    str (POSIX, relative), or None for a member to skip (a folder, a system file);
+    InputError for a path that would leave the folder (absolute, a drive, `..`) or a link.
+    """
     raw = info.filename.replace("\\", "/")
     if info.is_dir() or raw.endswith("/"):
         return None
@@ -109,7 +119,17 @@ def safe_path(info: zipfile.ZipInfo, name: str) -> str | None:
 
 
 def model_member(paths: list[str], name: str) -> str:
-    """The zip's model file among `paths` (module docstring); InputError if none or two."""
+    """The zip's model file (module docstring: the first kind found, in MODEL_PREFERENCE).
+
+    Parameters
+    ----------
+    paths : the members' relative paths.
+    name : how messages call the zip.
+
+    Returns
+    -------
+    str, one of `paths`; InputError if there is none, or two of the first kind found.
+    """
     for kinds in MODEL_PREFERENCE:
         found = [path for path in paths if suffix_of(path) in kinds]
         if len(found) == 1:

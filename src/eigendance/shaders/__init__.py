@@ -91,7 +91,8 @@ def texture_transform(texture) -> list[float]:
     (ox, oy), (sx, sy) = texture.offset, texture.uv_scale
     c, s = math.cos(texture.rotation), math.sin(texture.rotation)
     # rows: u' = c·sx·u + s·sy·v + ox, v' = −s·sx·u + c·sy·v + oy
-    return [c * sx, -s * sx, 0.0, s * sy, c * sy, 0.0, ox, oy, 1.0]
+    matrix = [c * sx, -s * sx, 0.0, s * sy, c * sy, 0.0, ox, oy, 1.0]
+    return [float(value) + 0.0 for value in matrix]  # + 0.0: no −0.0 in the page's JSON
 
 
 def material_shading(material, uv_sets: int, colors: bool) -> dict:
