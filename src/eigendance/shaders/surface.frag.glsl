@@ -95,6 +95,9 @@ uniform float metallicFactor;
 uniform float roughnessFactor;
 uniform vec3 emissiveFactor;
 uniform float alphaCutoff;
+// The studio's light on a material, brighter than on the clay: a surface facing the camera
+// shows about its own colour, as in a glTF viewer (the clay's moodier light would darken it).
+const float MATERIAL_EXPOSURE = 1.5;
 in vec2 vUv0;
 #ifdef UV1
 in vec2 vUv1;
@@ -231,7 +234,7 @@ void main() {
 #ifdef EMISSIVE_MAP
   emissive *= texture(emissiveMap, mapUv(emissiveMapTransform, EMISSIVE_MAP_UV)).rgb;
 #endif
-  vec3 color = studioSurface(base.rgb, metallic, roughness, ao, n, view)
+  vec3 color = MATERIAL_EXPOSURE * studioSurface(base.rgb, metallic, roughness, ao, n, view)
     + studioRim(n, view) * (1.0 - 0.5 * metallic) + emissive;
   fragColor = vec4(studioOutput(color), alpha);
 #endif
