@@ -23,6 +23,7 @@ import urllib.request
 import numpy as np
 import pytest
 from PIL import Image
+from test_look_server import gltf_json_and_buffer, image_bytes
 from web_helpers import open_app, running_server
 
 from eigendance.music.mapping import Mapping
@@ -109,9 +110,10 @@ def page_picture(browser, url: str, mapping_id: str, materials: bool) -> np.ndar
 
 def swatch_hues() -> list[float]:
     """The hues of the swatch texture's saturated colours (the file's own image)."""
-    document = json.load(open(MODEL))
-    source = next(image for image in document["images"] if image.get("name") == "ColorSwatches")
-    data = urllib.request.urlopen(source["uri"]).read()  # a data: URI
+    document, buffer = gltf_json_and_buffer(MODEL)
+    index = next(i for i, image in enumerate(document["images"])
+                 if image.get("name") == "ColorSwatches")
+    data = image_bytes(document, buffer, index)
     colors = np.asarray(Image.open(io.BytesIO(data)).convert("RGB"), dtype=float).reshape(-1, 3)
     return sorted({round(float(h)) for h in hues(np.unique(colors, axis=0) / 255)})
 
@@ -147,6 +149,7 @@ def test_a_textured_model_shows_its_texture_colours_as_three_js_draws_them(
     assert overlap > 0.7 and clay_overlap < 0.3
     assert ours_gap < 0.5 * clay_gap
     found = hues(regions["ours"])
+    print(f"swatch hues {swatch_hues()}: each within 10° of ≥ 0.5% of the page's colours")
     for hue in swatch_hues():  # every swatch colour is on screen (±10°, ≥ 0.5% of the colours)
         near = np.abs((found - hue + 180) % 360 - 180) < 10
         assert near.mean() > 0.005, f"the swatch of hue {hue}° is missing"
