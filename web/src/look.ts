@@ -2,7 +2,7 @@
 // drawn vertices — split at UV seams, hard edges and materials — each following its welded
 // vertex's deformed position (`vid` is the welded vertex), one three.js group per material drawn
 // by the surface shader shared with the video (shaders.ts), with the defines, uniforms and
-// textures the server's rule (eigendance.shaders.material_shading) gives each material.
+// textures the server's rule (eigendance.shaders.programs.material_shading) gives each material.
 import * as THREE from "three";
 import * as api from "./api";
 import type { Basis } from "./bundle";

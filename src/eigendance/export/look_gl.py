@@ -19,7 +19,7 @@ import moderngl
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.shaders import material_shading, program
+from eigendance.shaders.programs import material_shading, program
 
 GL_SRGB8_ALPHA8 = 0x8C43
 GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T = 0x0DE1, 0x2802, 0x2803

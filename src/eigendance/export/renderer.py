@@ -32,7 +32,7 @@ import numpy as np
 
 from eigendance.errors import InputError, one_line
 from eigendance.export.look_gl import MaterialLook
-from eigendance.shaders import program
+from eigendance.shaders.programs import program
 
 BACKGROUND = (0x15, 0x17, 0x1C)  # the canvas's clear colour (viewer.ts), bytes
 CLAY = 0xD9A47F  # the models' colour, sRGB (deform.ts)

@@ -32,7 +32,7 @@ from eigendance.modal.palette import (
     mode_reach,
     single_mode_amplitudes,
 )
-from eigendance.shaders import material_shading
+from eigendance.shaders.programs import material_shading
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
@@ -297,7 +297,7 @@ def appearance_bundle(appearance, name: str = "model") -> bytes:
     Returns
     -------
     bytes: meta {kind "appearance", name, drawn, materials (each with `shading`: the surface
-    shader's defines, uniforms and textures, `eigendance.shaders.material_shading`), images,
+    shader's defines, uniforms and textures, `shaders.programs.material_shading`), images,
     parts, uvSets, colors, tangents}; arrays welded (n_d,) uint32, normals (n_d, 3), uv0, uv1
     (n_d, 2), colors (n_d, 4), tangents (n_d, 4), triangles<p> (m_p, 3) uint32 per part,
     image<i> (bytes,) uint8 the encoded PNG or JPEG of image i.
