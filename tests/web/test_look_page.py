@@ -94,14 +94,18 @@ def histogram(angles: np.ndarray) -> np.ndarray:
     return counts / max(counts.sum(), 1)
 
 
-def page_picture(browser, url: str, mapping_id: str, materials: bool) -> np.ndarray:
-    page = open_app(browser, url, f"?render&bare&view=player&path=cpu&mapping={mapping_id}",
+def page_picture(browser, url: str, mapping_id: str, materials: bool, path: str = "cpu",
+                 t: float = 0.0, tile: int | None = None) -> np.ndarray:
+    """The player's picture at time t: the still mapping, or gallery tile `tile` opened."""
+    page = open_app(browser, url, f"?render&bare&view=player&path={path}&mapping={mapping_id}",
                     WIDTH, HEIGHT)
     try:
         page.wait_for_function("window.eigendance.info().k > 0", timeout=120_000)
         assert page.evaluate("window.eigendance.look()")["images"] == 3
+        if tile is not None:
+            page.evaluate(f"window.eigendance.open({tile})")
         page.evaluate(f"window.eigendance.setMaterials({'true' if materials else 'false'})")
-        page.evaluate("window.eigendance.renderAt(0)")
+        page.evaluate(f"window.eigendance.renderAt({t})")
         return picture(page.screenshot())
     finally:
         assert not page.errors, page.errors
@@ -153,3 +157,18 @@ def test_a_textured_model_shows_its_texture_colours_as_three_js_draws_them(
     for hue in swatch_hues():  # every swatch colour is on screen (±10°, ≥ 0.5% of the colours)
         near = np.abs((found - hue + 180) % 360 - 180) < 10
         assert near.mean() > 0.005, f"the swatch of hue {hue}° is missing"
+
+
+def test_the_gpu_and_cpu_paths_draw_the_materials_alike(browser, served):
+    """The drawn vertices read their welded vertex's position from the positions pass's float
+    target (GPU) or gather it from the CPU positions: the same picture, a dancing one (the
+    gallery's first tile in the player, not the still mapping)."""
+    with urllib.request.urlopen(served["url"] + "api/library") as answer:
+        mapping_id = json.load(answer)["mappings"][0]["id"]
+    gpu = page_picture(browser, served["url"], mapping_id, True, "gpu", 1.5, tile=1)
+    cpu = page_picture(browser, served["url"], mapping_id, True, "cpu", 1.5, tile=1)
+    still = page_picture(browser, served["url"], mapping_id, True, "cpu", 1.5)
+    assert np.mean(np.abs(cpu - still).max(axis=2) * 255 > 24) > 0.01  # it dances
+    difference = np.abs(gpu - cpu).max(axis=2) * 255
+    print(f"GPU against CPU path: {np.mean(difference > 2):.4%} of the pixels differ by > 2")
+    assert np.mean(difference > 2) < 0.002

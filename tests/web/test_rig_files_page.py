@@ -97,3 +97,30 @@ def test_every_mode_tile_of_every_rig_moves(served, page, name):
           f"({len(motion)} tiles)")
     for tile, changed in enumerate(motion):
         assert changed > 0.001, f"{name}: tile {tile + 1} does not move ({changed:.4f})"
+
+
+def test_the_lbs_skin_wears_the_rigs_materials_too(served, page):
+    """Linear blend skinning (three.js SkinnedMesh) of the character with a gun: in its blue
+    materials, and in clay when the switch says so."""
+    rig_id = next(rig["id"] for rig in served["library"]["rigs"]
+                  if rig["name"] == "quaternius_Character_Gun.glb")
+    assert page.evaluate(f"window.eigendance.rig.open('{rig_id}')") is None
+    page.evaluate("window.eigendance.rig.select(0)")
+    page.evaluate("window.eigendance.rig.combine()")
+    page.evaluate("window.eigendance.rig.setSkinning('lbs')")
+    means = {}
+    try:
+        for materials in (True, False):
+            page.evaluate(f"window.eigendance.rig.setMaterials({str(materials).lower()})")
+            page.evaluate("window.eigendance.rig.renderAt(0.5)")
+            pixels = np.array(page.evaluate("window.eigendance.rig.playerPixels(3)"),
+                              dtype=float).reshape(-1, 3)
+            model = pixels[pixels.max(axis=1) > 90]  # brighter than the backdrop
+            means[materials] = model.mean(axis=0)
+    finally:
+        page.evaluate("window.eigendance.rig.setSkinning('modal')")
+        page.evaluate("window.eigendance.rig.setMaterials(true)")
+        page.evaluate("window.eigendance.setView('gallery')")
+    print(f"LBS skin, mean colour: materials {means[True].round()}, clay {means[False].round()}")
+    assert means[True][2] > means[True][0] + 20  # blue
+    assert means[False][0] > means[False][2] + 20  # clay
