@@ -79,28 +79,28 @@ def main() -> None:
 def harmonic_dance_of(path: str, song: str):
     from eigendance.export.dance import HarmonicDance
     from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.harmonic.mesh import load_mesh
     from eigendance.music.gallery import strongest_item
     from eigendance.music.spectrogram import Spectrogram
 
-    basis = HarmonicBasis.from_mesh(path, K)
+    mesh = load_mesh(path)  # the server's rule: the robust Laplacian for a non-manifold mesh
+    laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
+    basis = HarmonicBasis.from_mesh(mesh, K, laplacian=laplacian)
     spectrogram = Spectrogram.from_file(song)
     return HarmonicDance(basis, spectrogram, strongest_item(basis, spectrogram), song, "bench")
 
 
 def rig_dance_of(path: str, song: str):
+    import numpy as np
+
     from eigendance.export.dance import rig_dance
-    from eigendance.modal.model import ModalModel
-    from eigendance.modal.motion import rig_coefficients, rig_mapping
+    from eigendance.modal.rig import Rig
     from eigendance.modal.sample_rigs import load_rig
     from eigendance.music.spectrogram import Spectrogram
 
-    skeleton = load_rig(path)
-    model = ModalModel.from_skeleton(skeleton)
+    rig = Rig(load_rig(path), np.float64)  # as the command line builds it
     spectrogram = Spectrogram.from_file(song)
-    mapping = rig_mapping(model, spectrogram)
-    return rig_dance(skeleton, model, spectrogram.duration,
-                     lambda times: rig_coefficients(model, spectrogram, mapping, times),
-                     "modal", song, "bench")
+    return rig_dance(rig, spectrogram, rig.mapping(spectrogram, None), "modal", song, "bench")
 
 
 def cpu_seconds() -> float:

@@ -15,7 +15,7 @@ from playwright.sync_api import sync_playwright
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
                  "--disable-background-networking", "--disable-component-update",
                  "--disable-sync"]
-FRAMES = 8
+FRAMES, ROUNDS = 10, 3  # frames per timing; timings per look, alternating (the best is kept)
 
 
 def look_fps(model: str, song: str, rig: bool, k: int, port: int = 8798) -> dict:
@@ -52,11 +52,13 @@ def look_fps(model: str, song: str, rig: bool, k: int, port: int = 8798) -> dict
 
 
 def measure(page, hooks: str) -> tuple[float, float]:
-    """(fps in the model's materials, fps in clay) of the view on screen."""
-    fps = []
-    for materials in ("true", "false"):
-        page.evaluate(f"{hooks}.setMaterials({materials})")
-        frame = page.evaluate(f"{hooks}.timeFrames({FRAMES})")["frame"]
-        fps.append(round(1000 / frame, 1))
+    """(fps in the model's materials, fps in clay) of the view on screen: the best of ROUNDS
+    timings of each, alternating, so that a busy moment of the shared host hits both."""
+    best = {"true": float("inf"), "false": float("inf")}
+    for _ in range(ROUNDS):
+        for materials in best:
+            page.evaluate(f"{hooks}.setMaterials({materials})")
+            frame = page.evaluate(f"{hooks}.timeFrames({FRAMES})")["frame"]
+            best[materials] = min(best[materials], frame)
     page.evaluate(f"{hooks}.setMaterials(true)")
-    return fps[0], fps[1]
+    return round(1000 / best["true"], 1), round(1000 / best["false"], 1)
