@@ -2,7 +2,7 @@
 the rig's gallery of modes, and in the gallery of modes of every rig — the fixtures
 (tests/fixtures/rigged: skinned, with props on bones, Draco, textured) and the shared rigs
 where the checkout has them (../shared/data/rigged) — every tile moves at least 0.1% of its
-pixels.
+pixels, and each rig wears every material its file's meshes name.
 """
 
 from __future__ import annotations
@@ -15,6 +15,7 @@ import urllib.request
 
 import numpy as np
 import pytest
+from test_look_server import gltf_json_and_buffer
 from web_helpers import open_app, running_server
 
 from helpers import fixture_path
@@ -50,6 +51,15 @@ def tile_motion(page, rig: str = "rig") -> list[float]:
     return [max(np.mean(np.abs(frames[a][tile] - frames[b][tile]) > 24)
                 for a in range(len(TIMES)) for b in range(a))
             for tile in range(len(frames[0]))]
+
+
+def file_materials(path: str) -> set[str]:
+    """The names of the materials the file's mesh primitives use, from the glTF JSON (unnamed:
+    "material i", as the reader names them)."""
+    document, _ = gltf_json_and_buffer(path)
+    used = {primitive["material"] for mesh in document.get("meshes", [])
+            for primitive in mesh["primitives"] if "material" in primitive}
+    return {document["materials"][i].get("name") or f"material {i}" for i in used}
 
 
 @pytest.fixture(scope="module")
@@ -93,8 +103,12 @@ def test_every_mode_tile_of_every_rig_moves(served, page, name):
     rig_id = next(rig["id"] for rig in served["library"]["rigs"] if rig["name"] == name)
     assert page.evaluate(f"window.eigendance.rig.open('{rig_id}')") is None
     motion = tile_motion(page)
+    look = page.evaluate("window.eigendance.rig.look()")
     print(f"{name}: least moving tile {min(motion):.4f} of its pixels "
-          f"({len(motion)} tiles)")
+          f"({len(motion)} tiles), materials {look and look['materials']}")
+    named = file_materials(PATHS[name])
+    if named:  # the file's own materials, read here from its JSON
+        assert look is not None and named <= set(look["materials"]), (named, look)
     for tile, changed in enumerate(motion):
         assert changed > 0.001, f"{name}: tile {tile + 1} does not move ({changed:.4f})"
 
