@@ -11,13 +11,8 @@ the model's swatch texture (read here with Pillow) shows in the page's picture.
 from __future__ import annotations
 
 import colorsys
-import functools
-import http.server
 import io
 import json
-import os
-import shutil
-import threading
 import urllib.request
 
 import numpy as np
@@ -31,7 +26,6 @@ from helpers import fixture_path
 
 pytestmark = pytest.mark.web
 MODEL = fixture_path("textured", "MorphStressTest.gltf")
-WEB_MODULES = os.path.join(os.path.dirname(__file__), "..", "..", "web", "node_modules")
 WIDTH, HEIGHT = 640, 400
 HUE_BINS = 18  # 20° each
 
@@ -45,29 +39,6 @@ def served(web_files, tmp_path_factory):
     with running_server([MODEL, web_files["song"], str(folder / "still.json"), "-k", "24"],
                         folder, web_files["cache"]) as server:
         yield server
-
-
-@pytest.fixture(scope="module")
-def reference(tmp_path_factory):
-    """A static server of gltf_reference.html, the model and three from web/node_modules."""
-    if not os.path.isdir(os.path.join(WEB_MODULES, "three")):
-        pytest.skip("web/node_modules is not installed (scripts/web.sh install)")
-    folder = tmp_path_factory.mktemp("gltf-reference")
-    shutil.copy(os.path.join(os.path.dirname(__file__), "gltf_reference.html"),
-                folder / "index.html")
-    shutil.copy(MODEL, folder / "model.gltf")
-    os.symlink(os.path.abspath(os.path.join(WEB_MODULES, "three")), folder / "three")
-    handler = functools.partial(Quiet, directory=str(folder))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    yield f"http://127.0.0.1:{server.server_address[1]}/"
-    server.shutdown()
-    server.server_close()
-
-
-class Quiet(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, *args):
-        pass
 
 
 def picture(png: bytes) -> np.ndarray:
@@ -112,6 +83,18 @@ def page_picture(browser, url: str, mapping_id: str, materials: bool, path: str 
         page.close()
 
 
+def reference_picture(browser, url: str, model: str) -> np.ndarray:
+    """three.js GLTFLoader's picture of `model` (a file the reference server holds)."""
+    page = browser.new_page(viewport={"width": WIDTH, "height": HEIGHT})
+    try:
+        page.goto(url)
+        page.wait_for_function("window.ready === true", timeout=30_000)
+        page.evaluate(f"window.draw('{model}', {WIDTH}, {HEIGHT})")
+        return picture(page.screenshot())
+    finally:
+        page.close()
+
+
 def swatch_hues() -> list[float]:
     """The hues of the swatch texture's saturated colours (the file's own image)."""
     document, buffer = gltf_json_and_buffer(MODEL)
@@ -123,19 +106,12 @@ def swatch_hues() -> list[float]:
 
 
 def test_a_textured_model_shows_its_texture_colours_as_three_js_draws_them(
-        browser, served, reference):
+        browser, served, gltf_reference):
     with urllib.request.urlopen(served["url"] + "api/library") as answer:
         mapping_id = json.load(answer)["mappings"][0]["id"]
     ours = page_picture(browser, served["url"], mapping_id, True)
     clay = page_picture(browser, served["url"], mapping_id, False)
-    page = browser.new_page(viewport={"width": WIDTH, "height": HEIGHT})
-    try:
-        page.goto(reference)
-        page.wait_for_function("window.ready === true", timeout=30_000)
-        page.evaluate(f"window.draw('model.gltf', {WIDTH}, {HEIGHT})")
-        theirs = picture(page.screenshot())
-    finally:
-        page.close()
+    theirs = reference_picture(browser, gltf_reference, "model.gltf")
     regions = {name: model_pixels(image) for name, image in
                (("ours", ours), ("clay", clay), ("three.js", theirs))}
     for name, pixels in regions.items():

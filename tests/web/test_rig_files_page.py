@@ -2,7 +2,8 @@
 the rig's gallery of modes, and in the gallery of modes of every rig — the fixtures
 (tests/fixtures/rigged: skinned, with props on bones, Draco, textured) and the shared rigs
 where the checkout has them (../shared/data/rigged) — every tile moves at least 0.1% of its
-pixels, and each rig wears every material its file's meshes name.
+pixels, and each rig wears every material its file's meshes name; the Draco astronaut shows the
+colours three.js's GLTFLoader draws (tests/web/test_look_page.py's reference).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import urllib.request
 
 import numpy as np
 import pytest
+from test_look_page import histogram, hues, model_pixels, reference_picture
 from test_look_server import gltf_json_and_buffer
 from web_helpers import open_app, running_server
 
@@ -138,3 +140,41 @@ def test_the_lbs_skin_wears_the_rigs_materials_too(served, page):
     print(f"LBS skin, mean colour: materials {means[True].round()}, clay {means[False].round()}")
     assert means[True][2] > means[True][0] + 20  # blue
     assert means[False][0] > means[False][2] + 20  # clay
+
+
+def test_the_draco_astronaut_shows_the_colours_three_js_draws(browser, served, page,
+                                                              gltf_reference):
+    """The textured, Draco-compressed astronaut in the rig player (at laptop size): the hues of
+    its texture as three.js's GLTFLoader draws the file (the reference page), not the clay's.
+    The hue histograms are spread over their neighbouring bins (±20°) before they are compared:
+    the frog's green lies on a bin's edge, and the page's posed, faceted model sways across it."""
+    rig_id = next(rig["id"] for rig in served["library"]["rigs"]
+                  if rig["name"] == "quaternius_Astronaut_FinnTheFrog.glb")
+    assert page.evaluate(f"window.eigendance.rig.open('{rig_id}')") is None
+    page.evaluate("window.eigendance.rig.select(0)")
+    page.evaluate("window.eigendance.rig.combine()")
+    shown = {}
+    viewport = page.viewport_size
+    page.set_viewport_size({"width": 1280, "height": 800})
+    try:
+        for materials in (True, False):
+            page.evaluate(f"window.eigendance.rig.setMaterials({str(materials).lower()})")
+            page.evaluate("window.eigendance.rig.renderAt(0.5)")
+            pixels = np.array(page.evaluate("window.eigendance.rig.playerPixels(2)"),
+                              dtype=float).reshape(1, -1, 3) / 255
+            shown["ours" if materials else "clay"] = model_pixels(pixels)
+    finally:
+        page.set_viewport_size(viewport)
+        page.evaluate("window.eigendance.rig.setMaterials(true)")
+        page.evaluate("window.eigendance.setView('gallery')")
+    shown["three.js"] = model_pixels(reference_picture(browser, gltf_reference, "astronaut.glb"))
+    counts = {name: sum(np.roll(histogram(hues(pixels)), shift) for shift in (-1, 0, 1)) / 3
+              for name, pixels in shown.items()}
+    overlap = np.minimum(counts["ours"], counts["three.js"]).sum()
+    clay_overlap = np.minimum(counts["clay"], counts["three.js"]).sum()
+    means = {name: (pixels.mean(axis=0) * 255).round() for name, pixels in shown.items()}
+    print(f"astronaut: hue histogram overlap with three.js: ours {overlap:.2f}, clay "
+          f"{clay_overlap:.2f}; mean colours {means}; saturated pixels "
+          f"{ {name: len(hues(pixels)) for name, pixels in shown.items()} }")
+    assert min(len(hues(pixels)) for pixels in shown.values()) > 200
+    assert overlap > 0.75 and clay_overlap < 0.3
