@@ -43,7 +43,7 @@ export interface Stage { view: View; tiles: Shot[]; player: Shot | null; explore
 export interface MotionSource {
   readonly ready: boolean;
   /** a song is loaded (the page's clock and spectrum follow it even without a model) */
-  readonly heard?: boolean;
+  readonly songLoaded?: boolean;
   weights(prepared: Prepared, t: number): Float32Array;
   loudestTimes(count: number): number[];
   framingWeights?(prepared: Prepared): Float32Array[];
@@ -180,7 +180,7 @@ export class Viewer {
   draw(t: number, profile = false): FrameParts | null {
     const deformer = this.deformer;
     if (!deformer || !this.motion.ready) {
-      if (this.motion.heard) this.onFrame(t); // a rig alone: the clock still follows the song
+      if (this.motion.songLoaded) this.onFrame(t); // a rig alone: the clock still follows the song
       return null;
     }
     const start = performance.now();
