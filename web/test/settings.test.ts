@@ -17,11 +17,11 @@ describe("mapping settings", () => {
     expect(DEFAULT_SETTINGS.materials).toBe(true); // a model with materials shows them
   });
 
-  it("writes every setting into a version-2 file and reads it back", () => {
+  it("writes every setting into a version-3 file and reads it back", () => {
     const settings = { gain: 1.7, smoothing: 0.25, deformedNormalWeight: 0.8,
       shading: "flat" as const, materials: false };
     const saved = withSettings(v1, settings);
-    expect(saved).toMatchObject({ version: 2, gain: 1.7, smoothing: 0.25, offset: 0,
+    expect(saved).toMatchObject({ version: 3, gain: 1.7, smoothing: 0.25, offset: 0,
       look: { deformed_normal_weight: 0.8, shading: "flat", materials: false } });
     expect(settingsOf(saved)).toEqual(settings);
     expect(saved.transfer).toEqual(v1.transfer);
