@@ -52,6 +52,13 @@ def test_the_record_skips_a_torn_line_and_one_batch_writes_a_folder_at_a_time(tm
         assert not record.complete("a.glb", "key1")
     lines = (tmp_path / RECORD).read_text().splitlines()
     assert [json.loads(line)["output"] for line in lines] == ["a.glb"]  # compacted
+    # An output claimed before it is made: its files are the batch's, it is not complete.
+    with Record(str(tmp_path)) as record:
+        record.claim({"c.glb": ["c.glb", "c.wav"]})
+    (tmp_path / "c.glb").write_bytes(b"finished, then Ctrl-C before it was recorded")
+    with Record(str(tmp_path)) as record:
+        assert record.ours("c.glb") and record.ours("c.wav") and not record.ours("d.glb")
+        assert not record.complete("c.glb", "key1") and record.complete("a.glb", "key1") is False
 
 
 def test_a_models_content_covers_the_files_it_names(tmp_path):

@@ -146,6 +146,27 @@ def pending_jobs(plan: Plan, record: Record, found: dict[str, str]) -> list[Pend
     return result
 
 
+def written_names(job: Job, format: str) -> list[str]:
+    """The names an output of a job writes in the output folder: its file, the song beside an
+    export, a point cache's rest mesh.
+
+    Parameters
+    ----------
+    job : the job.
+    format : one of FORMATS.
+
+    Returns
+    -------
+    list of file names, the output's first.
+    """
+    names = [job.stem + FORMATS[format]]
+    if format in ("glb", "pc2", "usd"):
+        names.append(job.stem + os.path.splitext(job.song.path)[1].lower())
+    if format == "pc2":
+        names.append(job.stem + ".obj")
+    return names
+
+
 def check_foreign(plan: Plan, pending: list[Pending], record: Record, force: bool) -> None:
     """InputError, before any work, for a file in the way of an output that no batch wrote
     there (unless `force`).
@@ -158,12 +179,7 @@ def check_foreign(plan: Plan, pending: list[Pending], record: Record, force: boo
     if force:
         return
     for each in pending:
-        names = [each.job.stem + FORMATS[format] for format in each.keys]
-        if set(each.keys) & {"glb", "pc2", "usd"}:
-            names.append(each.job.stem + os.path.splitext(each.job.song.path)[1].lower())
-        if "pc2" in each.keys:
-            names.append(each.job.stem + ".obj")
-        for name in names:
+        for name in {name for format in each.keys for name in written_names(each.job, format)}:
             if os.path.exists(os.path.join(plan.out, name)) and not record.ours(name):
                 raise InputError(f"{os.path.join(plan.out, name)} exists and was not written "
                                  "by a batch", remedy={"force": True})
@@ -199,6 +215,10 @@ def run_plan(plan: Plan, engine_factory, observer, force: bool = False,
         check_foreign(plan, pending, record, force)
         sweep_temporary_files(plan.out, fresh=0.0)  # a killed run's debris
         todo = [each for each in pending if each.keys]
+        # Claimed before any is made: an output a worker finished just before Ctrl-C, not yet
+        # recorded, is the batch's own file for the next run (made again, without --force).
+        record.claim({each.job.stem + FORMATS[format]: written_names(each.job, format)
+                      for each in todo for format in each.keys})
         for each in pending:
             if not each.keys:
                 outcome.lines.append(_line(each, "skipped"))
