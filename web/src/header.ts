@@ -6,6 +6,7 @@ import type { App } from "./app";
 import { $ } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
+import { choiceOf } from "./live-source";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -19,6 +20,8 @@ export function wireHeader(app: App): void {
   });
   $("song").addEventListener("change", (e) => {
     const songId = valueOf(e);
+    const live = choiceOf(songId);
+    if (live) { void app.startLive(live); return; }
     void messages.guard("Could not play this song", () => app.changeSong(songId));
   });
   $("mapping-menu").addEventListener("change", (e) => {

@@ -255,6 +255,26 @@ async def upload(request: Request):
     return JSONResponse(reply, status_code=201 if new else 200)
 
 
+async def take(request: Request):
+    """POST /api/takes?name=FILE: a live take recorded in the page (docs/design.md#live), kept
+    as a song of the library: checked as any upload (the size limit, the content against its
+    suffix, decoded and analysed), and refused unless it is audio.
+
+    Parameters
+    ----------
+    request : the recorded audio (WebM/Opus from the page) and ?name= with its suffix.
+
+    Returns
+    -------
+    JSONResponse as `upload` ({"kind": "song", "item"}); 415 for a name that is not audio.
+    """
+    name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
+    if not name or name.startswith("."):
+        raise HTTPException(400, "a take needs ?name=FILE with a file name and an audio suffix")
+    kind_of(name, ("audio",))  # InputError (415) for anything but audio
+    return await upload(request)
+
+
 async def receive_file(request: Request, library: Library, name: str):
     """Stream the body into a temporary file of the library folder, within the upload limit (413 as
     soon as it is passed).
