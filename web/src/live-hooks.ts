@@ -15,6 +15,9 @@ export function liveHooks(app: App) {
     /** Save the take so far as a song (its id, or null with the error shown). */
     save: () => live.saveTake(),
     setOffset: (seconds: number) => live.setOffset(seconds),
+    /** What the browser does when the input device goes away: its tracks fire "ended". */
+    unplug: () => live.input?.mediaStream.getAudioTracks()
+      .forEach((track) => track.dispatchEvent(new Event("ended"))),
     state: () => {
       const input = live.input;
       const take = input?.take.spectrum;
@@ -46,6 +49,11 @@ export function liveHooks(app: App) {
         out.push(Array.from(take.values.subarray(j * take.bands, (j + 1) * take.bands)));
       }
       return out;
+    },
+    /** The onset strength of every frame so far (dB per frame). */
+    onsetStrength: (): number[] => {
+      const take = live.input?.take.spectrum;
+      return take ? Array.from(take.onsetStrength.subarray(0, take.frames)) : [];
     },
     /** The live analysis's cost on this thread: ms per 128-sample block of `seconds` of noise
      * (the worklet runs the same code; `stats.busyMs` is its own measure where it has a clock). */

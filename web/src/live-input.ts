@@ -76,7 +76,7 @@ export class LiveInput implements Clock {
   offset = 0;
   /** the last worklet message's bookkeeping (blocks, CPU time, first sound) */
   stats: Omit<WorkletMessage, "frames"> = { origin: -1, firstSound: -1, samples: 0, blocks: 0,
-    busyMs: 0 };
+    busyMs: 0, dropouts: 0, dropoutsAt: [] };
   /** Called once when the input stops by itself (a device unplugged, a shared tab closed). */
   onEnded: (message: string) => void = () => {};
   /** Called after new frames arrived. */

@@ -141,12 +141,14 @@ export class LiveSource {
     const latency = input.latency + frame;
     const silent = input.stats.firstSound < 0 && input.stats.samples > input.take.spectrum.rate
       ? " · no sound yet" : "";
+    const dropouts = input.stats.dropouts ? ` · ${input.stats.dropouts} dropouts` : "";
     $("live-info").textContent = `● ${input.name} · ${tempo} · latency ${(latency * 1000)
-      .toFixed(0)} ms${silent}`;
+      .toFixed(0)} ms${silent}${dropouts}`;
     $("live-info").title = `input ${(input.inputLatency * 1000).toFixed(0)} ms + analysis `
       + `${(input.analysisDelay * 1000).toFixed(0)} ms + offset ${(input.offset * 1000)
         .toFixed(0)} ms + one frame ${(frame * 1000).toFixed(0)} ms; ${take.duration.toFixed(1)} s `
-      + "heard";
+      + "heard" + (dropouts ? "; dropouts: the input fell behind and gave silence (a busy "
+        + "machine or device)" : "");
     $("live-offset-out").textContent = `${(input.offset * 1000).toFixed(0)} ms`;
   }
 

@@ -15,6 +15,8 @@ const FIRST_CAPACITY = 60 * RATE;
 export interface LiveSpectrum extends Spectrum {
   live: true;
   revision: number;
+  /** the onset strength e_j of every frame (dB per frame, docs/design.md#rhythm) */
+  onsetStrength: Float32Array;
 }
 
 export class LiveTake {
@@ -25,7 +27,8 @@ export class LiveTake {
     this.spectrum = { name, rate: RATE, frames: 1, bands: BANDS, duration: 0,
       times: new Float32Array(FIRST_CAPACITY), values: new Float32Array(FIRST_CAPACITY * BANDS),
       bandEdges: Float32Array.from(bandEdges(sampleRate)), beats: new Float32Array(0),
-      onsets: new Float32Array(0), tempo: 0, live: true, revision: 0 };
+      onsets: new Float32Array(0), tempo: 0, live: true, revision: 0,
+      onsetStrength: new Float32Array(FIRST_CAPACITY) };
   }
 
   /** Seconds of audio analysed (the newest frame's time). */
@@ -44,6 +47,7 @@ export class LiveTake {
       if (j >= s.times.length) this.grow(2 * s.times.length);
       s.values.set(frame.values, j * s.bands);
       s.times[j] = j / RATE;
+      s.onsetStrength[j] = frame.onset;
       s.frames = Math.max(s.frames, j + 1);
       events = this.rhythm.push(frame.onset) || events;
     }
@@ -60,6 +64,9 @@ export class LiveTake {
     const s = this.spectrum;
     const times = new Float32Array(capacity);
     times.set(s.times);
+    const strength = new Float32Array(capacity);
+    strength.set(s.onsetStrength);
+    s.onsetStrength = strength;
     const values = new Float32Array(capacity * s.bands);
     values.set(s.values);
     s.times = times;

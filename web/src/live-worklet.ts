@@ -15,6 +15,11 @@ declare class AudioWorkletProcessor {
 
 /** Frames posted at once (20 ms at 100 frames per second). */
 const POST_EVERY = 2;
+/** Exact zeros in a row, once sound has come, that count as a dropout of the input (a device
+ * or capture that fell behind inserts silence; a microphone's own signal never holds this
+ * many exact zeros). */
+const DROPOUT_ZEROS = 32;
+const DROPOUTS_KEPT = 100;
 
 /** What the worklet posts: new frames, and the stream's bookkeeping. */
 export interface WorkletMessage {
@@ -25,6 +30,9 @@ export interface WorkletMessage {
   firstSound: number;
   /** samples received */
   samples: number;
+  /** dropouts of the input so far, and where the last DROPOUTS_KEPT began (stream samples) */
+  dropouts: number;
+  dropoutsAt: number[];
   /** 128-sample blocks analysed, and the milliseconds they took (−1: no clock here) */
   blocks: number;
   busyMs: number;
@@ -41,6 +49,9 @@ class LiveProcessor extends AudioWorkletProcessor {
   private blocks = 0;
   private busyMs = 0;
   private stopped = false;
+  private zeros = 0;
+  private dropouts = 0;
+  private dropoutsAt: number[] = [];
   private mono = new Float32Array(128);
 
   constructor() {
@@ -65,6 +76,8 @@ class LiveProcessor extends AudioWorkletProcessor {
     if (this.firstSound < 0) {
       const first = mono.findIndex((x) => x !== 0);
       if (first >= 0) this.firstSound = this.samples + first;
+    } else {
+      this.countDropouts(mono);
     }
     this.samples += length;
     for (const frame of this.analyser.push(mono)) this.pending.push(frame);
@@ -74,9 +87,21 @@ class LiveProcessor extends AudioWorkletProcessor {
     return true;
   }
 
+  private countDropouts(mono: Float32Array): void {
+    for (let i = 0; i < mono.length; i++) {
+      if (mono[i] !== 0) { this.zeros = 0; continue; }
+      if (++this.zeros === DROPOUT_ZEROS) {
+        this.dropouts++;
+        this.dropoutsAt.push(this.samples + i + 1 - DROPOUT_ZEROS);
+        if (this.dropoutsAt.length > DROPOUTS_KEPT) this.dropoutsAt.shift();
+      }
+    }
+  }
+
   private post(): void {
     const message: WorkletMessage = { frames: this.pending, origin: this.origin,
       firstSound: this.firstSound, samples: this.samples, blocks: this.blocks,
+      dropouts: this.dropouts, dropoutsAt: this.dropoutsAt,
       busyMs: clock ? this.busyMs : -1 };
     this.port.postMessage(message, this.pending.map((frame) => frame.values.buffer));
     this.pending = [];
