@@ -21,6 +21,7 @@ import time
 import urllib.error
 import urllib.request
 
+import av
 import mir_eval
 import numpy as np
 import pytest
@@ -63,7 +64,7 @@ def chromium(browser, flags, url, query="?test"):
     """Another Chromium (same Playwright) with these flags, the page open at url + query."""
     launched = browser.browser_type.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS + flags)
     try:
-        page = launched.new_page(viewport={"width": 1000, "height": 700})
+        page = launched.new_page(viewport={"width": 1000, "height": 700}, accept_downloads=True)
         page.errors = []
         page.on("pageerror", lambda error: page.errors.append(str(error)))
         page.goto(url + query)
@@ -248,9 +249,10 @@ def test_nothing_gets_stuck(browser, live_server, tmp_path):
         assert page.eval_on_selector("#song", "menu => menu.value") == song
 
 
-def test_a_live_take_becomes_a_song(browser, live_server, clip):
+def test_a_live_take_becomes_a_song(browser, live_server, clip, tmp_path):
     """*save take*: the take so far is a song of the library (decoded and analysed by the
-    server like any upload); api/takes refuses what is not audio, and a foreign Origin."""
+    server like any upload); `record` writes the live sound with the picture; api/takes
+    refuses what is not audio, and a foreign Origin."""
     url = live_server["url"]
     with chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"],
                   url) as page:
@@ -262,6 +264,17 @@ def test_a_live_take_becomes_a_song(browser, live_server, clip):
         saved = next(s for s in songs if s["id"] == song)
         assert saved["name"].startswith("live take ") and abs(saved["duration"] - heard) < 1.5
         assert state(page)["following"]  # saving does not stop the input
+        page.click("#tab-player")
+        page.click("#record")
+        page.wait_for_timeout(2000)
+        with page.expect_download(timeout=30_000) as download:
+            page.click("#record")
+        download.value.save_as(tmp_path / "live.webm")
+    with av.open(str(tmp_path / "live.webm")) as container:
+        assert container.streams.video and container.streams.audio
+        sound = np.concatenate([frame.to_ndarray().ravel()
+                                for frame in container.decode(audio=0)])
+    assert np.sqrt(np.mean(np.square(sound))) > 0.01  # the clip, heard through the input
     for name, origin, status in (("take.obj", None, 415), ("take.webm", "http://evil.example",
                                                              403)):
         request = urllib.request.Request(f"{url}api/takes?name={name}", data=b"\x1aE\xdf\xa3",

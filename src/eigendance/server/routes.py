@@ -66,6 +66,8 @@ def sniff(name: str, head: bytes) -> str | None:
                                        and head[1] & 0xE0 == 0xE0),
         ".ogg": head[:4] == b"OggS", ".oga": head[:4] == b"OggS", ".opus": head[:4] == b"OggS",
         ".flac": head[:4] == b"fLaC", ".m4a": head[4:8] == b"ftyp",
+        # Matroska/WebM (EBML): what a browser records, a live take among them
+        ".webm": head[:4] == b"\x1aE\xdf\xa3", ".mka": head[:4] == b"\x1aE\xdf\xa3",
         ".json": text_like and head.lstrip()[:1] == b"{",
     }
     if suffix not in checks:
