@@ -37,6 +37,8 @@ export function liveHooks(app: App) {
         liveTracks: live.history.flatMap((i) => i.mediaStream.getTracks())
           .filter((t) => t.readyState !== "ended").length,
         opened: live.history.length,
+        /** ms of the page's thread spent taking frames in */
+        receiveMs: input?.receiveMs ?? 0,
       };
     },
     /** Band values of frames [from, to) (frames × bands). */

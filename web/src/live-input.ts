@@ -81,6 +81,8 @@ export class LiveInput implements Clock {
   onEnded: (message: string) => void = () => {};
   /** Called after new frames arrived. */
   onFrames: () => void = () => {};
+  /** ms the page's thread spent taking frames in (the take, its rhythm), for the benchmark */
+  receiveMs = 0;
   private stopped = false;
 
   private constructor(readonly choice: LiveChoice, readonly name: string,
@@ -182,9 +184,11 @@ export class LiveInput implements Clock {
 
   private receive(message: WorkletMessage): void {
     if (this.stopped) return;
+    const started = performance.now();
     const { frames, ...stats } = message;
     this.stats = stats;
     this.take.add(frames);
+    this.receiveMs += performance.now() - started;
     this.onFrames();
     if (this.take.full) {
       this.end(`Live input: the take reached ${this.take.seconds.toFixed(0)} s, the most kept; `
