@@ -84,6 +84,10 @@ function toggleMute(app: App): void {
 async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void> {
   const menu = $<HTMLSelectElement>(kind === "mapping" ? "mapping-menu" : kind);
   const rig = kind === "mesh" && menu.value.startsWith("rig:"); // the model menu lists rigs too
+  if (kind === "song" && choiceOf(menu.value)) {
+    app.messages.status("a live input plays: choose a song in the menu to remove it");
+    return;
+  }
   const id = rig ? menu.value.slice(4) : menu.value;
   const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
   await app.messages.guard(`Could not remove ${name}`, async () => {

@@ -45,6 +45,8 @@ export class LiveSource {
   private recorder: MediaRecorder | null = null;
   private chunks: Blob[] = [];
   private devices: MediaDeviceInfo[] = [];
+  /** whether the input was heard playing at the last refresh (▶ / ❚❚ follows it) */
+  private wasPlaying = false;
 
   constructor(private readonly host: LiveHost) {
     const slider = $<HTMLInputElement>("live-offset");
@@ -105,7 +107,9 @@ export class LiveSource {
     const slider = $<HTMLInputElement>("live-offset");
     slider.value = String(Math.round(input.offset * 1000));
     $("live-bar").hidden = false;
+    $<HTMLInputElement>("seek").disabled = true;
     document.body.classList.add("live");
+    void this.awaitGesture();
     await this.listDevices(); // labels come with the permission
     this.host.status(`live: ${input.name}`);
     this.host.requestDraw();
@@ -119,8 +123,10 @@ export class LiveSource {
     if (!this.input) return;
     this.input.stop();
     this.input = null;
+    this.wasPlaying = false;
     this.host.transport.follow(null);
     $("live-bar").hidden = true;
+    $<HTMLInputElement>("seek").disabled = false;
     document.body.classList.remove("live");
   }
 
@@ -135,6 +141,10 @@ export class LiveSource {
   refresh(): void {
     const input = this.input;
     if (!input) return;
+    if (input.playing !== this.wasPlaying) { // the context started (or was suspended)
+      this.wasPlaying = input.playing;
+      this.host.transport.onChange(input.playing);
+    }
     const take = input.take.spectrum;
     const tempo = take.tempo > 0 ? `${take.tempo.toFixed(0)} BPM` : "listening for a beat";
     const frame = this.host.fps() > 0 ? 1 / this.host.fps() : 0;
@@ -185,6 +195,20 @@ export class LiveSource {
       this.host.error(`Live input: the take could not be saved (${messageOf(error)})`);
       return null;
     }
+  }
+
+  /** A browser that starts sound only after a gesture (`?source=mic` at load) keeps the
+   * AudioContext suspended: say so, and start listening at the first click or key. */
+  private async awaitGesture(): Promise<void> {
+    const context = this.host.transport.audioContext;
+    await Promise.race([context.resume(), new Promise((done) => setTimeout(done, 300))]);
+    if (context.state === "running" || !this.input) return;
+    this.host.status("live: click the page or press a key to start listening");
+    const resume = () => {
+      void context.resume().then(() => { if (this.input) this.host.status(`live: ${this.input.name}`); });
+    };
+    document.addEventListener("pointerdown", resume, { once: true });
+    document.addEventListener("keydown", resume, { once: true });
   }
 
   private record(input: LiveInput): void {
