@@ -213,7 +213,8 @@ def test_live_input_matches_the_offline_analysis(browser, live_server, clip, tmp
 def test_nothing_gets_stuck(browser, live_server, tmp_path):
     """Permission denied and no input device: one clear line, the song plays on; a device
     unplugged mid-take: one line, back to the song, its stream closed; switching between the
-    input and songs leaves no stream open; a 96 kHz clip plays as any other."""
+    input and songs leaves no stream open; the latency offset is remembered for the input; a
+    96 kHz clip plays as any other."""
     url = live_server["url"]
     start = "window.eigendance.liveInput.start('mic')"
     with chromium(browser, [], url) as page:  # headless without a fake device: none
@@ -232,6 +233,8 @@ def test_nothing_gets_stuck(browser, live_server, tmp_path):
         assert page.evaluate(start) is True
         running = wait_for(page, lambda s: s["seconds"] > 1)
         assert running["seconds"] > 1 and running["running"] == 1
+        page.evaluate("window.eigendance.liveInput.setOffset(0.12)")  # the delay slider
+        assert abs(state(page)["latency"] - running["latency"] - 0.12) < 1e-9
         song = page.evaluate("window.eigendance.info().songId")
         page.select_option("#song", song)  # a song from the menu: the input stops
         stopped = wait_for(page, lambda s: not s["following"], 10)
@@ -239,6 +242,7 @@ def test_nothing_gets_stuck(browser, live_server, tmp_path):
         page.select_option("#song", "live:mic")  # and again
         again = wait_for(page, lambda s: s["seconds"] > 0.5)
         assert again["opened"] == 2 and again["running"] == 1
+        assert again["offset"] == 0.12  # remembered for this input
         # the device goes away: the browser ends its track ("ended")
         page.evaluate("window.eigendance.liveInput.unplug()")
         after = wait_for(page, lambda s: not s["following"], 10)
