@@ -30,6 +30,10 @@ READ_EXTENSIONS = {DRACO, "KHR_materials_unlit", "KHR_texture_transform",
                    "KHR_mesh_quantization", "KHR_materials_emissive_strength"}
 IMAGE_MAGIC = {b"\x89PNG\r\n\x1a\n": "image/png", b"\xff\xd8\xff": "image/jpeg"}
 MAX_ELEMENTS = 1 << 28  # an accessor larger than this is refused before it is allocated
+# An accessor without a buffer view is zeros (the base of a sparse one): its size is declared,
+# not held. It may declare at most ZEROS_PER_BYTE values per byte of the file and its buffers
+# (a mesh stores 12 bytes per vertex, Draco 1 or more), beyond ZEROS_FREE values.
+ZEROS_PER_BYTE, ZEROS_FREE = 16, 1 << 16
 
 
 class GltfFile:
@@ -47,6 +51,7 @@ class GltfFile:
         path = os.fspath(path)
         self.name = name or os.path.basename(path)
         self.folder = os.path.dirname(os.path.abspath(path))
+        self.file_bytes = os.path.getsize(path)
         try:
             document = pygltflib.GLTF2().load(path)
         except Exception as error:  # pygltflib raises many kinds on a corrupt file
@@ -194,6 +199,7 @@ class GltfFile:
         dtype, width = self._layout(item, f"accessor {index}")
         count = item.count
         if item.bufferView is None:
+            self._check_declared(count * width, f"accessor {index}")
             values = np.zeros((count, width), dtype=dtype)
         else:
             values = self._strided(item.bufferView, item.byteOffset or 0, dtype, width, count,
@@ -203,6 +209,23 @@ class GltfFile:
         if item.normalized and dtype.kind in "iu":
             return np.maximum(values / float(np.iinfo(dtype).max), -1.0)
         return values.astype(np.float64 if dtype.kind == "f" else np.int64)
+
+    def held_bytes(self) -> int:
+        """Bytes the model holds: its file and its buffers.
+
+        Returns
+        -------
+        int.
+        """
+        return self.file_bytes + sum(len(self.buffer(index))
+                                     for index in range(len(self.document.buffers or [])))
+
+    def _check_declared(self, values: int, what: str) -> None:
+        """InputError when `values` declared (not held) exceed what the file's bytes can
+        describe (ZEROS_PER_BYTE, ZEROS_FREE): checked before they are allocated."""
+        if values > ZEROS_FREE and values > ZEROS_PER_BYTE * self.held_bytes():
+            raise self.message(f"{what} declares {values} values without data, more than a "
+                               f"file of {self.held_bytes()} bytes can describe")
 
     def _layout(self, item, what: str) -> tuple[np.dtype, int]:
         if item.componentType not in COMPONENT_TYPES or item.type not in WIDTHS:

@@ -10,10 +10,12 @@ within a second, open connections (server-sent events) included.
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import errno
 import fcntl
 import os
+import resource
 import shutil
 import signal
 import socket
@@ -31,6 +33,7 @@ from eigendance.errors import InputError, one_line
 from eigendance.files import FRESH_SECONDS
 from eigendance.harmonic.cache import cache_folder
 from eigendance.music.demo_music import write_demo_wav
+from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 
@@ -39,6 +42,13 @@ DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
 LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
+KEEP_ALIVE_SECONDS = 5.0  # an idle connection is closed this long after its last answer
+# File descriptors the server asks for (its soft limit raised up to the hard one): the open
+# connections (`server.connections`) and the files, pipes and processes of its work.
+OPEN_FILES = 4 * MAX_CONNECTIONS + 1024
+# (With uvicorn's backlog at MAX_CONNECTIONS, asyncio accepts at most that many connections
+# before `Connection` sees them: 2 × MAX_CONNECTIONS descriptors at most, under Linux's
+# customary 1024.)
 
 __all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "demo_paths", "library_session", "listen",
            "run", "terminal_progress"]
@@ -69,18 +79,21 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
     on_exit : called at the first Ctrl-C or SIGTERM (e.g. `Library.stop`).
     """
     host, bound = listening.getsockname()[:2]
+    raise_open_files(OPEN_FILES)
     config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
-                            proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS)
+                            proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS,
+                            http=Connection, timeout_keep_alive=KEEP_ALIVE_SECONDS,
+                            backlog=MAX_CONNECTIONS)  # also the most accepted at one go
     server = _Server(config, on_exit)
-    if announce:
-        original = server.startup
+    original = server.startup
 
-        async def startup(sockets=None):
-            await original(sockets=sockets)
-            if server.started:
-                print(announce(bound) if callable(announce) else announce, flush=True)
+    async def startup(sockets=None):
+        asyncio.get_running_loop().set_exception_handler(_one_line_handler())
+        await original(sockets=sockets)
+        if server.started and announce:
+            print(announce(bound) if callable(announce) else announce, flush=True)
 
-        server.startup = startup
+    server.startup = startup
     hung_up = []
     with listening, _handling({signal.SIGHUP: lambda number, frame: hung_up.append(number) or
                                server.handle_exit(number, frame)}):
@@ -89,6 +102,44 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
         raise SystemExit(128 + signal.SIGHUP)
     if not server.started:
         raise InputError(f"cannot serve on {host}:{bound}: the app did not start")
+
+
+def raise_open_files(wanted: int) -> int:
+    """Raise the soft limit of open files towards `wanted` (never past the hard limit).
+
+    Parameters
+    ----------
+    wanted : file descriptors.
+
+    Returns
+    -------
+    int, the soft limit now.
+    """
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    target = wanted if hard == resource.RLIM_INFINITY else min(wanted, hard)
+    if soft != resource.RLIM_INFINITY and soft < target:
+        with contextlib.suppress(ValueError, OSError):
+            resource.setrlimit(resource.RLIMIT_NOFILE, (target, hard))
+            soft = target
+    return soft
+
+
+def _one_line_handler():
+    """An event-loop exception handler writing one line on stderr, at most once a second per
+    message (asyncio's default writes a traceback each time: when the process runs out of file
+    descriptors, one per attempt to accept a connection)."""
+    said: dict[str, float] = {}
+
+    def handler(loop, context):
+        message = str(context.get("message", "event loop error"))
+        if time.monotonic() - said.get(message, -1e9) < 1.0:
+            return
+        said[message] = time.monotonic()
+        error = context.get("exception")
+        detail = f" ({type(error).__name__}: {one_line(error, 200)})" if error else ""
+        print(f"eigendance: {one_line(message, 200)}{detail}", file=sys.stderr, flush=True)
+
+    return handler
 
 
 def listen(host: str, port: int) -> socket.socket:
