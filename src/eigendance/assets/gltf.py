@@ -20,6 +20,7 @@ import numpy as np
 import pygltflib
 
 from eigendance.errors import InputError, one_line
+from eigendance.reads import open_regular
 
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
                    5125: np.uint32, 5126: np.float32}
@@ -151,11 +152,12 @@ class GltfFile:
         if not os.path.exists(path):
             raise self.message(f"{what}: the file {relative!r} is missing (it must sit beside "
                                "the model)")
-        if not os.path.isfile(path) or os.path.islink(path) and not \
-                os.path.realpath(path).startswith(os.path.realpath(self.folder) + os.sep):
-            raise self.message(f"{what}: {relative!r} is not a regular file in the model's "
-                               "folder")
-        with open(path, "rb") as file:
+        # Links are followed only where they stay inside the folder (a linked folder leading
+        # to /proc is outside), and only a regular file is opened (a FIFO would block).
+        inside = os.path.realpath(self.folder) + os.sep
+        if not os.path.realpath(path).startswith(inside):
+            raise self.message(f"{what}: {relative!r} leads outside the model's folder")
+        with open_regular(path, f"{self.name}: {what} ({relative})") as file:
             return file.read()
 
     def view_bytes(self, index: int) -> bytes:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import ctypes
 import errno
 import fcntl
 import os
@@ -42,6 +43,9 @@ DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
 LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
+# glibc's mallopt parameters (malloc.h) and our values (`return_freed_memory`).
+M_MMAP_THRESHOLD, M_ARENA_MAX = -3, -8
+MMAP_THRESHOLD, MALLOC_ARENAS = 1 << 20, 2
 KEEP_ALIVE_SECONDS = 5.0  # an idle connection is closed this long after its last answer
 # File descriptors the server asks for (its soft limit raised up to the hard one): the open
 # connections (`server.connections`) and the files, pipes and processes of its work.
@@ -80,6 +84,7 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
     """
     host, bound = listening.getsockname()[:2]
     raise_open_files(OPEN_FILES)
+    return_freed_memory()
     config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
                             proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS,
                             http=Connection, timeout_keep_alive=KEEP_ALIVE_SECONDS,
@@ -122,6 +127,27 @@ def raise_open_files(wanted: int) -> int:
             resource.setrlimit(resource.RLIMIT_NOFILE, (target, hard))
             soft = target
     return soft
+
+
+def return_freed_memory() -> bool:
+    """Make glibc give freed arrays back to the system (docs/design.md#server).
+
+    By default glibc raises its mmap threshold up to 32 MB after a large block is freed, so
+    arrays up to that size then come from heaps that stay as large as their peak, one heap per
+    thread (up to 8 per core). The server's worker threads each build and free hundreds of MB (a
+    rig analysis, a basis bundle): its RSS grew to 2.5 times the library's budget. A fixed
+    threshold of MMAP_THRESHOLD and MALLOC_ARENAS heaps keep it near what the library holds.
+
+    Returns
+    -------
+    bool: whether glibc took the settings (False on other C libraries).
+    """
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+        return bool(libc.mallopt(M_MMAP_THRESHOLD, MMAP_THRESHOLD)
+                    and libc.mallopt(M_ARENA_MAX, MALLOC_ARENAS))
+    except (OSError, AttributeError):
+        return False
 
 
 def _one_line_handler():
