@@ -97,7 +97,9 @@ def _check_declared(archive: zipfile.ZipFile, what: str) -> None:
             continue
         with archive.open(info) as member:
             version = np.lib.format.read_magic(member)
-            shape, _, dtype = np.lib.format._read_array_header(member, version)
+            read_header = np.lib.format.read_array_header_1_0 if version == (1, 0) else \
+                np.lib.format.read_array_header_2_0
+            shape, _, dtype = read_header(member)
         declared = int(np.prod(shape, dtype=object)) * dtype.itemsize
         if declared > info.file_size:
             raise InputError(f"{what}: {info.filename[:-4]} declares {shape} {dtype} "

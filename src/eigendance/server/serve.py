@@ -85,11 +85,7 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
     host, bound = listening.getsockname()[:2]
     raise_open_files(OPEN_FILES)
     return_freed_memory()
-    config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
-                            proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS,
-                            http=Connection, timeout_keep_alive=KEEP_ALIVE_SECONDS,
-                            backlog=MAX_CONNECTIONS)  # also the most accepted at one go
-    server = _Server(config, on_exit)
+    server = _Server(server_config(app, host, bound), on_exit)
     original = server.startup
 
     async def startup(sockets=None):
@@ -107,6 +103,27 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
         raise SystemExit(128 + signal.SIGHUP)
     if not server.started:
         raise InputError(f"cannot serve on {host}:{bound}: the app did not start")
+
+
+def server_config(app, host: str, port: int) -> uvicorn.Config:
+    """uvicorn's settings for the app: our connections (`server.connections`: header and body
+    timeouts, a bound on open connections, refusals in JSON), the keep-alive time, the
+    backlog, no access log.
+
+    Parameters
+    ----------
+    app : the ASGI app.
+    host : the address it listens on.
+    port : the port.
+
+    Returns
+    -------
+    uvicorn.Config.
+    """
+    return uvicorn.Config(app, host=host, port=port, log_level="warning", access_log=False,
+                          proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS,
+                          http=Connection, timeout_keep_alive=KEEP_ALIVE_SECONDS,
+                          backlog=MAX_CONNECTIONS)  # also the most accepted at one go
 
 
 def raise_open_files(wanted: int) -> int:
