@@ -62,23 +62,42 @@ class Connection(H11Protocol):
     """uvicorn's h11 protocol with header and body timeouts and a bound on open connections
     (see the module docstring). Given to uvicorn as ``Config(http=Connection)``."""
 
-    def connection_made(self, transport) -> None:  # noqa: D102 - asyncio.Protocol's
+    def connection_made(self, transport) -> None:
+        """A new connection: its header time starts; beyond MAX_CONNECTIONS, make room.
+
+        Parameters
+        ----------
+        transport : asyncio's transport of the connection.
+        """
         super().connection_made(transport)
         self.waiting_since = self.last_data = self.loop.time()
         self.watch = self.loop.call_later(CHECK_SECONDS, self._check)
         if len(self.connections) > MAX_CONNECTIONS:
             self._make_room()
 
-    def connection_lost(self, exc) -> None:  # noqa: D102
+    def connection_lost(self, exc) -> None:
+        """The connection closed: stop watching it.
+
+        Parameters
+        ----------
+        exc : the error that closed it, or None.
+        """
         self.watch.cancel()
         super().connection_lost(exc)
 
-    def data_received(self, data: bytes) -> None:  # noqa: D102
+    def data_received(self, data: bytes) -> None:
+        """Bytes from the client: the body's idle time starts again.
+
+        Parameters
+        ----------
+        data : the bytes.
+        """
         self.last_data = self.loop.time()
         super().data_received(data)
 
-    def on_response_complete(self) -> None:  # noqa: D102
-        self.waiting_since = self.loop.time()  # the next request's headers are awaited from now
+    def on_response_complete(self) -> None:
+        """An answer is sent: the next request's headers are awaited from now."""
+        self.waiting_since = self.loop.time()
         super().on_response_complete()
 
     @property
@@ -127,7 +146,12 @@ class Connection(H11Protocol):
 
     def send_400_response(self, msg: str) -> None:
         """uvicorn's answer to a request h11 cannot parse, as one line of JSON (431 for headers
-        larger than h11's limit)."""
+        larger than h11's limit).
+
+        Parameters
+        ----------
+        msg : uvicorn's message (h11's own reason is used).
+        """
         problem = sys.exc_info()[1]  # called while uvicorn handles h11's RemoteProtocolError
         status = getattr(problem, "error_status_hint", 400)
         detail = f" ({problem})" if problem is not None and str(problem) else ""

@@ -63,6 +63,10 @@ class Shelf:
         key : the budget's key (an item's id, or one of its own for an edit).
         size : the planned bytes.
         what : the work in words, for the message when it cannot fit (InputError 413 or 409).
+
+        Yields
+        ------
+        None, while the work runs (its key is busy: never dropped meanwhile).
         """
         with self.lock:
             dropped = self.budget.charge(key, size, busy=self._busy)
