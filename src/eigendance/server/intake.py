@@ -264,9 +264,13 @@ class Intake:
 
         Returns
         -------
-        RigItem; InputError when it is not a rig that can be analysed, or cannot fit.
+        RigItem; InputError when it is not a rig that can be analysed, or cannot fit (its
+        planned memory is charged before the analysis: `rigs.planned_bytes`).
         """
+        skeleton = load_rig(path, name)
         item = RigItem(new_id(), name, origin, path, content=content)
-        rigs.analyse(item, Rig(load_rig(path, name)))
-        self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
+        with self.shelf.reserving(item.id, rigs.planned_bytes(skeleton),
+                                  f"{name}: the analysis of {skeleton.n_bodies} bodies"):
+            rigs.analyse(item, Rig(skeleton))
+            self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
         return item

@@ -185,7 +185,10 @@ class Library:
         bytes: the new rig bundle; a failed edit leaves the rig as it was.
         """
         self.ready_rig(item)
-        bundle = rigs.edit(item, change)
+        with self.shelf.reserving(f"{item.id}/edit", rigs.planned_bytes(item.rig.skeleton),
+                                  f"{item.name}: an edit"):
+            bundle = rigs.edit(item, change)
+        self.shelf.budget.release(f"{item.id}/edit")
         self.shelf.recharge(item)
         return bundle
 

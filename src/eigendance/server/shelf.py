@@ -11,6 +11,7 @@ Messages name stored files by the names they were uploaded under (`public`).
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
@@ -51,6 +52,38 @@ class Shelf:
         self.contents = Contents(self.lock)
         self.unpacked: dict[str, str] = {}  # a zip's folder → its model file, relative
         self.removed = lambda item: None
+        self.reserved: set[str] = set()  # keys charged for work in progress (`reserving`)
+
+    @contextlib.contextmanager
+    def reserving(self, key: str, size: int, what: str):
+        """Charge `size` bytes under `key` before the work that allocates them (dropping the
+        least recently used items to make room); release them if the work fails. Work that
+        succeeds charges what it keeps under the same key (`admit`, `recharge`).
+
+        Parameters
+        ----------
+        key : the budget's key (an item's id, or one of its own for an edit).
+        size : the planned bytes.
+        what : the work in words, for the message when it cannot fit (InputError 413 or 409).
+
+        Yields
+        ------
+        None, while the work runs (its key is busy: never dropped meanwhile).
+        """
+        with self.lock:
+            dropped = self.budget.charge(key, size, busy=self._busy)
+            if dropped is None:
+                raise refusal(size, self.budget.limit, what)
+            self.reserved.add(key)
+            for other in dropped:
+                self._drop(other)
+        try:
+            yield
+        except BaseException:
+            self.budget.release(key)
+            raise
+        finally:
+            self.reserved.discard(key)
 
     def admit(self, item, store: dict, what: str) -> None:
         """Charge `item` its bytes (dropping the least recently used items to make room) and
@@ -89,6 +122,8 @@ class Shelf:
     def _busy(self, item_id: str) -> bool:
         """In use, not to be dropped: a mesh whose basis is queued or being solved, a rig being
         analysed or edited."""
+        if item_id in self.reserved:
+            return True
         item = self.find(item_id)
         return item is not None and item.busy
 
