@@ -13,6 +13,7 @@ import fcntl
 import json
 import math
 import os
+import re
 import tempfile
 import time
 
@@ -101,23 +102,48 @@ def check_readable(path: str | os.PathLike) -> str:
     return path
 
 
-# Temporary files of `atomic_write`: ours alone, so sweeping them never touches another
-# program's files. An empty one younger than FRESH_SECONDS may belong to a writer that has not
-# taken its lock yet.
+# Temporary files of `atomic_write` and `export.output.Outputs`: ours alone, so sweeping them
+# never touches another program's files (`.eigendance-XXXX.part`, or `.eigendance-XXXX.part.mp4`
+# where the writer needs the destination's suffix). An empty one younger than FRESH_SECONDS may
+# belong to a writer that has not taken its lock yet.
 TEMPORARY_PREFIX, TEMPORARY_SUFFIX = ".eigendance-", ".part"
+TEMPORARY_NAME = re.compile(r"\.eigendance-.+\.part(\.[A-Za-z0-9]{1,8})?")
 FRESH_SECONDS = 60.0
 
 
-def sweep_temporary_files(folder: str | os.PathLike) -> int:
+def locked_temporary(folder: str, suffix: str = "") -> tuple[int, str]:
+    """A new temporary file in `folder`, locked (exclusively) by this process until it is closed.
+
+    Parameters
+    ----------
+    folder : an existing folder.
+    suffix : appended after `.part` (a destination's suffix, for writers that need it).
+
+    Returns
+    -------
+    (file descriptor, path); OSError as `tempfile.mkstemp` raises it.
+    """
+    handle, temporary = tempfile.mkstemp(dir=folder, prefix=TEMPORARY_PREFIX,
+                                         suffix=TEMPORARY_SUFFIX + suffix)
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        pass  # a file system without locks: the file is still ours, only the sweep skips it
+    return handle, temporary
+
+
+def sweep_temporary_files(folder: str | os.PathLike, fresh: float = FRESH_SECONDS) -> int:
     """Remove the temporary files that killed writers left in `folder`; returns how many.
 
     A writer holds an exclusive lock on its temporary file until it renames or removes it, and
     the system drops the lock when the process dies, however it dies. So a temporary file whose
-    lock can be taken is debris (unless it is empty and fresh: its writer may be about to lock it).
+    lock can be taken is debris (unless it is empty and younger than `fresh` seconds: its writer
+    may be about to lock it).
 
     Parameters
     ----------
     folder : a folder.
+    fresh : s; 0 when no writer can be starting there (a batch whose workers are stopped).
 
     Returns
     -------
@@ -130,14 +156,13 @@ def sweep_temporary_files(folder: str | os.PathLike) -> int:
     removed = 0
     now = time.time()
     for entry in entries:
-        if not (entry.name.startswith(TEMPORARY_PREFIX) and entry.name.endswith(TEMPORARY_SUFFIX)
-                and entry.is_file(follow_symlinks=False)):
+        if not (TEMPORARY_NAME.fullmatch(entry.name) and entry.is_file(follow_symlinks=False)):
             continue
         try:
             with open(entry.path, "rb") as file:
                 fcntl.flock(file, fcntl.LOCK_EX | fcntl.LOCK_NB)  # OSError while a writer holds it
                 status = os.fstat(file.fileno())
-                if status.st_size == 0 and now - status.st_mtime < FRESH_SECONDS:
+                if status.st_size == 0 and now - status.st_mtime < fresh:
                     continue
                 os.unlink(entry.path)
                 removed += 1
@@ -168,16 +193,11 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
     try:
         os.makedirs(folder, exist_ok=True)
         sweep_temporary_files(folder)
-        handle, temporary = tempfile.mkstemp(dir=folder, prefix=TEMPORARY_PREFIX,
-                                             suffix=TEMPORARY_SUFFIX)
+        # The lock is held until the file is renamed (the rename happens while it is open).
+        handle, temporary = locked_temporary(folder)
     except OSError as error:
         raise InputError(f"{path}: cannot write ({error.strerror or one_line(error)})") from None
     try:
-        # The lock is held until the file is renamed (the rename happens while it is open).
-        try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            pass  # a file system without locks: the file is still ours, only the sweep skips it
         with os.fdopen(handle, "wb") as file:
             write(file)
             file.flush()

@@ -13,6 +13,7 @@ import sys
 import warnings
 
 from eigendance import __version__
+from eigendance.cli.batch import add_batch, run_batch
 from eigendance.cli.exports import add_export, add_render, run_export, run_render
 from eigendance.cli.harmonics import (
     add_animate,
@@ -60,6 +61,8 @@ COMMANDS = {
     "export": (add_export, run_export,
                "write the dance for other tools: glTF (.glb), point cache (.pc2 + .obj), USD"),
     "render": (add_render, run_render, "render the dance with its song into a video (.mp4)"),
+    "batch": (add_batch, run_batch, "make many songs × many models from a plan (TOML), on "
+                                    "local processes or Ray; resumable"),
 }
 
 

@@ -67,7 +67,7 @@ def add_output(parser, what: str) -> None:
     parser.add_argument("--force", action="store_true", help="overwrite an existing output")
 
 
-def progress_bar(total: int | None, description: str, unit: str = "pair"):
+def progress_bar(total: int | None, description: str, unit: str = "pair", initial: int = 0):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
     Parameters
@@ -76,6 +76,7 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
         count).
     description : the bar's label.
     unit : what is counted.
+    initial : the count done already (not counted in the rate, nor so in the ETA).
 
     Returns
     -------
@@ -86,7 +87,7 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
     # when Ctrl-C tears the pool down while they start.
     tqdm.monitor_interval = 0
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
-               disable=not sys.stderr.isatty(), leave=False)
+               disable=not sys.stderr.isatty(), leave=False, initial=initial)
 
     def update(done):
         bar.update(max(0, done - bar.n))

@@ -2,19 +2,20 @@
 
 An export may write several files (a .glb and its song, a .pc2 and its rest mesh, an .mp4 that
 ffmpeg writes by name). `Outputs` checks every destination before any work starts, hands out a
-temporary path beside each one, and renames them all into place only when the whole export has
-succeeded; an error, Ctrl-C or any other exception deletes the temporaries, so a destination
-either keeps what it held before or receives a complete file.
+temporary path beside each one (`.eigendance-XXXX.part.<suffix>`, locked by this process as
+docs/design.md#files says, so that the temporaries of a killed export are swept by the next
+write there), and renames them all into place only when the whole export has succeeded; an
+error, Ctrl-C or any other exception deletes the temporaries, so a destination either keeps what
+it held before or receives a complete file.
 """
 
 from __future__ import annotations
 
 import os
 import shutil
-import tempfile
 
 from eigendance.errors import InputError, one_line
-from eigendance.files import refuse_overwrite
+from eigendance.files import locked_temporary, refuse_overwrite, sweep_temporary_files
 
 
 class Outputs:
@@ -43,20 +44,21 @@ class Outputs:
         for path in self.destinations:
             refuse_overwrite(path, force)
         self.temporaries: dict[str, str] = {}
+        self._locks: list[int] = []  # held until the temporaries are renamed or removed
 
     def __enter__(self) -> Outputs:
         for path in self.destinations:
             folder = os.path.dirname(path)
             try:
                 os.makedirs(folder, exist_ok=True)
+                sweep_temporary_files(folder)
                 # The destination's suffix stays last: USD and ffmpeg choose the format by it.
-                handle, temporary = tempfile.mkstemp(
-                    dir=folder, prefix=".tmp-", suffix=".part" + os.path.splitext(path)[1])
+                handle, temporary = locked_temporary(folder, os.path.splitext(path)[1])
             except OSError as error:
                 self._discard()
                 raise InputError(f"{path}: cannot write "
                                  f"({error.strerror or one_line(error)})") from None
-            os.close(handle)
+            self._locks.append(handle)
             self.temporaries[path] = temporary
         return self
 
@@ -98,6 +100,7 @@ class Outputs:
                 os.chmod(temporary, 0o666 & ~umask)
             for path, temporary in self.temporaries.items():
                 os.replace(temporary, path)
+            self._unlock()
         except BaseException as failure:
             self._discard()
             if isinstance(failure, OSError):
@@ -110,3 +113,9 @@ class Outputs:
             if os.path.exists(temporary):
                 os.unlink(temporary)
         self.temporaries.clear()
+        self._unlock()
+
+    def _unlock(self) -> None:
+        for handle in self._locks:
+            os.close(handle)
+        self._locks.clear()

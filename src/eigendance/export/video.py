@@ -300,7 +300,7 @@ def encode(command: list[str], frames, count: int, progress=None) -> None:
 
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
                  audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
-                 force: bool = False, progress=None) -> dict:
+                 force: bool = False, progress=None, workers: int = WORKERS) -> dict:
     """Render dances (one, or a gallery of the same mesh) with their song into an MP4.
 
     Parameters
@@ -312,6 +312,8 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     audio : the song's file (any format ffmpeg reads), muxed as AAC.
     fps : frames per second; size : (width, height) in pixels, both even.
     progress : optional callable(frames done, frames in all).
+    workers : processes drawing frames in turn (1: this process draws; a batch, whose workers
+        each have a core, draws so).
 
     Returns
     -------
@@ -334,7 +336,7 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     with Outputs([path], force) as outputs:
         command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
                                  duration if clipped else None)
-        encode(command, frames_in_turn(dances, looks, times, width, height), len(times),
+        encode(command, frames_in_turn(dances, looks, times, width, height, workers), len(times),
                progress)
     return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
             "duration": duration}
