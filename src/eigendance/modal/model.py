@@ -109,6 +109,10 @@ def null_space(matrix: np.ndarray, n_columns: int) -> np.ndarray:
     """
     if matrix.shape[0] == 0:
         return np.eye(n_columns)
+    if matrix.shape[0] > n_columns:
+        # Many rows (20,000 joints between two bodies): R of A = QR has A's null space and
+        # singular values, and its SVD never asks LAPACK for a rows × rows matrix.
+        matrix = scipy.linalg.qr(matrix, mode="r")[0][:n_columns]
     return scipy.linalg.null_space(matrix, rcond=RANK_TOLERANCE)
 
 
@@ -224,6 +228,10 @@ class ModalModel:
                                                     * deflection_reduced)
         reduced_mass = (reduced_mass + reduced_mass.T) / 2
         reduced_stiffness = (reduced_stiffness + reduced_stiffness.T) / 2
+        if not np.isfinite(reduced_stiffness).all():  # the product overflowed
+            raise InputError(f"{skeleton.name}: joint stiffness × {stiffness:g} is beyond the "
+                             "range of numbers (the stiffness matrix overflows); give smaller "
+                             "stiffnesses")
         dimension = basis.shape[1]
         if dimension:
             eigenvalues, vectors = scipy.linalg.eigh(reduced_stiffness, reduced_mass)
@@ -233,6 +241,9 @@ class ModalModel:
         rigid = dimension - matrix_rank(deflection_reduced[elastic]) if dimension else 0
         modes = basis @ vectors[:, rigid:]
         frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
+        if not (np.isfinite(frequencies).all() and np.isfinite(modes).all()):
+            raise InputError(f"{skeleton.name}: joint stiffness × {stiffness:g} gives "
+                             "frequencies beyond the range of numbers; give smaller stiffnesses")
         model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
                     skeleton.body_names, skeleton.centers, skeleton.rotations, mass,
                     skeleton.joint_pairs,
