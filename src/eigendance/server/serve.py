@@ -261,12 +261,12 @@ def demo_paths() -> list[str]:
         os.makedirs(os.path.dirname(song), exist_ok=True)
         write_demo_wav(song)
     except (OSError, InputError) as error:  # a cache folder that is a file, read-only, full
-        reason = error.strerror if isinstance(error, OSError) and error.strerror else \
-            one_line(error)
+        reason = one_line(error) if isinstance(error, InputError) else \
+            f"{os.path.dirname(song)}: cannot write ({error.strerror or one_line(error)})"
         folder = tempfile.mkdtemp(prefix="eigendance-demo-")
         atexit.register(shutil.rmtree, folder, True)
-        print(f"eigendance: warning: {os.path.dirname(song)}: cannot write the cache "
-              f"({reason}); the demo's music is made for this run only", file=sys.stderr)
+        print(f"eigendance: warning: {reason}; the demo's music is made for this run only "
+              "(the cache folder cannot be written)", file=sys.stderr)
         song = os.path.join(folder, "eigendance-demo-music.wav")
         write_demo_wav(song)
     return [mesh, song]
