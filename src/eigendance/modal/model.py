@@ -241,9 +241,11 @@ class ModalModel:
         rigid = dimension - matrix_rank(deflection_reduced[elastic]) if dimension else 0
         modes = basis @ vectors[:, rigid:]
         frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
-        if not (np.isfinite(frequencies).all() and np.isfinite(modes).all()):
+        # The page's bundle and the files hold them as float32: beyond its range is infinite.
+        if not (np.all(frequencies <= np.finfo(np.float32).max) and np.isfinite(modes).all()):
             raise InputError(f"{skeleton.name}: joint stiffness × {stiffness:g} gives "
-                             "frequencies beyond the range of numbers; give smaller stiffnesses")
+                             "frequencies beyond the range of numbers (of 32-bit floats); give "
+                             "smaller stiffnesses")
         model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
                     skeleton.body_names, skeleton.centers, skeleton.rotations, mass,
                     skeleton.joint_pairs,
