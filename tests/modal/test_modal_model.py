@@ -233,5 +233,5 @@ def test_stiffness_beyond_the_range_of_numbers_is_one_clear_error():
     skeleton = load_rig("chain")
     with pytest.raises(InputError, match="beyond the range of numbers"):
         ModalModel.from_skeleton(skeleton, stiffness=1e300)
-    finite = ModalModel.from_skeleton(skeleton, stiffness=1e100)
+    finite = ModalModel.from_skeleton(skeleton, stiffness=1e60)  # about 1e30 Hz
     assert np.isfinite(finite.frequencies).all()
