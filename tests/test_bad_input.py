@@ -433,3 +433,17 @@ def test_out_of_memory_advice_fits_the_input(tmp_path, capfd, monkeypatch, argv,
     assert_refused(status, err, tmp_path, advice)
     if argv[0] != "basis":
         assert "-k" not in err
+
+
+def test_demo_with_a_cache_folder_that_is_a_file_makes_its_music_for_the_run(tmp_path, capfd,
+                                                                             monkeypatch):
+    from eigendance.server.serve import demo_paths
+
+    cache = tmp_path / "cache"
+    cache.write_text("not a folder")
+    monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(cache))
+    mesh, song = demo_paths()
+    _, err = capfd.readouterr()
+    assert os.path.isfile(mesh) and soundfile.info(song).duration > 10
+    assert err.startswith("eigendance: warning: ") and err.count("\n") == 1, err
+    assert "cannot write (Not a directory)" in err and cache.read_text() == "not a folder"
