@@ -228,10 +228,10 @@ class ModalModel:
                                                     * deflection_reduced)
         reduced_mass = (reduced_mass + reduced_mass.T) / 2
         reduced_stiffness = (reduced_stiffness + reduced_stiffness.T) / 2
+        scaled = "joint stiffness" + (f" × {stiffness:g}" if stiffness != 1 else "")
         if not np.isfinite(reduced_stiffness).all():  # the product overflowed
-            raise InputError(f"{skeleton.name}: joint stiffness × {stiffness:g} is beyond the "
-                             "range of numbers (the stiffness matrix overflows); give smaller "
-                             "stiffnesses")
+            raise InputError(f"{skeleton.name}: {scaled} is beyond the range of numbers (the "
+                             "stiffness matrix overflows); give smaller stiffnesses")
         dimension = basis.shape[1]
         if dimension:
             eigenvalues, vectors = scipy.linalg.eigh(reduced_stiffness, reduced_mass)
@@ -243,9 +243,8 @@ class ModalModel:
         frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
         # The page's bundle and the files hold them as float32: beyond its range is infinite.
         if not (np.all(frequencies <= np.finfo(np.float32).max) and np.isfinite(modes).all()):
-            raise InputError(f"{skeleton.name}: joint stiffness × {stiffness:g} gives "
-                             "frequencies beyond the range of numbers (of 32-bit floats); give "
-                             "smaller stiffnesses")
+            raise InputError(f"{skeleton.name}: {scaled} gives frequencies beyond the range "
+                             "of numbers (of 32-bit floats); give smaller stiffnesses")
         model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
                     skeleton.body_names, skeleton.centers, skeleton.rotations, mass,
                     skeleton.joint_pairs,
