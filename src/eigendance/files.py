@@ -185,6 +185,10 @@ def all_or_nothing():
     that writes several files (a spectrogram and its picture, an animation and its mapping)
     leaves none of them when it fails.
 
+    Returns
+    -------
+    A context manager (nothing to bind); InputError when a rename at its end fails.
+
     Example
     -------
     >>> import tempfile

@@ -57,7 +57,13 @@ def check_space(log: str, path: str) -> None:
 
 
 def start_janitor() -> subprocess.Popen | None:
-    """The janitor process of one `Outputs` (None where none can start: the sweep remains)."""
+    """The janitor process of one `Outputs`.
+
+    Returns
+    -------
+    subprocess.Popen, its stdin the pipe of names; None where none can start (the sweep
+    remains).
+    """
     try:
         return subprocess.Popen([sys.executable, "-I", "-S", "-c", JANITOR],
                                 stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
