@@ -6,7 +6,8 @@ import os
 import subprocess
 import sys
 
-from conftest import write_plan
+from batch_helpers import write_plan
+
 from eigendance.cli.main import main
 
 PLAN = {"models": ["sphere.obj", "loop4"], "songs": ["*.wav"],

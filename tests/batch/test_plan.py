@@ -1,11 +1,10 @@
 """Plans: a bad plan ends in one line naming the file and the key before any work starts; names
 are safe and unique; the example of --help is a plan."""
 
-import os
 
 import pytest
+from batch_helpers import write_plan
 
-from conftest import write_plan
 from eigendance.batch import plan as plan_module
 from eigendance.batch.names import unique_parts
 from eigendance.batch.plan import read_plan
@@ -88,8 +87,8 @@ def test_the_plan_checks_numbers_with_the_command_lines_ranges():
     assert options.gallery_size.bounds == (MIN_GALLERY, MAX_GALLERY)
 
 
-def test_globs_and_defaults_are_read_relative_to_the_plan(inputs, tmp_path):
-    os.chdir("/")  # not the plan's folder
+def test_globs_and_defaults_are_read_relative_to_the_plan(inputs, monkeypatch):
+    monkeypatch.chdir("/")  # not the plan's folder (restored after the test)
     plan = read_plan(write_plan(str(inputs), **GOOD))
     assert [model.name for model in plan.models] == ["sphere", "loop4"]
     assert [model.kind for model in plan.models] == ["mesh", "rig"]

@@ -17,7 +17,9 @@ from eigendance import __version__
 from eigendance.batch.plan import Item, Job, Model, Plan
 from eigendance.files import read_json, suffix_of
 
-RECORD_VERSION = 1  # bump when what a job writes changes without a new eigendance version
+# Bump when what a job writes changes without a new eigendance version (2: the rhythm,
+# mapping v3: gallery items with envelopes and beat pulses).
+RECORD_VERSION = 2
 BLOCK = 1 << 20  # bytes read at a time while hashing
 
 

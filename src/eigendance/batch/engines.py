@@ -219,6 +219,10 @@ class LocalEngine:
                         os.killpg(process.pid, signal.SIGKILL)
                     except (ProcessLookupError, PermissionError):
                         process.kill()
+                # Its feeder thread may be blocked on a pipe the killed worker no longer reads:
+                # not joined at exit (as the eigen-solver's pool, harmonic.eigensolver).
+                if (calls := getattr(executor, "_call_queue", None)) is not None:
+                    calls.cancel_join_thread()
             executor.shutdown(wait=True, cancel_futures=True)
         self.executors = [None] * self.slots
         self.running.clear()

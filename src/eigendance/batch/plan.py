@@ -43,7 +43,7 @@ EXAMPLE = """\
 models = ["meshes/*.obj", "characters/hero.glb", "loop8"]  # meshes, rigs, built-in rigs
 songs = ["songs/*.ogg", "single.mp3"]                       # audio files or globs
 outputs = ["mp4", "glb"]          # any of mp4, glb, usd, pc2, npz
-gallery = 4                       # the initial gallery's first 4 items per pair ...
+gallery = 4                       # an initial gallery of 4 items per pair ...
 # mappings = ["calm.json", "wild.json"]   # ... or these mapping files instead
 out = "renders"                   # {model}-{song}-{item}.{ext} are written here
 size = "1280x720"                 # video size (optional)
@@ -51,6 +51,7 @@ fps = 30                          # frames per second (optional, default 30)
 k = 300                           # harmonics of a mesh (optional, default 300)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
+# cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
 """
 
 

@@ -7,7 +7,10 @@ and flushed to disk as soon as an output is complete, so a batch stopped in any 
 killed process, a power cut: a torn last line is ignored) resumes from what it finished. An
 output is complete when its line has the same key and each of its files is there with the
 same size and the same modification time or, failing that, the same SHA-256; otherwise it is
-made again. At the end of a run the record is rewritten compactly (one line per output),
+made again. Before a run makes anything, each output it will make is *claimed*: a line without
+a key naming the files it writes, so that a file a worker finished just before Ctrl-C (or a
+kill), not yet recorded, counts as the batch's own and is made again without `--force`. At the
+end of a run the record is rewritten compactly (one line per output),
 atomically. While a batch runs it holds a lock on its output folder: a second batch writing
 into the same folder stops with one line.
 
@@ -141,6 +144,22 @@ class Record:
         entry = {"output": output, "key": key, "files": files}
         self.entries[output] = entry
         self._journal.write(json.dumps(entry, sort_keys=True) + "\n")
+        self._journal.flush()
+        os.fsync(self._journal.fileno())
+
+    def claim(self, outputs: dict[str, list[str]]) -> None:
+        """Record outputs about to be made as the batch's, not complete (no key): a file a
+        worker writes there is the batch's even when it was stopped before `add` (appended and
+        flushed to disk at once).
+
+        Parameters
+        ----------
+        outputs : {output's file name: the names it writes in the folder}.
+        """
+        for output, names in outputs.items():
+            entry = {"output": output, "key": None, "files": dict.fromkeys(names)}
+            self.entries[output] = entry
+            self._journal.write(json.dumps(entry, sort_keys=True) + "\n")
         self._journal.flush()
         os.fsync(self._journal.fileno())
 

@@ -69,6 +69,7 @@ class Outcome:
     seconds : the run's wall time.
     report : the report's path.
     interrupted : Ctrl-C stopped it.
+    prepared : {"model" | "song" | "gallery": worker seconds preparing them}.
     """
 
     lines: list[dict] = field(default_factory=list)
@@ -76,6 +77,7 @@ class Outcome:
     seconds: float = 0.0
     report: str = ""
     interrupted: bool = False
+    prepared: dict = field(default_factory=dict)
 
     def count(self, status: str) -> tuple[int, int]:
         """How many jobs and outputs ended so.
@@ -144,6 +146,27 @@ def pending_jobs(plan: Plan, record: Record, found: dict[str, str]) -> list[Pend
     return result
 
 
+def written_names(job: Job, format: str) -> list[str]:
+    """The names an output of a job writes in the output folder: its file, the song beside an
+    export, a point cache's rest mesh.
+
+    Parameters
+    ----------
+    job : the job.
+    format : one of FORMATS.
+
+    Returns
+    -------
+    list of file names, the output's first.
+    """
+    names = [job.stem + FORMATS[format]]
+    if format in ("glb", "pc2", "usd"):
+        names.append(job.stem + os.path.splitext(job.song.path)[1].lower())
+    if format == "pc2":
+        names.append(job.stem + ".obj")
+    return names
+
+
 def check_foreign(plan: Plan, pending: list[Pending], record: Record, force: bool) -> None:
     """InputError, before any work, for a file in the way of an output that no batch wrote
     there (unless `force`).
@@ -156,12 +179,7 @@ def check_foreign(plan: Plan, pending: list[Pending], record: Record, force: boo
     if force:
         return
     for each in pending:
-        names = [each.job.stem + FORMATS[format] for format in each.keys]
-        if set(each.keys) & {"glb", "pc2", "usd"}:
-            names.append(each.job.stem + os.path.splitext(each.job.song.path)[1].lower())
-        if "pc2" in each.keys:
-            names.append(each.job.stem + ".obj")
-        for name in names:
+        for name in {name for format in each.keys for name in written_names(each.job, format)}:
             if os.path.exists(os.path.join(plan.out, name)) and not record.ours(name):
                 raise InputError(f"{os.path.join(plan.out, name)} exists and was not written "
                                  "by a batch", remedy={"force": True})
@@ -197,6 +215,10 @@ def run_plan(plan: Plan, engine_factory, observer, force: bool = False,
         check_foreign(plan, pending, record, force)
         sweep_temporary_files(plan.out, fresh=0.0)  # a killed run's debris
         todo = [each for each in pending if each.keys]
+        # Claimed before any is made: an output a worker finished just before Ctrl-C, not yet
+        # recorded, is the batch's own file for the next run (made again, without --force).
+        record.claim({each.job.stem + FORMATS[format]: written_names(each.job, format)
+                      for each in todo for format in each.keys})
         for each in pending:
             if not each.keys:
                 outcome.lines.append(_line(each, "skipped"))
@@ -250,6 +272,7 @@ class Scheduler:
         self.users: dict = {}  # prepared input → jobs that will use it
         self.failed: dict = {}  # prepared input → its error
         self.known: set = set()  # prepared inputs asked for
+        self.songs: dict = {}  # song path → its first prepared input (the rhythm's)
         self.sequence = 0
 
     def run(self, todo: list[Pending], found: dict[str, str]) -> None:
@@ -287,8 +310,10 @@ class Scheduler:
         song = Input(("song", job.song.path, bands))
         self.prepare(model, "prepare_model", (job.model.path, job.model.kind, plan.k),
                      each.index, [])
-        self.prepare(song, "prepare_song", (job.song.path, found[job.song.path], bands),
-                     each.index, [])
+        first = self.songs.setdefault(job.song.path, song)  # its rhythm, for other bands
+        self.prepare(song, "prepare_song", (job.song.path, found[job.song.path], bands) +
+                     ((first,) if first != song else ()), each.index,
+                     [first] if first != song else [])
         inputs = [model, song]
         if job.item.gallery is not None:
             gallery = Input(("gallery", job.model.path, job.song.path, job.item.gallery))
@@ -323,7 +348,9 @@ class Scheduler:
         what = {"model": "preparing", "song": "analysing", "gallery": "gallery of"}[name[0]]
         label = f"{what} {os.path.basename(name[1])}" + \
             (f" on {os.path.basename(name[2])}" if name[0] == "gallery" else "")
-        task = Task(label, function, arguments, keep=True, extra={"what": name})
+        task = Task(label, function, arguments, keep=True, extra={"what": name, "inputs": inputs})
+        for needed in inputs:
+            self.users[needed] = self.users.get(needed, 0) + 1
         self.schedule(task, (index, 0), inputs)
 
     def schedule(self, task: Task, priority: tuple, inputs: list) -> None:
@@ -370,6 +397,9 @@ class Scheduler:
         quiet : its failure comes from its own input's, said already.
         """
         name = task.extra["what"]
+        if not quiet:
+            self.outcome.prepared[name[0]] = self.outcome.prepared.get(name[0], 0.0) + \
+                (report["seconds"] or 0.0)
         if report["error"]:
             self.failed[name] = report
             if not quiet:
@@ -379,6 +409,7 @@ class Scheduler:
                                       "not made)")
         else:
             self.values[name] = handle
+        self.done_with(task.extra["inputs"])
         for waiting in self.waiting.pop(name, []):
             if report["error"]:
                 self.fail(waiting, report)
@@ -419,6 +450,7 @@ class Scheduler:
             for format, files in report["outputs"].items():
                 self.record.add(each.job.stem + FORMATS[format], each.keys[format], files)
             line = _line(each, "done", seconds=report["seconds"], times=report["times"],
+                         cpu=report["cpu"],
                          attempts=task.attempts, memory=report["memory"], note=report["note"],
                          pid=report["pid"])
         else:
@@ -429,7 +461,17 @@ class Scheduler:
                          memory=report["memory"])
         self.outcome.lines.append(line)
         self.observer.job(line, quiet)
-        for name in task.extra["inputs"]:
+        self.done_with(task.extra["inputs"])
+
+    def done_with(self, inputs: list) -> None:
+        """A task that needed these inputs has ended: those no task needs any more are
+        released.
+
+        Parameters
+        ----------
+        inputs : the prepared inputs the task needed.
+        """
+        for name in inputs:
             self.users[name] -= 1
             if self.users[name] == 0 and name in self.values:
                 self.engine.release(self.values.pop(name))

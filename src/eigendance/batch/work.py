@@ -1,12 +1,12 @@
 """What a batch's workers run, on any engine (docs/design.md#batch).
 
-Four tasks: `prepare_model` (a mesh's basis through the content cache, or a rig's modal
-analysis and modal skin), `prepare_song` (the spectrogram, through the content cache),
+Four tasks: `prepare_model` (a mesh's basis through the content cache, or a rig's modal analysis
+and modal skin), `prepare_song` (the spectrogram and the rhythm, through the content cache),
 `prepare_gallery` (the initial gallery of a model on a song) and `make_outputs` (one job: the
 dance of a model, a song and a mapping, written in each format). Each is called through `task`,
 which gives the worker one thread for numbers and one for drawing (a batch runs one task per
-core), points the content cache where the driver says, and turns every failure into one line,
-so a task never raises: it returns (report, value). The report holds the task's seconds, the
+core), points the content cache where the driver says, and turns every failure into one line, so
+a task never raises: it returns (report, value). The report holds the task's seconds, the
 worker's memory and, for a job, the files written with their sizes and SHA-256.
 """
 
@@ -15,6 +15,7 @@ from __future__ import annotations
 import os
 import resource
 import time
+from dataclasses import replace
 
 import numpy as np
 from threadpoolctl import threadpool_limits
@@ -38,7 +39,7 @@ from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 from eigendance.window import Window
 
-SPECTROGRAM_VERSION = 1  # part of a cached spectrogram's key
+SPECTROGRAM_VERSION = 2  # part of a cached spectrogram's key (2: with the rhythm)
 
 
 def setup_worker() -> None:
@@ -134,29 +135,41 @@ def prepare_model(path: str, kind: str, k: int):
     return rig
 
 
-def prepare_song(path: str, digest: str, bands: int) -> Spectrogram:
-    """A song's spectrogram of `bands` bands, through the content cache (folder
+def prepare_song(path: str, digest: str, bands: int, rhythm_of: Spectrogram | None = None
+                 ) -> Spectrogram:
+    """A song's spectrogram of `bands` bands with its rhythm, through the content cache (folder
     `spectrograms`, keyed by the song's SHA-256 and the analysis).
+
+    The rhythm (onsets, beats, tempo: docs/design.md#rhythm) does not depend on the bands: a
+    song asked at a second band count takes it from `rhythm_of`, its spectrogram at the first,
+    so the rhythm is analysed once per song.
 
     Parameters
     ----------
     path : the audio file.
     digest : its SHA-256 (`content.file_digest`).
     bands : bands.
+    rhythm_of : the same song's spectrogram at another band count, or None (analyse it here).
 
     Returns
     -------
-    Spectrogram.
+    Spectrogram, its `rhythm` set.
     """
     cache = DiskCache("spectrograms")
     entry = cache.path(f"eigendance.spectrogram audio={digest} bands={bands} "
                        f"version={SPECTROGRAM_VERSION}")
     if os.path.isfile(entry):
         try:
-            return Spectrogram.load(entry)
+            spectrogram = Spectrogram.load(entry)
+            if spectrogram.rhythm is not None:
+                return spectrogram
         except InputError:
             pass  # damaged: made again
-    spectrogram = Spectrogram.from_file(path, bands=bands)
+    if rhythm_of is not None and rhythm_of.rhythm is not None:
+        spectrogram = replace(Spectrogram.from_file(path, bands=bands, rhythm=False),
+                              rhythm=rhythm_of.rhythm)
+    else:
+        spectrogram = Spectrogram.from_file(path, bands=bands)
     try:
         spectrogram.save(entry)
     except InputError:
@@ -196,20 +209,32 @@ def make_outputs(job: dict, model, spectrogram: Spectrogram, mapping, index=None
 
     Returns
     -------
-    {"report": {"outputs": {format: {file name: `record.file_entry`}}, "times": {format: s},
-    "note": the window's note or None}}.
+    {"report": {"outputs": {format: {file name: `record.file_entry`}}, "times": {format: wall
+    s}, "cpu": {format: CPU s, the encoder's included}, "note": the window's note or None}}.
     """
     if index is not None:
         mapping = mapping[index]
     dance = _dance(job, model, spectrogram, mapping)
-    outputs, times = {}, {}
+    outputs, times, cpu = {}, {}, {}
     for format in job["formats"]:
-        began = time.perf_counter()
+        began, used = time.perf_counter(), cpu_seconds()
         path = os.path.join(job["out"], job["stem"] + FORMATS[format])
         files = _write(format, path, job, dance, model, spectrogram, mapping)
         outputs[format] = {os.path.basename(file): file_entry(file) for file in files}
-        times[format] = time.perf_counter() - began
-    return {"report": {"outputs": outputs, "times": times, "note": dance.note}}
+        times[format], cpu[format] = time.perf_counter() - began, cpu_seconds() - used
+    return {"report": {"outputs": outputs, "times": times, "cpu": cpu, "note": dance.note}}
+
+
+def cpu_seconds() -> float:
+    """CPU time of this process and of the children it waited for (the video encoder), s.
+
+    Returns
+    -------
+    float.
+    """
+    mine, children = (resource.getrusage(who) for who in (resource.RUSAGE_SELF,
+                                                            resource.RUSAGE_CHILDREN))
+    return mine.ru_utime + mine.ru_stime + children.ru_utime + children.ru_stime
 
 
 def _dance(job: dict, model, spectrogram, mapping):

@@ -16,6 +16,13 @@ from eigendance.cli.options import number, progress_bar
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.cache import cache_folder
 
+# What --help says after the example plan.
+AFTER = """
+A second run makes only what is missing, changed or altered (out/batch-record.jsonl); each
+job's status, times and outputs: out/batch-report.jsonl. Exit status 0; 1 when a job failed on
+its input; 2 on an internal failure; 130 after Ctrl-C (what was finished stays finished).
+"""
+
 
 def add_batch(parser):
     """The options of `eigendance batch` (its --help ends with an example plan).
@@ -25,7 +32,7 @@ def add_batch(parser):
     parser : the command's parser.
     """
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
-    parser.epilog = "An example plan:\n\n" + EXAMPLE
+    parser.epilog = "An example plan:\n\n" + EXAMPLE + AFTER
     parser.add_argument("plan", help="the plan (TOML): models, songs, outputs, gallery or "
                                      "mappings, out (see below)")
     parser.add_argument("-j", "--jobs", type=number(1, 4096, integer=True), default=None,
@@ -67,9 +74,8 @@ class Console:
             return
         print(f"eigendance: {total - skipped} of {total} jobs to make on {engine}",
               file=sys.stderr)
-        self.bar, self.update = progress_bar(total, "jobs", unit="job")
+        self.bar, self.update = progress_bar(total, "jobs", unit="job", initial=skipped)
         self.done = skipped
-        self.update(skipped)
 
     def job(self, line: dict, quiet: bool) -> None:
         """A job ended: its failure said (once), with --verbose its outputs.
@@ -126,6 +132,9 @@ class Console:
             self.bar.close()
 
 
+PREPARED = {"model": "models", "song": "songs", "gallery": "galleries"}  # the summary's words
+
+
 def summary(outcome) -> list[str]:
     """The table printed at the end: jobs and outputs done, up to date, failed (interrupted),
     the time, the throughput and the workers' memory.
@@ -147,8 +156,11 @@ def summary(outcome) -> list[str]:
     done = [line for line in outcome.lines if line["status"] == "done"]
     work = sum(line["seconds"] for line in done)
     rate = f", {len(done) / outcome.seconds * 60:.1f} jobs/min" if done else ""
+    preparing = ", ".join(f"{PREPARED[what]} {format_seconds(seconds)}" for what, seconds in
+                          sorted(outcome.prepared.items()))
     lines.append(f"time: {format_seconds(outcome.seconds)}{rate}; jobs took "
-                 f"{format_seconds(work)} of worker time")
+                 f"{format_seconds(work)} of worker time"
+                 + (f", preparing {preparing}" if preparing else ""))
     memory = [line["memory"] for line in done if line.get("memory")]
     if memory:
         peak = max(entry["peak_rss_mb"] for entry in memory)

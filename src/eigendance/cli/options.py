@@ -110,7 +110,7 @@ def check_outputs(args) -> None:
             refuse_input(path, inputs)
 
 
-def progress_bar(total: int | None, description: str, unit: str = "pair"):
+def progress_bar(total: int | None, description: str, unit: str = "pair", initial: int = 0):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
     Parameters
@@ -119,13 +119,18 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
         count).
     description : the bar's label.
     unit : what is counted.
+    initial : the count done already (not counted in the rate, nor so in the ETA).
 
     Returns
     -------
     (bar, update): the bar (a context manager) and update(done), which moves it to `done`.
     """
+    # No monitor thread (tqdm starts one even for a disabled bar): a single-threaded command
+    # forks its eigensolver's workers; a fork server's children may print a bootstrap traceback
+    # when Ctrl-C tears the pool down while they start.
+    tqdm.monitor_interval = 0
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
-               disable=not sys.stderr.isatty(), leave=False)
+               disable=not sys.stderr.isatty(), leave=False, initial=initial)
 
     def update(done):
         bar.update(max(0, done - bar.n))

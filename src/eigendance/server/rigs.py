@@ -85,5 +85,5 @@ def forget(item: RigItem) -> None:
     ----------
     item : a built-in rig item.
     """
-    item.original = item.rig = item.bundle = None
+    item.original = item.rig = item.bundle = item.look_bundle = None
     item.revision, item.error, item.edited = 0, "", False

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 import threading
 
 from eigendance.errors import InputError
@@ -48,6 +49,7 @@ class Shelf:
         self.budget = budget
         self.lock = threading.RLock()
         self.contents = Contents(self.lock)
+        self.unpacked: dict[str, str] = {}  # a zip's folder → its model file, relative
         self.removed = lambda item: None
 
     def admit(self, item, store: dict, what: str) -> None:
@@ -156,7 +158,8 @@ class Shelf:
         self.discard(getattr(item, "path", ""))
 
     def discard(self, *paths: str) -> None:
-        """Delete files of the library folder that no item uses.
+        """Delete files of the library folder that no item uses (a zip's whole folder once no
+        item uses its model).
 
         Parameters
         ----------
@@ -164,11 +167,22 @@ class Shelf:
         """
         with self.lock:
             for path in paths:
-                if path and os.path.dirname(path) == self.folder and not self._in_use(path):
+                folder = self._unpacked_folder(path)
+                if folder and not self._in_use(os.path.join(folder, self.unpacked[folder])):
+                    shutil.rmtree(folder, ignore_errors=True)
+                    del self.unpacked[folder]
+                elif path and os.path.dirname(path) == self.folder and not self._in_use(path):
                     try:
                         os.unlink(path)
                     except OSError:
                         pass
+
+    def _unpacked_folder(self, path: str) -> str | None:
+        """The zip folder of the library holding `path`, or None."""
+        for folder in self.unpacked:
+            if path.startswith(folder + os.sep):
+                return folder
+        return None
 
     def _store(self, kind: str) -> dict:
         return {"mesh": self.meshes, "song": self.songs, "mapping": self.mappings,
@@ -227,7 +241,7 @@ class Shelf:
         names = dict(names or {})
         for store in (self.meshes, self.songs, self.rigs):
             for item in list(store.values()):
-                if item.path and os.path.dirname(item.path) == self.folder:
+                if item.path and item.path.startswith(self.folder + os.sep):
                     names[item.path] = item.name
         for path, name in names.items():
             text = text.replace(path, name).replace(os.path.basename(path), name)
