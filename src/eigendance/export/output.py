@@ -26,20 +26,25 @@ import sys
 from eigendance.errors import InputError, one_line
 from eigendance.files import locked_temporary, refuse_overwrite, sweep_temporary_files
 
-# The janitor: reads NUL-terminated paths until its stdin closes; an empty record means the
-# owner finished (renamed or removed them), else the owner died and it removes them. Signals
-# from the terminal or the owner's group do not stop it: only the owner's end of the pipe does.
+# The janitor: reads NUL-terminated paths; an empty record means the owner finished (renamed
+# or removed them) and it exits at once (children forked by the owner may hold the pipe open);
+# the end of its stdin without one means the owner died, and it removes them. Signals from the
+# terminal or the owner's group do not stop it: only the owner's end of the pipe does.
 JANITOR = """
 import os, signal, sys
 for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
     signal.signal(number, signal.SIG_IGN)
-records = sys.stdin.buffer.read().split(b"\\0")
-if b"" not in records[:-1]:
-    for record in records[:-1]:
-        try:
-            os.unlink(os.fsdecode(record))
-        except OSError:
-            pass
+data = b""
+while chunk := os.read(0, 65536):
+    data += chunk
+    records = data.split(b"\\0")
+    if b"" in records[:-1]:
+        sys.exit()
+for record in data.split(b"\\0")[:-1]:
+    try:
+        os.unlink(os.fsdecode(record))
+    except OSError:
+        pass
 """
 
 

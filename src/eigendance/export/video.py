@@ -12,6 +12,7 @@ or an encoder failure leaves nothing behind.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import multiprocessing
 import os
@@ -369,7 +370,10 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     with outputs:
         command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
                                  duration if clipped else None)
-        encode(command, frames_in_turn(dances, looks, times, width, height, workers), len(times),
-               progress, path)
+        # closing: an interruption stops the drawing workers here, before `outputs` cleans up
+        # (a generator left to the garbage collector keeps them, and the pipes they inherited).
+        with contextlib.closing(frames_in_turn(dances, looks, times, width, height,
+                                               workers)) as frames:
+            encode(command, frames, len(times), progress, path)
     return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
             "duration": duration}
