@@ -5,7 +5,8 @@ Ctrl-C (SIGINT, which a terminal sends to its whole foreground group) is ignored
 caller alone decides what an interruption stops; on Linux the kernel kills the worker when its
 parent dies (PR_SET_PDEATHSIG), and, elsewhere or as a second guard, a thread polls the caller
 and the parent and exits when either is gone. However the caller ends, no worker is left
-behind.
+behind. Programs we run (ffmpeg) start with `die_with_parent` for the same reason: a killed
+`render` leaves no encoder writing on (docs/design.md#errors).
 """
 
 from __future__ import annotations
@@ -18,6 +19,24 @@ import threading
 import time
 
 POLL_SECONDS = 0.5
+PR_SET_PDEATHSIG = 1
+# Resolved here, in the parent: the child of a fork runs only this C call before exec (a
+# preexec_fn that imported or took a lock could deadlock in a threaded parent such as the server).
+_prctl = ctypes.CDLL(None, use_errno=True).prctl if sys.platform.startswith("linux") else None
+
+
+def die_with_parent() -> None:
+    """subprocess's preexec_fn for a program we run: the kernel kills it (SIGKILL) when the
+    thread that started it dies, however it dies (Linux; elsewhere nothing).
+
+    Example
+    -------
+    >>> import subprocess, sys
+    >>> subprocess.run([sys.executable, "-c", "pass"], preexec_fn=die_with_parent).returncode
+    0
+    """
+    if _prctl is not None:
+        _prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
 
 
 def start_worker(caller: int) -> None:
@@ -29,9 +48,7 @@ def start_worker(caller: int) -> None:
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     parent = os.getppid()
-    if sys.platform.startswith("linux"):  # the kernel kills us when our parent dies
-        PR_SET_PDEATHSIG = 1
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+    die_with_parent()  # the kernel kills us when our parent dies
 
     def watch():  # elsewhere, and as a second guard: poll the caller and the parent
         while True:

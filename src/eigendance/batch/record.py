@@ -167,7 +167,8 @@ class Record:
         """Rewrite the record with one line per output (atomically)."""
         text = "".join(json.dumps(entry, sort_keys=True) + "\n"
                        for entry in self.entries.values())
-        atomic_write(os.path.join(self.out, RECORD), lambda file: file.write(text.encode()))
+        atomic_write(os.path.join(self.out, RECORD), lambda file: file.write(text.encode()),
+                     alone=True)
 
 
 def read_entries(path: str) -> dict[str, dict]:
@@ -214,5 +215,5 @@ def write_report(out: str, lines: list[dict]) -> str:
     """
     path = os.path.join(out, REPORT)
     text = "".join(json.dumps(line, sort_keys=True) + "\n" for line in lines)
-    atomic_write(path, lambda file: file.write(text.encode()))
+    atomic_write(path, lambda file: file.write(text.encode()), alone=True)
     return path

@@ -58,7 +58,7 @@ def save(obj, path: str) -> str:
             file.write(raw)
         file.truncate(end)
 
-    atomic_write(path, write, sync=False)  # read back by this run only
+    atomic_write(path, write, sync=False, alone=True)  # read back by this run only
     return path
 
 

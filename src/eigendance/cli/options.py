@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 
 from tqdm import tqdm
 
 from eigendance import checks
 from eigendance.errors import InputError
+from eigendance.files import refuse_input
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
@@ -64,7 +66,48 @@ def add_output(parser, what: str) -> None:
     what : what the output is, for --help.
     """
     parser.add_argument("-o", "--output", required=True, help=what)
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    parser.add_argument("--force", action="store_true",
+                        help="overwrite an existing output (never one of the inputs)")
+
+
+# The arguments that name files a command writes; every other argument naming a file is an input.
+OUTPUT_ARGUMENTS = ("output", "png", "save_mapping")
+
+
+def input_files(args) -> list[str]:
+    """The existing files the command line names as inputs (never overwritten, `--force` or
+    not: `files.refuse_overwrite`).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    list of paths.
+    """
+    found = []
+    for name, value in vars(args).items():
+        if name in OUTPUT_ARGUMENTS or name.startswith("_"):
+            continue
+        for item in value if isinstance(value, list) else [value]:
+            if isinstance(item, str) and item and os.path.isfile(item):
+                found.append(item)
+    return found
+
+
+def check_outputs(args) -> None:
+    """InputError when an output of the command line is one of its inputs.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    inputs = input_files(args)
+    for name in OUTPUT_ARGUMENTS:
+        path = getattr(args, name, None)
+        if isinstance(path, str) and path:
+            refuse_input(path, inputs)
 
 
 def progress_bar(total: int | None, description: str, unit: str = "pair", initial: int = 0):

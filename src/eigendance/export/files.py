@@ -28,6 +28,7 @@ from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
+from eigendance.limits import check_disk
 from eigendance.music.spectrogram import frame_times
 
 FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
@@ -101,7 +102,7 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
 
 
 def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
-                 fps: float = 30.0, force: bool = False, progress=None) -> dict:
+                 fps: float = 30.0, force: bool = False, progress=None, inputs=()) -> dict:
     """Write `dance` as glTF, point cache or USD, with its song beside it.
 
     Parameters
@@ -110,8 +111,9 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     path : the file to write; its suffix names the format unless `format` does.
     format : "glb", "pc2" or "usd" (None: by suffix).
     fps : samples per second.
-    force : overwrite existing files.
+    force : overwrite existing files (never one of `inputs`).
     progress : optional callable(frames done, frames in all).
+    inputs : the files the export reads (the model, the mapping): never written over.
 
     Returns
     -------
@@ -138,7 +140,10 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
         if progress is not None:
             progress(done, len(times))
 
-    with Outputs(written, force) as outputs:
+    outputs = Outputs(written, force, [*inputs, dance.audio])
+    check_disk(paths["main"], planned_bytes(dance, format, len(times), paths),
+               f"{os.path.basename(paths['main'])}: {len(times)} frames of {dance.n} vertices")
+    with outputs:
         main = outputs.temporary(paths["main"])
         difference = _write(format, dance, times, fps, main, song_name, step, textures)
         if format == "pc2":
@@ -153,6 +158,44 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     return {"format": format, "files": written, "frames": len(times), "fps": fps,
             "bytes": size, "point_cache_bytes": pc2_size(dance.n, len(times)),
             "skinning_difference": difference, "diagonal": dance.diagonal}
+
+
+# Bytes per vertex and frame of a .usda (text: three numbers of about ten characters each).
+USDA_BYTES = 36
+
+
+def planned_bytes(dance: Dance, format: str, frames: int, paths: dict) -> float:
+    """About how many bytes an export writes (checked against the free disk before it starts).
+
+    Point cache: exactly its size, plus the rest OBJ (about 40 bytes a vertex and 30 a
+    triangle). USD: 12 bytes a vertex and frame (.usdc, .usd) or `USDA_BYTES` (.usda). glb: the
+    morph targets (12 bytes a vertex and driven harmonic, 4 a frame and harmonic) or the skin's
+    animation (28 bytes a body and frame). Plus the song when it is written beside.
+
+    Parameters
+    ----------
+    dance : the dance.
+    format : "glb", "pc2" or "usd".
+    frames : how many frames.
+    paths : `companion_paths`.
+
+    Returns
+    -------
+    float, bytes.
+    """
+    n = dance.n
+    if format == "pc2":
+        planned = pc2_size(n, frames) + 40.0 * n + 30.0 * len(dance.faces)
+    elif format == "usd":
+        per_vertex = USDA_BYTES if suffix_of(paths["main"]) == ".usda" else 12
+        planned = float(per_vertex) * n * frames
+    elif isinstance(dance, RigDance):
+        planned = 28.0 * len(dance.body_names) * frames
+    else:
+        planned = 12.0 * n * 64 + 4.0 * frames * 64  # at most 64 driven harmonics
+    if paths.get("song") and dance.audio is not None and os.path.isfile(dance.audio):
+        planned += os.path.getsize(dance.audio)
+    return planned
 
 
 def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: str | None,
