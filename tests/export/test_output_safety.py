@@ -133,7 +133,8 @@ def command_name(pid: int) -> str:
 def long_song(tmp_path_factory):
     path = tmp_path_factory.mktemp("song") / "long.wav"
     rate = 8000
-    soundfile.write(path, 0.5 * np.sin(2 * np.pi * 440 * np.arange(60 * rate) / rate), rate)
+    # 3 minutes: a quiet host writes a 60-s point cache at 240 fps (88 MB) before a kill lands.
+    soundfile.write(path, 0.5 * np.sin(2 * np.pi * 440 * np.arange(180 * rate) / rate), rate)
     return path
 
 
@@ -159,7 +160,8 @@ def test_a_killed_render_or_export_leaves_no_file_and_no_process(tmp_path, knigh
             break
         time.sleep(0.02)
     assert process.poll() is None, process.stderr.read().decode()
-    time.sleep(0.3)
+    if command == "render":
+        time.sleep(0.3)  # frames reach the encoder
     children |= descendants(process.pid)
     process.send_signal(kill)
     process.wait(timeout=60)
