@@ -151,6 +151,15 @@ def add_basis(parser):
     parser.add_argument("--solver", choices=SOLVERS, default="bands",
                         help="bands (default, spectrum slicing) or eigsh (naive baseline)")
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
+    construction = parser.add_mutually_exclusive_group()
+    construction.add_argument("--reduced", dest="construction", action="store_const",
+                              const="reduced", help="the reduced basis (samples and sparse "
+                              "interpolation: large meshes); default: exact when it fits the "
+                              "time and memory rule, else reduced")
+    construction.add_argument("--exact", dest="construction", action="store_const",
+                              const="exact", help="the exact basis, whatever the mesh's size")
+    parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
+                        help="samples of a reduced basis (default 24·k, at least 2000)")
     add_output(parser, "basis file to write (.npz)")
 
 
@@ -164,9 +173,12 @@ def run_basis(args) -> None:
     with bar:
         basis = HarmonicBasis.from_mesh(mesh, args.k, laplacian=args.laplacian,
                                         solver=args.solver, cache=not args.no_cache,
-                                        progress=update)
+                                        progress=update,
+                                        construction=args.construction or "auto",
+                                        samples=args.samples)
     basis.save(args.output)
-    print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics, "
+    how = "exact" if basis.reduced is None else f"reduced, {basis.reduced.count} samples"
+    print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics ({how}), "
           f"largest eigenvalue {basis.eigenvalues[-1]:.6g}, "
           f"{time.perf_counter() - start:.1f} s")
 
@@ -696,7 +708,7 @@ def hint(remedy: dict) -> str:
     """'; try --solver eigsh' for {"solver": "eigsh"} ('' for no remedy)."""
     if remedy.get("force"):
         return "; pass --force to overwrite it"
-    flags = [f"{FLAGS.get(name, '--' + name.replace('_', '-'))} {value}"
+    flags = [FLAGS.get(name, '--' + name.replace('_', '-')) + ("" if value is True else f" {value}")
              for name, value in remedy.items()]
     return f"; try {' '.join(flags)}" if flags else ""
 

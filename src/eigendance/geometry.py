@@ -35,11 +35,39 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     if tolerance > 0:
         step = tolerance * (bounding_box_diagonal(vertices) or 1.0)
         keys = np.round(vertices / step).astype(np.int64)
-    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    first, inverse = unique_rows(keys)
     order = np.argsort(first)  # unique rows come sorted by value: put them in input order
     rank = np.empty_like(order)
     rank[order] = np.arange(len(order))
     return first[order].astype(np.int64), rank[inverse.reshape(-1)].astype(np.int64)
+
+
+def unique_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct rows of a 2-D array, as np.unique(rows, axis=0, return_index=True,
+    return_inverse=True) finds them (rows in lexicographic order), several times faster on
+    millions of rows: one lexsort of the columns instead of a sort of row records.
+
+    Returns
+    -------
+    first : (u,) int64, the index of each distinct row's first occurrence.
+    inverse : (r,) int64, the distinct row of each row: rows == rows[first][inverse].
+
+    Example
+    -------
+    >>> first, inverse = unique_rows(np.array([[2, 1], [0, 5], [2, 1]]))
+    >>> first.tolist(), inverse.tolist()
+    ([1, 0], [1, 0, 1])
+    """
+    rows = np.asarray(rows)
+    if len(rows) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    order = np.lexsort(rows.T[::-1])  # stable: equal rows keep their input order
+    ordered = rows[order]
+    starts = np.ones(len(rows), dtype=bool)
+    starts[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+    inverse = np.empty(len(rows), dtype=np.int64)
+    inverse[order] = np.cumsum(starts) - 1
+    return order[starts].astype(np.int64), inverse
 
 
 def bounding_box_diagonal(vertices: np.ndarray) -> float:
@@ -50,8 +78,14 @@ def bounding_box_diagonal(vertices: np.ndarray) -> float:
 
 def face_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """(m, 3) normals of the triangles, of length twice their area (not unit)."""
-    corners = np.asarray(vertices, dtype=np.float64)[np.asarray(faces, dtype=np.int64)]
-    return np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64)
+    first = vertices[faces[:, 0]]
+    b, c = vertices[faces[:, 1]] - first, vertices[faces[:, 2]] - first
+    # the cross product by components: np.cross on millions of rows is 3× slower
+    return np.column_stack([b[:, 1] * c[:, 2] - b[:, 2] * c[:, 1],
+                            b[:, 2] * c[:, 0] - b[:, 0] * c[:, 2],
+                            b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0]])
 
 
 def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:

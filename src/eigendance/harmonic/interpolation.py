@@ -26,7 +26,7 @@ import scipy.sparse as sp
 MOST = 8  # samples per vertex: two sets of four glTF joints; eight gathers in the shader
 QUANTUM = 2.0**-11  # weights are multiples of this (exact in float16)
 LOCALITY = 2.0  # γ: β = γ / h², the weight of a sample one spacing away is ≈ e^-γ at λ = 0
-NEWTON_STEPS = 12
+NEWTON_STEPS = 6  # Newton converges in 3–4 steps (benchmarks/bench_reduced.py)
 CHUNK = 1 << 16  # vertices per block of the weight computation (bounds its memory)
 
 
@@ -159,27 +159,46 @@ def _nearest_candidates(candidates, points, sample_positions):
 
 
 def _maxent(offsets, squared, normals, beta: float, spacing: float) -> np.ndarray:
-    """Weights (c, MOST) ∝ exp(−β|d|² + λ·d), λ such that Σ w d is normal to the surface."""
+    """Weights (c, MOST) ∝ exp(−β|d|² + λ·d), λ such that Σ w d is normal to the surface.
+
+    The offsets are written in a tangent frame (two coordinates), where λ's Newton step is a
+    2 × 2 solve in closed form.
+    """
     present = np.isfinite(squared)
-    tangent = offsets - np.einsum("ijk,ik->ij", offsets, normals)[:, :, None] * normals[:, None]
+    first, second = _tangent_frame(normals)
+    x = np.einsum("ijk,ik->ij", offsets, first)
+    y = np.einsum("ijk,ik->ij", offsets, second)
     prior = np.where(present, -beta * np.where(present, squared, 0.0), -np.inf)
-    lam = np.zeros((len(offsets), 3))
-    normal_part = normals[:, :, None] * normals[:, None, :]
+    lam_x = np.zeros((len(offsets), 1))
+    lam_y = np.zeros((len(offsets), 1))
     for _ in range(NEWTON_STEPS):
-        w = _softmax(prior + np.einsum("ijk,ik->ij", tangent, lam))
-        r = np.einsum("ij,ijk->ik", w, tangent)  # Σ w d: zero at the solution
-        hessian = np.einsum("ij,ijk,ijl->ikl", w, tangent, tangent) - r[:, :, None] * r[:, None]
-        scale = np.trace(hessian, axis1=1, axis2=2)[:, None, None] + 1e-300
-        hessian = hessian + scale * (normal_part + 1e-9 * np.eye(3))  # λ stays tangential
-        step = -np.linalg.solve(hessian, r[:, :, None])[:, :, 0]
+        w = _softmax(prior + lam_x * x + lam_y * y)
+        mean_x, mean_y = (w * x).sum(axis=1, keepdims=True), (w * y).sum(axis=1, keepdims=True)
+        xx = (w * x * x).sum(axis=1, keepdims=True) - mean_x * mean_x
+        xy = (w * x * y).sum(axis=1, keepdims=True) - mean_x * mean_y
+        yy = (w * y * y).sum(axis=1, keepdims=True) - mean_y * mean_y
+        determinant = xx * yy - xy * xy
+        usable = determinant > 1e-12 * (xx + yy) ** 2 + 1e-300  # else the samples are in a line
+        determinant = np.where(usable, determinant, 1.0)
+        step_x = np.where(usable, -(yy * mean_x - xy * mean_y) / determinant, 0.0)
+        step_y = np.where(usable, -(xx * mean_y - xy * mean_x) / determinant, 0.0)
         # A vertex outside its samples' hull (a boundary) has no solution: λ grows slowly.
-        size = np.linalg.norm(step, axis=1, keepdims=True) * spacing
-        lam += step * np.minimum(1.0, 4.0 / np.maximum(size, 1e-300))
-    w = _softmax(prior + np.einsum("ijk,ik->ij", tangent, lam))
-    fallback = ~np.isfinite(w).all(axis=1)
-    if fallback.any():  # never expected: the plain Gaussian weights
-        w[fallback] = _softmax(prior[fallback])
-    return w
+        size = np.hypot(step_x, step_y) * spacing
+        damping = np.minimum(1.0, 4.0 / np.maximum(size, 1e-300))
+        lam_x += step_x * damping
+        lam_y += step_y * damping
+    return _softmax(prior + lam_x * x + lam_y * y)
+
+
+def _tangent_frame(normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Two unit vectors perpendicular to each normal (the x and y axes where it is zero)."""
+    helper = np.where(np.abs(normals[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+    first = np.cross(normals, helper)
+    length = np.linalg.norm(first, axis=1, keepdims=True)
+    undefined = length[:, 0] < 1e-12
+    first = np.where(undefined[:, None], [[1.0, 0.0, 0.0]], first / np.maximum(length, 1e-300))
+    second = np.where(undefined[:, None], [[0.0, 1.0, 0.0]], np.cross(normals, first))
+    return first, second
 
 
 def _softmax(energy: np.ndarray) -> np.ndarray:
