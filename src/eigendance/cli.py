@@ -151,6 +151,14 @@ def add_basis(parser):
     parser.add_argument("--solver", choices=SOLVERS, default="bands",
                         help="bands (default, spectrum slicing) or eigsh (naive baseline)")
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
+    add_construction(parser)
+    parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
+                        help="samples of a reduced basis (default 24·k, at least 2000)")
+    add_output(parser, "basis file to write (.npz)")
+
+
+def add_construction(parser) -> None:
+    """--reduced / --exact (docs/design.md#reduced-basis); args.construction None: the rule."""
     construction = parser.add_mutually_exclusive_group()
     construction.add_argument("--reduced", dest="construction", action="store_const",
                               const="reduced", help="the reduced basis (samples and sparse "
@@ -158,9 +166,6 @@ def add_basis(parser):
                               "time and memory rule, else reduced")
     construction.add_argument("--exact", dest="construction", action="store_const",
                               const="exact", help="the exact basis, whatever the mesh's size")
-    parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
-                        help="samples of a reduced basis (default 24·k, at least 2000)")
-    add_output(parser, "basis file to write (.npz)")
 
 
 def run_basis(args) -> None:
@@ -196,6 +201,7 @@ def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--max-memory-mb", type=number(16, 1 << 22, integer=True), default=4096,
                         help="memory the library's meshes, songs and rigs may keep, MiB; the "
                              "least recently used are removed beyond it (default 4096)")
+    add_construction(parser)
 
 
 def add_serve(parser):
@@ -227,7 +233,8 @@ def serve(args, paths, announce: str) -> None:
     if warning := exposure_warning(args.host):
         print(warning, file=sys.stderr)
     with library_session(k=args.k, max_upload_bytes=args.max_upload_mb << 20,
-                         memory_budget=args.max_memory_mb << 20) as library:
+                         memory_budget=args.max_memory_mb << 20,
+                         construction=args.construction or "auto") as library:
         terminal_progress(library)
         for path in paths():
             library.add_path(path)

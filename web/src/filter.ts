@@ -1,6 +1,7 @@
 // The filter of docs/design.md#mapping, evaluated per frame in the browser; the same numbers as the Python
 // reference (eigendance.mapping / eigendance.animate).
 import type { Basis, Spectrum } from "./bundle";
+import { deformReducedCPU } from "./reduced";
 
 export type Shading = "smooth" | "flat" | "wireframe";
 
@@ -154,6 +155,7 @@ export function shaderWeights(basis: Basis, phi: ArrayLike<number>, out?: Float3
  * vertex, or of `vertices` only (packed in their order). */
 export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array,
                           vertices?: Int32Array): Float32Array {
+  if (basis.reduced) return deformReducedCPU(basis, weights, out, vertices);
   const count = vertices ? vertices.length : basis.n;
   const positions = out ?? new Float32Array(count * 3);
   const U = basis.harmonics, W = 4 * basis.k4;

@@ -18,13 +18,14 @@ vec4 harmonicTexel(int v, int j) {
 `;
 
 /** Surface pass, vertex: the deformed position of vertex `vid` (from the positions pass's float
- * target, or the `displaced` attribute on the CPU path), and the harmonics explorer's value. */
+ * target, or the `displaced` attribute on the CPU path; a reduced basis (REDUCED, after
+ * reduced.ts GATHER) gathers its samples' displacements), and the harmonics explorer's value. */
 export const SURFACE_VERTEX = /* glsl */ `
 uniform int colorHarmonic;
 uniform float colorScale;
 #ifdef CPU_PATH
 in vec3 displaced;
-#else
+#elif !defined(REDUCED)
 uniform sampler2D deformed;
 uniform int deformedWidth;
 #endif
@@ -35,12 +36,18 @@ void main() {
   int v = int(vid + 0.5);
 #ifdef CPU_PATH
   vec3 p = displaced;
+#elif defined(REDUCED)
+  vec3 p = position + gatherDisplacement();
 #else
   vec3 p = texelFetch(deformed, ivec2(v % deformedWidth, v / deformedWidth), 0).xyz;
 #endif
   vHarmonic = 0.0;
   if (colorHarmonic >= 0) {
+#ifdef REDUCED
+    vec4 u = gatherHarmonicTexel(colorHarmonic / 4);
+#else
     vec4 u = harmonicTexel(v, colorHarmonic / 4);
+#endif
     int q = colorHarmonic - 4 * (colorHarmonic / 4);
     vHarmonic = (q == 0 ? u.x : q == 1 ? u.y : q == 2 ? u.z : u.w) * colorScale;
   }

@@ -2,12 +2,15 @@
 
 Layout (little-endian): b"EDB1", uint32 header length H, H bytes of UTF-8 JSON padded with
 spaces to a multiple of 4, then the arrays, each starting at a multiple of 4 bytes. The header is
-``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32", "shape": [...],
-"offset": bytes from the start of the data}}}``.
+``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32"|"uint16", "shape":
+[...], "offset": bytes from the start of the data}}}``.
 
 Basis bundle (`basis_bundle`): vertices (n,3) f32 normalised, faces (m,3) u32, eigenvalues (k,)
 f32, coefficients (k,3) f32 and `harmonics` (n, 4·⌈k/4⌉) f32 (or f16 on request) — the eigenvectors
-packed four harmonics per RGBA texel (zero padded), ready for a float texture.
+packed four harmonics per RGBA texel (zero padded), ready for a float texture. A reduced basis
+(docs/design.md#reduced-basis; meta `construction` "reduced", `samples` m) sends instead
+`coarse` (m, 4·⌈k/4⌉) f32 (always: it is small), U_r packed the same way, and P:
+`weights` (n, 8) f16 (exact: multiples of 2⁻¹¹) and `indices` (n, 8) u16 (u32 when m > 65536).
 Spectrogram bundle (`spectrogram_bundle`): times (T,) f32, values (T,B) f32, band_edges (B+1,)
 f32, meta rate/sample_rate/duration.
 Rig bundle (`rig_bundle`): what the page needs to play a rig — modal skinning packed for float
@@ -26,17 +29,22 @@ from eigendance.modal.palette import default_phases, mode_reach, single_mode_amp
 from eigendance.modal.skeleton import CONSTRAINED_ROWS
 
 MAGIC = b"EDB1"
-DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2")}
+DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
+          "uint16": np.dtype("<u2")}
 
 
 def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) -> bytes:
-    """Bundle the arrays: integers as uint32, floats as float32 (float16 for names in `half`)."""
+    """Bundle the arrays: integers as uint32 (uint16 arrays stay uint16), floats as float32
+    (float16 arrays, and names in `half`, as float16)."""
     entries, blobs, offset = {}, [], 0
     for name, array in arrays.items():
-        if np.issubdtype(np.asarray(array).dtype, np.integer):
+        kind = np.asarray(array).dtype
+        if kind == np.uint16:
+            dtype = "uint16"
+        elif np.issubdtype(kind, np.integer):
             dtype = "uint32"
         else:
-            dtype = "float16" if name in half else "float32"
+            dtype = "float16" if name in half or kind == np.float16 else "float32"
         data = memoryview(np.ascontiguousarray(array, dtype=DTYPES[dtype]).reshape(-1)).cast("B")
         entries[name] = {"dtype": dtype, "shape": list(np.shape(array)), "offset": offset}
         padding = (-len(data)) % 4
@@ -72,14 +80,24 @@ def packed_harmonics(eigenvectors: np.ndarray) -> np.ndarray:
 
 def basis_bundle(basis, name: str = "mesh", half: bool = False) -> bytes:
     """The basis for the web app; `half` sends the harmonics as float16 (half the bytes,
-    ≈ 1e-3 relative rounding of each eigenvector entry)."""
+    ≈ 1e-3 relative rounding of each eigenvector entry). A reduced basis sends its coarse
+    basis and interpolation (module docstring) instead of the harmonics."""
     meta = {"kind": "basis", "name": name, "n": basis.n, "k": basis.k,
             "faces": int(len(basis.faces)), "laplacian": basis.laplacian,
-            "scale": float(basis.scale), "center": [float(c) for c in basis.center]}
-    return pack(meta, {
-        "vertices": basis.vertices, "faces": basis.faces.astype(np.uint32),
-        "eigenvalues": basis.eigenvalues, "coefficients": basis.coefficients,
-        "harmonics": packed_harmonics(basis.eigenvectors)}, half=("harmonics",) if half else ())
+            "scale": float(basis.scale), "center": [float(c) for c in basis.center],
+            "construction": basis.construction}
+    arrays = {"vertices": basis.vertices, "faces": basis.faces.astype(np.uint32),
+              "eigenvalues": basis.eigenvalues, "coefficients": basis.coefficients}
+    if basis.reduced is None:
+        arrays["harmonics"] = packed_harmonics(basis.eigenvectors)
+        return pack(meta, arrays, half=("harmonics",) if half else ())
+    reduced = basis.reduced
+    meta["samples"] = reduced.count
+    indices = reduced.interpolation.indices
+    arrays.update(coarse=packed_harmonics(reduced.coarse),
+                  weights=reduced.interpolation.weights.astype(np.float16),  # exact
+                  indices=indices.astype(np.uint16 if reduced.count <= 1 << 16 else np.uint32))
+    return pack(meta, arrays)  # `half` does not apply: the coarse basis is small
 
 
 def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:

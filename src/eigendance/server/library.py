@@ -39,8 +39,9 @@ from dataclasses import dataclass, field
 
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import check_readable, kind_of, read_json, suffix_of
-from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
+from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key, choose_construction
 from eigendance.harmonic.mesh import load_mesh
+from eigendance.harmonic.reduced import reduced_key, sample_count
 from eigendance.limits import size_text
 from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.rig import Rig
@@ -58,6 +59,9 @@ STORED_NAME = re.compile(r"(upload-[0-9a-f]{6,}|\.incoming-\w+)(\.\w+)?")
 # and the float16 bundle the page may ask for.
 BYTES_PER_ENTRY = 8 + 4 + 2
 BYTES_PER_VERTEX = 256  # vertices, mass, faces (≈ 2 per vertex) in the basis and the bundles
+# A reduced basis (docs/design.md#reduced-basis) keeps per vertex its interpolation (indices,
+# weights, P as a matrix, the bundle's float16 and uint16 copies) instead of k entries.
+REDUCED_BYTES_PER_VERTEX = 320
 # What a mapping sent to the server may hold: the bands of a spectrogram (`eigendance spectrum
 # --bands`) and the harmonics of a basis (-k) at most, so that breeding answers a bounded size.
 MAX_BANDS, MAX_HARMONICS = 1024, 20000
@@ -139,15 +143,19 @@ class MeshItem:
     rig: str | None = None  # id of the rig item of the same file (a glTF with a skin)
     content: tuple | None = None  # the key of its content in Library.contents
     removed: bool = False
+    construction: str = "exact"  # "exact" or "reduced" (docs/design.md#reduced-basis)
 
     def as_json(self) -> dict:
         return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
-                "ready": self.basis is not None,
+                "ready": self.basis is not None, "construction": self.construction,
                 "job": self.job.as_json() if self.job else None, "rig": self.rig}
 
     def held(self) -> int:
         """Bytes kept: the basis and bundles once solved, the planned ones until then."""
         if self.basis is None:
+            if self.construction == "reduced":
+                return self.vertices * (REDUCED_BYTES_PER_VERTEX + BYTES_PER_VERTEX) + \
+                    sample_count(self.vertices, self.k) * self.k * BYTES_PER_ENTRY
             return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX)
         return footprint(self.basis, self.bundle, self.half_bundle)
 
@@ -231,10 +239,12 @@ class Library:
     """
 
     def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
-                 memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None):
+                 memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None,
+                 construction: str = "auto"):
         self.folder = folder
         os.makedirs(folder, exist_ok=True)
         self.k = k
+        self.construction = construction  # of every basis: "auto", "exact" or "reduced"
         self.max_upload_bytes = max_upload_bytes
         self.spectrogram_options = spectrogram_options or {}
         self.meshes: dict[str, MeshItem] = {}
@@ -336,7 +346,10 @@ class Library:
         mesh = dataclasses.replace(load_mesh(path), name=name)  # EigendanceError if unreadable
         laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
-        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content)
+        construction = choose_construction(mesh.n, k) if self.construction == "auto" \
+            else self.construction
+        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
+                        construction=construction)
         item.job = Job(new_id(), "basis", k, name)
         self._admit(item, self.meshes, f"{name}: a basis of {k} harmonics of "
                                       f"{len(mesh.vertices)} vertices")
@@ -419,7 +432,10 @@ class Library:
         if item.removed or self.stopping.is_set():
             job.update(state="error", message=f"{item.name}: removed from the library")
             return
-        job.cached = os.path.isfile(basis_cache().path(basis_key(mesh, item.k, laplacian)))
+        key = basis_key(mesh, item.k, laplacian)
+        if item.construction == "reduced":
+            key = reduced_key(key, sample_count(mesh.n, item.k))
+        job.cached = os.path.isfile(basis_cache().path(key))
         self.solving, self.solve_children = item, set(multiprocessing.active_children())
         job.update(state="running")
         self._tell(job)
@@ -431,7 +447,8 @@ class Library:
             self._tell(job)
 
         try:
-            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress)
+            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress,
+                                            construction=item.construction)
             if item.removed or self.stopping.is_set():
                 raise Stopped
             item.bundle = basis_bundle(basis, item.name)

@@ -1,0 +1,182 @@
+"""The reduced basis against the exact one (issue 19, docs/design.md#reduced-basis).
+
+accuracy: on subdivided scans (≥ 150k vertices, detail noise, benchmarks/big_meshes.py) where
+  both solvers run, k = 300: the median relative eigenvalue error and, for each item of the
+  initial gallery (8 items, calibrated on the exact basis) on a real song, the RMS displacement
+  error of the reduced dance relative to the item's RMS motion, beside the sample count. With
+  --sensitivity, the same errors between the exact bases of two draws of the detail noise (the
+  same shape, detail moved by a tenth of an edge): how much the exact dance itself moves.
+speed: a 1.15 M-vertex mesh (fertility ×256 with detail) at k = 300: wall-clock and peak memory
+  of the reduced basis beside the exact solver's at the largest size it reaches here (armadillo
+  ×16, 692k vertices), and the Laplacian's assembly (libigl) beside robust-laplacian's.
+
+Every solve runs in a fresh process (peak memory is its own; the band workers' is reported by
+the kernel for the children). Run: .venv/bin/python benchmarks/bench_reduced.py [accuracy]
+[speed] [--meshes armadillo-173k ...] [--sensitivity] [--skip-exact-speed]
+"""
+
+from __future__ import annotations
+
+import argparse
+import multiprocessing
+import os
+import resource
+import subprocess
+import tempfile
+import time
+from queue import Empty
+
+import numpy as np
+
+from big_meshes import detailed
+from shared_data import shared_path
+
+ACCURACY_MESHES = ("armadillo-173k", "camelhead-182k", "ogre-248k")
+SONG = shared_path("audio", "kevin_macleod_vibe_ace.ogg")
+K = 300
+FRAMES = 600  # evenly spaced frames of the song where the dances are compared
+LOW = 100  # items whose main harmonics lie below this must be within 3%, all within 10%
+
+
+def load() -> str:
+    return open("/proc/loadavg").read().split()[0]
+
+
+def solve(name: str, seed: int, construction: str, k: int, output: str | None, queue):
+    """In a fresh process: the basis of a benchmark mesh; puts (seconds, peak GB, details)."""
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.harmonic.mesh import Mesh
+
+    vertices, faces = detailed(name, seed)
+    start = time.perf_counter()
+    mesh = Mesh.from_arrays(vertices, faces, name=name)
+    cleaned = time.perf_counter() - start
+    start = time.perf_counter()
+    basis = HarmonicBasis.from_mesh(mesh, k, cache=False, construction=construction)
+    seconds = time.perf_counter() - start
+    peak = max(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss,
+               resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss) / 2**20
+    if output:
+        basis.save(output)
+    queue.put((seconds, peak, {"n": basis.n, "clean-up s": cleaned,
+                               "samples": basis.reduced.count if basis.reduced else 0}))
+
+
+def in_process(*arguments):
+    context = multiprocessing.get_context("fork")
+    queue = context.Queue()
+    process = context.Process(target=solve, args=(*arguments, queue))
+    process.start()
+    while True:  # a solve that dies (the OOM killer) must not hang the run
+        try:
+            result = queue.get(timeout=1)
+            break
+        except Empty:
+            if not process.is_alive():
+                raise SystemExit(f"the solve {arguments[:3]} failed "
+                                 f"(exit {process.exitcode})") from None
+    process.join()
+    return result
+
+
+def item_errors(reference, other, song, items):
+    """Per item: (main harmonic range, RMS(d_other − d_reference) / RMS(d_reference))."""
+    from eigendance.music.gallery import gallery_motion
+
+    times = np.linspace(0, song.duration, FRAMES)
+    rows = []
+    for item, motion in zip(items, gallery_motion(reference, song, items), strict=True):
+        phi = item.filter(song.smoothed(item.smoothing).at(times), reference.k)
+        error = total = 0.0
+        for chunk in range(0, FRAMES, 50):  # bounded memory: 50 frames of n × 3 at a time
+            moved = reference.displacements(phi[chunk:chunk + 50])
+            error += float(((other.displacements(phi[chunk:chunk + 50]) - moved) ** 2).sum())
+            total += float((moved ** 2).sum())
+        rows.append(((motion.lowest, motion.highest), np.sqrt(error / total)))
+    return rows
+
+
+def accuracy(meshes, sensitivity: bool) -> None:
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.music.gallery import initial_gallery
+    from eigendance.music.spectrogram import Spectrogram
+
+    song = Spectrogram.from_file(SONG)
+    print(f"song: {os.path.basename(SONG)}, {song.duration:.0f} s; k = {K}; errors over "
+          f"{FRAMES} frames; load {load()}")
+    for name in meshes:
+        with tempfile.TemporaryDirectory() as folder:
+            paths = {kind: os.path.join(folder, f"{kind}.npz") for kind in ("exact", "reduced",
+                                                                             "noise")}
+            timing = {kind: in_process(name, 0, kind, K, paths[kind])
+                      for kind in ("exact", "reduced")}
+            if sensitivity:
+                in_process(name, 1, "exact", K, paths["noise"])
+            exact, reduced = (HarmonicBasis.load(paths[kind]) for kind in ("exact", "reduced"))
+            relative = np.abs(reduced.eigenvalues[1:] - exact.eigenvalues[1:]) / \
+                np.maximum(exact.eigenvalues[1:], 1e-12)
+            items = initial_gallery(exact, song, 8)
+            errors = item_errors(exact, reduced, song, items)
+            noise = item_errors(exact, HarmonicBasis.load(paths["noise"]), song, items) \
+                if sensitivity else [(None, np.nan)] * len(items)
+        samples = timing["reduced"][2]["samples"]
+        print(f"\n{name}: n = {exact.n}, samples m = {samples}; exact {timing['exact'][0]:.1f} s "
+              f"{timing['exact'][1]:.2f} GB, reduced {timing['reduced'][0]:.1f} s "
+              f"{timing['reduced'][1]:.2f} GB (load {load()})")
+        print(f"  eigenvalues: median relative error {np.median(relative):.2%}, largest "
+              f"{relative.max():.2%}; every λ̃ ≥ λ: {bool(np.all(relative >= -1e-9))}")
+        print(f"  {'item':>4} {'main harmonics':>15} {'error':>8} {'bound':>6} "
+              f"{'exact vs exact, other noise':>28}")
+        for number, ((span, error), (_, other)) in enumerate(zip(errors, noise, strict=True), 1):
+            bound = 0.03 if span[1] < LOW else 0.10
+            mark = "ok" if error <= bound else "OVER"
+            print(f"  {number:>4} {f'{span[0]}–{span[1]}':>15} {error:>8.2%} {bound:>5.0%} "
+                  f"{mark:>4} {other:>22.2%}")
+
+
+def laplacian_profile(name: str) -> None:
+    from eigendance.harmonic.laplacian import laplacian
+    from eigendance.harmonic.mesh import Mesh
+
+    mesh = Mesh.from_arrays(*detailed(name))
+    for kind in ("cotan", "robust"):
+        start = time.perf_counter()
+        laplacian(mesh.vertices, mesh.faces, kind)
+        library = "libigl" if kind == "cotan" else "robust-laplacian"
+        print(f"  Laplacian and mass, {kind:>6} ({library}): "
+              f"{time.perf_counter() - start:.1f} s (load {load()})")
+
+
+def speed(skip_exact: bool) -> None:
+    print(f"uptime: {subprocess.run(['uptime'], capture_output=True, text=True).stdout.strip()}")
+    seconds, peak, info = in_process("fertility-1.15M", 0, "reduced", K, None)
+    print(f"reduced, fertility ×256 with detail, n = {info['n']}, k = {K}, m = {info['samples']}: "
+          f"{seconds:.1f} s, peak {peak:.2f} GB (clean-up of the arrays before it: "
+          f"{info['clean-up s']:.1f} s; load {load()})")
+    if not skip_exact:
+        seconds, peak, info = in_process("armadillo-692k", 0, "exact", K, None)
+        print(f"exact, armadillo ×16 with detail, n = {info['n']}, k = {K}: {seconds:.1f} s, "
+              f"peak {peak:.2f} GB (load {load()})")
+        seconds, peak, info = in_process("armadillo-692k", 0, "reduced", K, None)
+        print(f"reduced, the same mesh: {seconds:.1f} s, peak {peak:.2f} GB (load {load()})")
+    laplacian_profile("fertility-1.15M")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("parts", nargs="*", default=["accuracy", "speed"],
+                        choices=["accuracy", "speed"])
+    parser.add_argument("--meshes", nargs="+", default=list(ACCURACY_MESHES))
+    parser.add_argument("--sensitivity", action="store_true",
+                        help="also the exact basis of another noise draw (one more exact solve)")
+    parser.add_argument("--skip-exact-speed", action="store_true",
+                        help="skip the exact solve at 692k vertices (minutes, ~5 GB)")
+    args = parser.parse_args()
+    if "accuracy" in args.parts:
+        accuracy(args.meshes, args.sensitivity)
+    if "speed" in args.parts:
+        speed(args.skip_exact_speed)
+
+
+if __name__ == "__main__":
+    main()
