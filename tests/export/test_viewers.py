@@ -29,11 +29,12 @@ INSTALL = "scripts/web.sh install"
 
 
 @pytest.fixture(scope="module")
-def glbs(tmp_path_factory, harmonic, chain_lbs, figure_modal, fox_lbs):
-    """Every kind of glb the exporter writes: morph targets, and skins of built-in and glTF
-    rigs (linear blend and modal skinning)."""
+def glbs(tmp_path_factory, harmonic, reduced_harmonic, chain_lbs, figure_modal, fox_lbs):
+    """Every kind of glb the exporter writes: morph targets, a reduced basis's skin on its
+    samples, and skins of built-in and glTF rigs (linear blend and modal skinning)."""
     folder = tmp_path_factory.mktemp("glbs")
-    dances = {"sphere": harmonic, "chain": chain_lbs, "figure": figure_modal, "fox": fox_lbs}
+    dances = {"sphere": harmonic, "reduced": reduced_harmonic, "chain": chain_lbs,
+              "figure": figure_modal, "fox": fox_lbs}
     for name, dance in dances.items():
         export_dance(dance, folder / f"{name}.glb", fps=15)
     return folder, dances
@@ -75,7 +76,7 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
 
 
 @pytest.mark.web
-@pytest.mark.parametrize("name", ["sphere", "chain", "figure", "fox"])
+@pytest.mark.parametrize("name", ["sphere", "reduced", "chain", "figure", "fox"])
 def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromium, name):
     """At three sample times (first, middle, last but one: the mixer loops at the end)."""
     _, dances = glbs
@@ -94,6 +95,9 @@ def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromiu
     if name == "sphere":
         expected = dance.positions(times)
         assert result["targets"] == len(dance.driven())
+    elif name == "reduced":  # three.js's joint matrices, both sets of four influences
+        expected = dance.positions(times)
+        assert result["skinned"] and result["influences"] == 8
     else:
         expected = dance.blend_positions(np.array(times))  # what a glTF skin plays
         assert result["skinned"]

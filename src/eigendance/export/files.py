@@ -15,7 +15,7 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance, sample_times
-from eigendance.export.gltf import glb_bytes
+from eigendance.export.gltf import write_glb
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.usd import write_usd
@@ -99,7 +99,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
             extras = {"audio": song_name, "fps": fps, "frames": len(times),
                       "duration": dance.duration, **dance.info}
             with open(main, "wb") as file:
-                file.write(glb_bytes(dance, times, extras))
+                write_glb(file, dance, times, extras)
             step(len(times))
             if isinstance(dance, RigDance) and dance.modal is not None:
                 difference = skinning_difference(dance, times)
