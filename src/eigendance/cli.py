@@ -372,7 +372,7 @@ def run_animate(args) -> None:
     frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
-                                progress=update)
+                                progress=update, force=args.force)
     print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
           f"{time.perf_counter() - start:.1f} s")
 
@@ -714,7 +714,8 @@ FLAGS = {"k": "-k"}
 def hint(remedy: dict) -> str:
     """'; try --solver eigsh' for {"solver": "eigsh"} ('' for no remedy)."""
     if remedy.get("force"):
-        return "; pass --force to overwrite it"
+        reason = remedy["force"] if isinstance(remedy["force"], str) else "overwrite it"
+        return f"; pass --force to {reason}"
     flags = [FLAGS.get(name, '--' + name.replace('_', '-')) + ("" if value is True else f" {value}")
              for name, value in remedy.items()]
     return f"; try {' '.join(flags)}" if flags else ""

@@ -15,11 +15,12 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance, sample_times
-from eigendance.export.gltf import write_glb
+from eigendance.export.gltf import glb_size, write_glb
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
+from eigendance.limits import check_memory, check_output
 
 FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
 
@@ -88,6 +89,13 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
             os.path.abspath(dance.audio) == os.path.abspath(paths["main"]):
         song_name = os.path.basename(dance.audio)
 
+    planned = planned_bytes(dance, format, len(times))
+    check_output(paths["main"], planned, f"{os.path.basename(paths['main'])}: {len(times)} "
+                 f"frames of {dance.n} vertices", force)
+    if format == "usd":  # usd-core keeps every time sample in memory until it saves
+        check_memory(planned, f"{os.path.basename(paths['main'])}: {len(times)} frames of "
+                     f"{dance.n} vertices in USD")
+
     def step(done):
         if progress is not None:
             progress(done, len(times))
@@ -117,6 +125,18 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     return {"format": format, "files": written, "frames": len(times), "fps": fps,
             "bytes": size, "point_cache_bytes": pc2_size(dance.n, len(times)),
             "skinning_difference": difference, "diagonal": dance.diagonal}
+
+
+def planned_bytes(dance: Dance, format: str, frames: int) -> int:
+    """The size of the main file of an export, known before it is written."""
+    if format == "pc2":
+        return pc2_size(dance.n, frames)
+    if format == "usd":
+        return 12 * dance.n * (frames + 1) + 12 * len(dance.faces)
+    if isinstance(dance, RigDance):
+        return 60 * dance.n + 12 * len(dance.faces) + 28 * len(dance.body_names) * frames
+    sizes = glb_size(dance, frames)
+    return sizes.get("skin", sizes["morph targets"])
 
 
 def skinning_difference(dance: RigDance, times) -> float:

@@ -21,7 +21,7 @@ import numpy as np
 
 from eigendance.files import OUT_OF_RANGE, atomic_write, check_finite, load_npz
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.limits import check_disk
+from eigendance.limits import check_output
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 
@@ -84,18 +84,19 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
 
 
 def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: float = 30.0,
-                    progress=None) -> int:
+                    progress=None, force: bool = False) -> int:
     """Write the animation file (see the module docstring) atomically; returns the frame count.
 
     Frames are computed chunk by chunk and streamed into the .npy member of the zip, so neither
     the positions nor the file are ever held in memory; a writer thread stores (CRC + write) one
     chunk while the next is computed. progress: optional callable(done frames). A chunk that is
     not finite (an amplification or a model too large for float32) ends the write with an
-    InputError, and no file is left.
+    InputError, and no file is left. Its size is checked first: it must fit on the disk, and
+    beyond `limits.LARGE_OUTPUT` it is written only with `force`.
     """
     times = frame_times(spectrogram.duration, fps)
-    check_disk(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
-               f"{len(times)} frames of {basis.n} vertices")
+    check_output(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
+                 f"{len(times)} frames of {basis.n} vertices", force)
     header = {"descr": np.lib.format.dtype_to_descr(np.dtype("<f4")), "fortran_order": False,
               "shape": (len(times), basis.n, 3)}
 
