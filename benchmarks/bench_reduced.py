@@ -9,10 +9,13 @@ accuracy: on subdivided scans (≥ 150k vertices, detail noise, benchmarks/big_m
 speed: a 1.15 M-vertex mesh (fertility ×256 with detail) at k = 300: wall-clock and peak memory
   of the reduced basis beside the exact solver's at the largest size it reaches here (armadillo
   ×16, 692k vertices), and the Laplacian's assembly (libigl) beside robust-laplacian's.
+exports: the same mesh and a 3-minute song (two shared songs end to end) at 30 fps: the glb as
+  a skin on the samples (written, with its time and peak memory) beside the same dance as morph
+  targets (the driven harmonics, and all k as issue 19 counts them) and as a point cache.
 
 Every solve runs in a fresh process (peak memory is its own; the band workers' is reported by
 the kernel for the children). Run: .venv/bin/python benchmarks/bench_reduced.py [accuracy]
-[speed] [--meshes armadillo-173k ...] [--sensitivity] [--skip-exact-speed]
+[speed] [exports] [--meshes armadillo-173k ...] [--sensitivity] [--skip-exact-speed]
 """
 
 from __future__ import annotations
@@ -162,10 +165,74 @@ def speed(skip_exact: bool) -> None:
     laplacian_profile("fertility-1.15M")
 
 
+def three_minutes():
+    """A 3-minute song: two shared songs end to end (none of them is that long)."""
+    from eigendance.music.decode import read_audio
+    from eigendance.music.spectrogram import Spectrogram
+
+    first, rate = read_audio(shared_path("audio", "karissa_hobbs_lets_go_fishin.ogg"))
+    second, other = read_audio(shared_path("audio", "emegeme_country.mp3"))
+    if other != rate:
+        second = np.interp(np.arange(int(len(second) * rate / other)) * other / rate,
+                           np.arange(len(second)), second)
+    return Spectrogram.from_samples(np.concatenate([first, second])[:180 * rate], rate)
+
+
+def write_skin(path: str, queue) -> None:
+    """In a fresh process: the 1.15 M-vertex dance's glb (time, peak memory, sizes)."""
+    from eigendance.export.dance import HarmonicDance, sample_times
+    from eigendance.export.files import export_dance
+    from eigendance.export.gltf import glb_size
+    from eigendance.export.pointcache import pc2_size
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.harmonic.mesh import Mesh
+    from eigendance.music.gallery import gallery_motion, initial_gallery
+
+    basis = HarmonicBasis.from_mesh(Mesh.from_arrays(*detailed("fertility-1.15M")), K,
+                                    construction="reduced")  # cached after the first run
+    song = three_minutes()
+    items = initial_gallery(basis, song, 8)
+    motions = gallery_motion(basis, song, items)
+    widest = max(range(len(items)), key=lambda i: motions[i].highest - motions[i].lowest)
+    dance = HarmonicDance(basis, song, items[widest], name="fertility")
+    frames = len(sample_times(song.duration, 30.0))
+    start = time.perf_counter()
+    report = export_dance(dance, path, fps=30.0, force=True)
+    seconds = time.perf_counter() - start
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20
+    sizes = glb_size(dance, frames)
+    base = sizes["morph targets"] - len(dance.driven()) * (12 * dance.n + 4 * frames)
+    queue.put({"n": dance.n, "m": basis.reduced.count, "frames": frames, "bytes": report["bytes"],
+               "seconds": seconds, "peak": peak, "driven": len(dance.driven()), **sizes,
+               "all k": base + K * (12 * dance.n + 4 * frames), "pc2": pc2_size(dance.n, frames)})
+
+
+def exports() -> None:
+    context = multiprocessing.get_context("fork")
+    queue = context.Queue()
+    with tempfile.TemporaryDirectory() as folder:
+        process = context.Process(target=write_skin, args=(os.path.join(folder, "d.glb"), queue))
+        process.start()
+        result = queue.get()
+        process.join()
+    mb = 1e6
+    print(f"\nexports: fertility ×256, n = {result['n']}, m = {result['m']} samples, a 3-minute "
+          f"song at 30 fps ({result['frames']} frames), the gallery item driving the most "
+          f"harmonics ({result['driven']}); load {load()}")
+    print(f"  glb, skin on the samples (written): {result['bytes'] / mb:.0f} MB in "
+          f"{result['seconds']:.0f} s, peak {result['peak']:.2f} GB (planned "
+          f"{result['skin'] / mb:.0f} MB)")
+    print(f"  the same dance as morph targets: the {result['driven']} driven harmonics "
+          f"{result['morph targets'] / mb:.0f} MB ({result['skin'] / result['morph targets']:.2f}"
+          f"×); all k = {K} harmonics {result['all k'] / mb:.0f} MB "
+          f"({result['skin'] / result['all k']:.3f}×, ≤ 1/8 asked)")
+    print(f"  as a point cache: {result['pc2'] / mb:.0f} MB (written only with --force)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("parts", nargs="*", default=["accuracy", "speed"],
-                        choices=["accuracy", "speed"])
+    parser.add_argument("parts", nargs="*", default=["accuracy", "speed", "exports"],
+                        choices=["accuracy", "speed", "exports"])
     parser.add_argument("--meshes", nargs="+", default=list(ACCURACY_MESHES))
     parser.add_argument("--sensitivity", action="store_true",
                         help="also the exact basis of another noise draw (one more exact solve)")
@@ -176,6 +243,8 @@ def main():
         accuracy(args.meshes, args.sensitivity)
     if "speed" in args.parts:
         speed(args.skip_exact_speed)
+    if "exports" in args.parts:
+        exports()
 
 
 if __name__ == "__main__":
