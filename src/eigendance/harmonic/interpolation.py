@@ -18,7 +18,7 @@ consumer uses the very same P.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
@@ -49,6 +49,7 @@ class Interpolation:
     indices: np.ndarray
     weights: np.ndarray
     count: int
+    _matrix: sp.csr_matrix | None = field(default=None, repr=False, compare=False)  # P, built once
 
     @property
     def n(self) -> int:
@@ -56,7 +57,7 @@ class Interpolation:
 
     def matrix(self) -> sp.csr_matrix:
         """P as a sparse (n, m) matrix (repeated slots summed), built once."""
-        if getattr(self, "_matrix", None) is None:
+        if self._matrix is None:
             n, most = self.indices.shape
             matrix = sp.csr_matrix((self.weights.astype(np.float64).reshape(-1),  # copies:
                                     self.indices.astype(np.int64).reshape(-1),  # P is sorted
