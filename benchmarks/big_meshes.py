@@ -29,6 +29,7 @@ MESHES = {
     "lionstatue-127k": ("lionstatue.obj", 1),
     "bunny-139k": ("bunny_stanford.obj", 1),
     "bunny-557k": ("bunny_stanford.obj", 2),
+    "beetle-294k": ("beetle.obj", 4),            # non-manifold edges, 2 parts
 }
 
 
