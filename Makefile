@@ -27,11 +27,20 @@ setup: system web $(VENV)/.installed
 # exports in Blender, in a virtual environment of its own (bpy pins its own numpy); installed once
 # per machine by `make test`.
 BLENDER_VENV := .venv-blender
-blender: $(BLENDER_VENV)/.installed
+# Blender 4.2 LTS as well (the wheel for Python 3.11 of the LTS still in wide use): the export
+# tests check that both play the files, each in a virtual environment of its own.
+BLENDER_LTS_VENV := .venv-blender42
+BLENDER_LTS := bpy==4.2.0 numpy==1.26.4  # 4.2 was built against numpy 1.x: 2.x crashes foreach_get
+blender: $(BLENDER_VENV)/.installed $(BLENDER_LTS_VENV)/.installed
 
 $(BLENDER_VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(BLENDER_VENV)
 	$(BLENDER_VENV)/bin/pip install -q $$($(PYTHON) -c 'import tomllib; print(*tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]["blender"])')
+	touch $@
+
+$(BLENDER_LTS_VENV)/.installed:
+	$(PYTHON) -m venv $(BLENDER_LTS_VENV)
+	$(BLENDER_LTS_VENV)/bin/pip install -q $(BLENDER_LTS)
 	touch $@
 
 demo: setup

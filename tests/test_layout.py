@@ -7,7 +7,7 @@ import ast
 import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src")
-LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure"}
+LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy"}
 
 
 def modules() -> dict[str, ast.Module]:

@@ -18,7 +18,7 @@ import numpy as np
 from tqdm import tqdm
 
 from eigendance import __version__
-from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.errors import EigendanceError, InputError, ModelWarning, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
 from eigendance.export.files import companion_paths, export_dance, format_of
@@ -721,6 +721,11 @@ def hint(remedy: dict) -> str:
     return f"; try {' '.join(flags)}" if flags else ""
 
 
+def show_warning(message, category, *_, **__) -> None:
+    """A warning as one line on stderr: `eigendance: warning: …`."""
+    print(f"eigendance: warning: {one_line(str(message))}", file=sys.stderr)
+
+
 def main(argv=None) -> int:
     """Run one command; the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted."""
     args = build_parser().parse_args(argv)
@@ -731,6 +736,8 @@ def main(argv=None) -> int:
                 # would only add lines around the one line a command ends with; outputs are
                 # checked finite instead (files.check_finite).
                 warnings.simplefilter("ignore")
+            warnings.simplefilter("always", ModelWarning)  # what a model file loses: one line
+            warnings.showwarning = show_warning
             args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)

@@ -81,3 +81,8 @@ def one_line(error: BaseException | str, limit: int = 300) -> str:
     text = "".join(character if character.isprintable() else " " for character in text)
     text = " ".join(text.split())
     return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
+class ModelWarning(UserWarning):
+    """What a model file holds that eigendance cannot keep (points, lines, an unreadable
+    texture, morph targets of its own): one line naming the file, issued once per read."""

@@ -21,7 +21,8 @@ import numpy as np
 
 from eigendance.errors import InputError, one_line
 
-MESH_SUFFIXES = (".obj", ".ply", ".off", ".stl", ".gltf", ".glb")
+MESH_SUFFIXES = (".obj", ".ply", ".off", ".stl", ".gltf", ".glb",
+                 ".fbx", ".blend", ".dae", ".3ds")  # the last four through Blender's bpy
 # libsndfile reads the first group itself; PyAV (FFmpeg) reads everything.
 AUDIO_SUFFIXES = (".wav", ".wave", ".flac", ".ogg", ".oga", ".mp3", ".aif", ".aiff", ".opus",
                   ".m4a", ".aac", ".mp4", ".webm", ".mka")

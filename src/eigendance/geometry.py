@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 
 # Largest coordinate magnitude a model may have, in any unit. Outputs hold positions as float32
 # (largest value ≈ 3.4·10³⁸): this leaves 23 decades for the motion, and squares of
@@ -16,8 +19,9 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     Parameters
     ----------
     vertices : (n, 3) float array.
-    tolerance : 0 merges exactly equal vertices; t > 0 merges vertices whose coordinates
-        round to the same multiple of t·(bounding-box diagonal) (seams split by exporters).
+    tolerance : 0 merges exactly equal vertices; t > 0 merges vertices closer than
+        t·(bounding-box diagonal), and whatever such pairs chain together (UV seams and hard
+        edges that exporters split, docs/design.md#appearance).
 
     Returns
     -------
@@ -29,17 +33,27 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     >>> first, inverse = weld(np.array([[0., 0, 0], [1, 0, 0], [0, 0, 0]]))
     >>> first.tolist(), inverse.tolist()
     ([0, 1], [0, 1, 0])
+    >>> weld(np.array([[0., 0, 0], [1, 0, 0], [1e-9, 0, 0]]), 1e-7)[1].tolist()
+    [0, 1, 0]
     """
     vertices = np.asarray(vertices, dtype=np.float64)
-    keys = vertices
-    if tolerance > 0:
-        step = tolerance * (bounding_box_diagonal(vertices) or 1.0)
-        keys = np.round(vertices / step).astype(np.int64)
-    first, inverse = unique_rows(keys)
-    order = np.argsort(first)  # unique rows come sorted by value: put them in input order
+    first, inverse = unique_rows(vertices)
+    if tolerance > 0 and len(first) > 1:  # exact copies first, then pairs within the distance
+        unique = vertices[first]
+        pairs = cKDTree(unique).query_pairs(tolerance * (bounding_box_diagonal(vertices) or 1.0),
+                                            output_type="ndarray")
+        if len(pairs):
+            graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                               shape=(len(unique),) * 2)
+            _, label = connected_components(graph, directed=False)
+            lowest = np.full(label.max() + 1, len(vertices))
+            np.minimum.at(lowest, label, first)  # each group's first input vertex
+            _, first, merged = np.unique(lowest[label], return_index=True, return_inverse=True)
+            first, inverse = lowest[label][first], merged.reshape(-1)[inverse]
+    order = np.argsort(first)  # groups come sorted by value: put them in input order
     rank = np.empty_like(order)
     rank[order] = np.arange(len(order))
-    return first[order].astype(np.int64), rank[inverse.reshape(-1)].astype(np.int64)
+    return first[order].astype(np.int64), rank[inverse].astype(np.int64)
 
 
 def unique_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

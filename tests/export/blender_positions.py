@@ -58,3 +58,5 @@ def main(kind: str, path: str, fps: float, out: str, frames: list[int]) -> None:
 if __name__ == "__main__":
     main(sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4],
          [int(frame) for frame in sys.argv[5:]])
+    sys.stdout.flush()
+    os._exit(0)  # bpy 4.2 crashes while the interpreter shuts down (the results are written)

@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
-from export_helpers import SONG, rig
+from export_helpers import LONG_SONG, SONG, rig
 
 from eigendance.export.dance import HarmonicDance
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.harmonic.mesh import Mesh
+from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.spectrogram import Spectrogram
 from helpers import bumpy_sphere, fixture_path
@@ -67,3 +68,40 @@ def fox_lbs(song):
 @pytest.fixture
 def chromium(browser):
     return browser
+
+
+@pytest.fixture(scope="session")
+def long_song():
+    return Spectrogram.from_file(LONG_SONG)
+
+
+@pytest.fixture(scope="session")
+def cake_basis():
+    """A textured model of several pieces (the Kenney cake: 7 materials, an instanced mesh)."""
+    return HarmonicBasis.from_mesh(load_mesh(fixture_path("textured", "kenney_cakeBirthday.glb")),
+                                   40, laplacian="robust", cache=False)
+
+
+@pytest.fixture(scope="session")
+def cake(cake_basis, long_song):
+    """The cake on a 21 s song: gallery item 2 (32 harmonics) with amplifications of
+    alternating sign, at gain 4, so that morph weights go below 0 and above 1 — what importers
+    that clamp weights to [0, 1] must survive."""
+    item = initial_gallery(cake_basis, long_song, 4)[2]
+    signs = np.where(np.arange(len(item.amplification)) % 2, -1.0, 1.0)
+    mapping = item.with_genes(item.transfer, item.amplification * signs, item.seed, "alternating")
+    mapping.gain = 4.0
+    return HarmonicDance(cake_basis, long_song, mapping, audio=LONG_SONG, name="cake")
+
+
+@pytest.fixture(scope="session")
+def gun_lbs(long_song):
+    """A rig with a textured skin and a gun attached to its hand bone, on the 21 s song."""
+    return rig(fixture_path("rigged", "quaternius_Character_Gun.glb"), "lbs", long_song,
+               audio=LONG_SONG)
+
+
+@pytest.fixture(scope="session")
+def gun_modal(long_song):
+    return rig(fixture_path("rigged", "quaternius_Character_Gun.glb"), "modal", long_song,
+               audio=LONG_SONG)

@@ -14,6 +14,7 @@ from eigendance.modal.sample_rigs import load_rig
 from helpers import fixture_path
 
 SONG = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")  # 4 s
+LONG_SONG = fixture_path("audio", "kevin_macleod_vibe_ace_0s-21s.ogg")  # 21 s
 
 
 def required(what: str, present: bool, how: str) -> None:
@@ -25,14 +26,14 @@ def required(what: str, present: bool, how: str) -> None:
         pytest.skip(message)
 
 
-def rig(name: str, skinning: str, song, mode_count: int = 4):
+def rig(name: str, skinning: str, song, mode_count: int = 4, audio: str = SONG):
     skeleton = load_rig(name)
     model = ModalModel.from_skeleton(skeleton)
     modes = np.arange(min(mode_count, model.n_modes))
     mapping = rig_mapping(model, song, band_mapping(song.bands, len(modes)), modes, 0.3, 1.0)
     return rig_dance(skeleton, model, song.duration,
                      lambda times: rig_coefficients(model, song, mapping, times),
-                     skinning, SONG, f"{skinning}-rig")
+                     skinning, audio, f"{skinning}-rig")
 
 
 def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions"):
@@ -41,4 +42,10 @@ def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions")
     assert found.shape == expected.shape, (found.shape, expected.shape)
     error = np.linalg.norm(found - expected, axis=-1).max(axis=-1) / diagonal
     assert np.all(error <= tolerance), f"{what}: relative errors per frame {error}"
+    print(f"{what}: largest error {error.max():.1e} of the diagonal over {len(error)} frames")
     return error
+
+
+def spread_frames(count: int, frames: int = 6) -> list[int]:
+    """`frames` sample indices spread over `count` samples, first and last included."""
+    return sorted({int(round(i)) for i in np.linspace(0, count - 1, frames)})

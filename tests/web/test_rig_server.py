@@ -12,6 +12,7 @@ import pytest
 from starlette.testclient import TestClient
 from web_helpers import write_song
 
+from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, body_transforms, rig_coefficients
 from eigendance.modal.palette import default_palette
@@ -91,8 +92,8 @@ def test_the_library_lists_built_in_rigs_and_rig_files(client):
     assert rigs["chain.json"]["ready"] and rigs["chain.json"]["modes"] == 3
     assert rigs["RiggedSimple.glb"] == {**rigs["RiggedSimple.glb"], "origin": "file",
                                         "bodies": 2, "joints": 1, "modes": 3}
-    mesh = next(m for m in data["meshes"] if m["name"] == "RiggedSimple.glb")
-    assert mesh["rig"] == rigs["RiggedSimple.glb"]["id"]  # a skinned glTF is both
+    # a skinned glTF is listed once, as a rig
+    assert not [m for m in data["meshes"] if m["name"] == "RiggedSimple.glb"]
     assert not [m for m in data["mappings"] if m["name"] == "chain.json"]
     description = client.get(f"/api/rigs/{rigs['loop16']['id']}").json()
     assert description["ready"] and description["modes"] == 13 and description["bodies"] == 16
@@ -265,9 +266,10 @@ def test_rig_uploads(client, files):
     assert item["name"] == "my chain.json" and item["ready"] and item["origin"] == "upload"
     with open(fixture_path("rigged", "SimpleSkin.gltf"), "rb") as file:
         answer = client.post("/api/upload?name=skin.gltf", content=file.read())
-    assert answer.status_code == 201 and answer.json()["kind"] == "mesh"
-    assert answer.json()["rig"]["modes"] == 3
-    assert answer.json()["item"]["rig"] == answer.json()["rig"]["id"]
+    assert answer.status_code == 201 and answer.json()["kind"] == "rig"  # listed once, a rig
+    assert answer.json()["item"]["modes"] == 3
+    assert not [m for m in client.get("/api/library").json()["meshes"]
+                if m["name"] == "skin.gltf"]
     bad = open_chain(2, skin=False).to_dict()
     bad["joints"][0]["type"] = "hinge"
     before = [r["id"] for r in client.get("/api/library").json()["rigs"]]
@@ -291,3 +293,35 @@ def test_a_rig_without_vibration_modes_has_no_gallery(client):
     assert meta["modes"] == 0 and meta["palette"] is None and arrays["tau"].shape[1] == 0
     assert "no vibration mode" in error_of(client.post("/api/rig-gallery", json={
         "rig": chain, "song": song_id(client)}), 409)
+
+
+def test_a_skinned_gltf_given_alone_opens_as_a_rig(files, tmp_path):
+    """`eigendance serve Stag.glb song.mp3`: the library reports the rig as what opens first."""
+    library = Library(str(tmp_path / "alone"), k=8)
+    try:
+        library.add_path(files["glb"])
+        library.add_path(files["song"])
+        data = library.as_json()
+        assert data["first"]["kind"] == "rig"
+        assert data["first"]["id"] == next(r["id"] for r in data["rigs"]
+                                           if r["name"] == "RiggedSimple.glb")
+        assert not data["meshes"]
+    finally:
+        library.close()
+
+
+def test_a_skinned_gltf_whose_skin_cannot_be_analysed_dances_as_a_mesh(files, tmp_path,
+                                                                       monkeypatch):
+    import eigendance.server.library as library_module
+
+    def refuse(path, name=None):
+        raise InputError(f"{name}: body 'x' has zero length")
+
+    monkeypatch.setattr(library_module, "load_rig", refuse)
+    library = Library(str(tmp_path / "broken"), k=8)
+    try:
+        item = library.add_path(files["glb"])
+        assert item.name == "RiggedSimple.glb" and item in library.meshes.values()
+        assert library.as_json()["first"] == {"kind": "mesh", "id": item.id}
+    finally:
+        library.close()

@@ -397,12 +397,13 @@ def test_items_can_be_removed(client, library, files):
 
 
 def test_a_skinned_gltf_goes_with_its_rig(client, library):
+    """A skinned glTF is a rig (listed once): removing it removes its stored file."""
     with open(fixture_path("rigged", "SimpleSkin.gltf"), "rb") as file:
         answer = client.post("/api/upload?name=skin.gltf", content=file.read()).json()
-    rig = answer["rig"]["id"]
-    assert library.wait(60)
-    removed = client.delete(f"/api/meshes/{answer['item']['id']}").json()["removed"]
-    assert removed == [answer["item"]["id"], rig]
+    assert answer["kind"] == "rig"
+    rig = answer["item"]["id"]
+    removed = client.delete(f"/api/rigs/{rig}").json()["removed"]
+    assert removed == [rig]
     error_of(client.get(f"/api/rigs/{rig}"), 404)
     assert stored_files(library) == []
 

@@ -119,9 +119,11 @@ class Dance:
 
     faces (m, 3) int64; rest (n, 3) float64; center (3,) and scale: the framing of
     docs/design.md#mesh (the middle of the bounding box, half its largest side); duration (s);
-    audio: the song's file or None; name: how messages and files call it.
+    audio: the song's file or None; name: how messages and files call it; appearance: the
+    model's look (`assets.Appearance`, drawn vertices on these), or None (clay).
     """
 
+    appearance = None
     name: str
     faces: np.ndarray
     rest: np.ndarray
@@ -147,6 +149,11 @@ class Dance:
 
     def rest_normals(self) -> np.ndarray:
         return vertex_normals(self.rest, self.faces)
+
+    def drawn(self, positions: np.ndarray) -> np.ndarray:
+        """(…, n_d, 3) the drawn vertices' positions from the welded ones (…, n, 3): each at its
+        welded vertex (docs/design.md#appearance); the positions themselves without a look."""
+        return positions if self.appearance is None else self.appearance.drawn(positions)
 
     def frames(self, times) -> Iterator[tuple[int, np.ndarray, np.ndarray | None]]:
         """(first frame index, positions (C, n, 3) float32, normals (C, n, 3) or None when the
@@ -192,6 +199,7 @@ class HarmonicDance(Dance):
         self.duration = float(spectrogram.duration)
         self.audio = None if audio is None else os.fspath(audio)
         self.info = {"kind": "harmonics", "k": basis.k, "mapping": mapping.to_json()}
+        self.appearance = basis.appearance
 
     def phi(self, times) -> np.ndarray:
         """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram."""
@@ -262,11 +270,13 @@ class RigDance(Dance):
     duration : seconds.
     modal : a `ModalSkin` to move the skin by modal skinning, or None for linear blend skinning.
     audio, name : as for `HarmonicDance`.
+    appearance : the skin's look (`assets.Appearance`), or None (clay).
     """
 
     def __init__(self, vertices, faces, weights, pose: Callable, rest_frames, body_names,
                  duration: float, modal: ModalSkin | None = None,
-                 audio: str | os.PathLike | None = None, name: str = "dance", info=None):
+                 audio: str | os.PathLike | None = None, name: str = "dance", info=None,
+                 appearance=None):
         self.rest = np.asarray(vertices, dtype=np.float64)
         self.faces = np.asarray(faces, dtype=np.int64)
         self.weights = weights.toarray() if hasattr(weights, "toarray") else \
@@ -279,6 +289,7 @@ class RigDance(Dance):
         self.audio = None if audio is None else os.fspath(audio)
         self.name = name
         self.info = {"kind": "rig", "skinning": "modal" if modal else "lbs", **(info or {})}
+        self.appearance = appearance
 
     def frames(self, times):
         times = np.asarray(times, dtype=np.float64)
@@ -334,4 +345,5 @@ def rig_dance(skeleton: Skeleton, model: ModalModel, duration: float,
     info = {"modes": [int(m) for m in moving_modes],
             "frequencies_hz": [float(model.frequencies[m]) for m in moving_modes]}
     return RigDance(skeleton.vertices, skeleton.faces, skeleton.weights, pose, frames,
-                    model.body_names, duration, modal, audio, name, info)
+                    model.body_names, duration, modal, audio, name, info,
+                    getattr(skeleton, "appearance", None))

@@ -16,6 +16,8 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance, sample_times
 from eigendance.export.gltf import glb_size, write_glb
+from eigendance.export.look_files import mtl_text, texture_files, write_textures
+from eigendance.export.look_files import obj_text as obj_text_with_look
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.usd import write_usd
@@ -44,8 +46,10 @@ def format_of(path: str | os.PathLike, format: str | None = None) -> str:
     return format
 
 
-def companion_paths(path: str | os.PathLike, format: str, audio: str | None) -> dict:
-    """The files an export writes: {"main", "mesh" (pc2's rest OBJ), "song"} (None if not)."""
+def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
+                    appearance=None) -> dict:
+    """The files an export writes: {"main", "mesh" (pc2's rest OBJ), "song", and with a look
+    outside a glb "materials" (pc2's MTL) and "texture<i>" (each image)} (None if not)."""
     path = os.fspath(path)
     stem = os.path.splitext(path)[0]
     song = None
@@ -54,7 +58,12 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None) -> 
         if os.path.abspath(song) == os.path.abspath(audio) or (
                 os.path.isfile(song) and filecmp.cmp(song, audio, shallow=False)):
             song = None  # the song is already there under that name (an earlier export's)
-    return {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
+    paths = {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
+    if appearance is not None and format != "glb":
+        paths["materials"] = stem + ".mtl" if format == "pc2" else None
+        paths.update({f"texture{index}": texture for index, texture in
+                      enumerate(texture_files(path, appearance))})
+    return paths
 
 
 def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
@@ -81,8 +90,10 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     if not (np.isfinite(fps) and 0 < fps <= 1000):
         raise InputError(f"frames per second must be in (0, 1000], got {fps}")
     times = sample_times(dance.duration, fps)
-    paths = companion_paths(path, format, dance.audio)
-    written = [p for p in (paths["main"], paths["mesh"], paths["song"]) if p is not None]
+    look = dance.appearance
+    paths = companion_paths(path, format, dance.audio, look)
+    written = [p for p in paths.values() if p is not None]
+    textures = [p for name, p in paths.items() if name.startswith("texture")]
     song_name = None if dance.audio is None else \
         os.path.basename(os.path.splitext(paths["main"])[0] + suffix_of(dance.audio))
     if paths["song"] is None and dance.audio is not None and \
@@ -114,11 +125,11 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
         elif format == "pc2":
             with open(main, "wb") as file:
                 write_pc2(file, dance, times, step)
-            with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
-                file.write(obj_text(dance.rest, dance.faces,
-                                    f"eigendance: rest mesh of {os.path.basename(path)}"))
+            _write_obj(outputs, paths, dance, os.path.basename(path), textures)
         else:
-            write_usd(main, dance, times, fps, song_name, step)
+            write_usd(main, dance, times, fps, song_name, step, textures)
+        if textures:
+            write_textures(outputs, look, textures)
         if paths["song"]:
             outputs.copy(dance.audio, paths["song"])
         size = os.path.getsize(main)
@@ -137,6 +148,20 @@ def planned_bytes(dance: Dance, format: str, frames: int) -> int:
         return 60 * dance.n + 12 * len(dance.faces) + 28 * len(dance.body_names) * frames
     sizes = glb_size(dance, frames)
     return sizes.get("skin", sizes["morph targets"])
+
+
+def _write_obj(outputs, paths, dance: Dance, name: str, textures) -> None:
+    """The rest mesh beside a point cache (with its MTL when the dance has a look)."""
+    comment = f"eigendance: rest mesh of {name}"
+    with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
+        if dance.appearance is None:
+            file.write(obj_text(dance.rest, dance.faces, comment))
+        else:
+            file.write(obj_text_with_look(dance.rest, dance.appearance, paths["materials"],
+                                          comment))
+    if dance.appearance is not None:
+        with open(outputs.temporary(paths["materials"]), "w", encoding="utf-8") as file:
+            file.write(mtl_text(dance.appearance, textures))
 
 
 def skinning_difference(dance: RigDance, times) -> float:

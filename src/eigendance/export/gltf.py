@@ -1,9 +1,15 @@
 """glTF 2.0 binary (.glb) of a dance (docs/design.md#exports), written with pygltflib.
 
-- A `HarmonicDance` becomes morph targets: one target per driven harmonic ν with the POSITION
-  displacement D_ν = U[:,ν]·X̃_ν·scale, and one animation of the mesh's weights φ_ν(t_i) − 1 at
-  the sample times t_i = i/fps (LINEAR). At every sample the player's sum rest + Σ w_ν D_ν is the
-  reference positions X_φ exactly (up to float32), since X_φ is linear in φ.
+- The model keeps its look: with an `Appearance`, the drawn vertices (each at its welded
+  vertex, with the file's normals, UVs, colours and tangents), one primitive per material, the
+  materials and the images embedded (`gltf_look`); without, the clay colour.
+- A `HarmonicDance` becomes morph targets, one per driven harmonic ν, written so that importers
+  which clamp weights to [0, 1] (Blender) play them exactly (`blender_safe`): with the animated
+  weights w_ν(t_i) = φ_ν(t_i) − 1 in [lo_ν, hi_ν] (lo = min(0, min w), hi = max(0, max w)), the
+  base positions are rest + Σ lo_ν D_ν, target ν is (hi_ν − lo_ν)·D_ν and its weights
+  (w_ν − lo_ν)/(hi_ν − lo_ν) ∈ [0, 1] (LINEAR), the mesh's initial weights −lo_ν/(hi_ν − lo_ν)
+  (the file at rest shows the rest shape). At every sample base + Σ weight·target = rest +
+  Σ w_ν D_ν = X_φ(t_i) exactly (up to float32), since X_φ is linear in φ.
 - A `HarmonicDance` of a reduced basis (docs/design.md#reduced-basis) becomes a skin whose joints
   are the samples: joint j at the sample's rest position c_j (inverse bind matrix: translation
   by −c_j), one translation channel c_j + D_j(t_i) each, and every vertex's 8 samples and weights
@@ -30,6 +36,7 @@ from scipy.spatial.transform import Rotation
 
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, RigDance
+from eigendance.export.gltf_look import drawn_attributes, write_look
 
 # The models' clay colour on the page (web/src/deform.ts CLAY), as sRGB bytes.
 BASE_COLOR = (0xD9, 0xA4, 0x7F)
@@ -97,6 +104,15 @@ class _Builder:
         self.gltf.accessors.append(accessor)
         return len(self.gltf.accessors) - 1
 
+    def view(self, data: bytes) -> int:
+        """A buffer view (no target) holding `data`, e.g. an embedded image."""
+        self.gltf.bufferViews.append(pygltflib.BufferView(buffer=0, byteOffset=self.length,
+                                                          byteLength=len(data)))
+        padding = -len(data) % 4
+        self.chunks.extend([data, b"\0" * padding])
+        self.length += len(data) + padding
+        return len(self.gltf.bufferViews) - 1
+
     def write(self, file) -> int:
         """Write the GLB container (header, JSON chunk, binary chunk) to an open binary file,
         making the streamed accessors' bytes one at a time; returns the bytes written."""
@@ -141,56 +157,94 @@ def write_glb(file, dance: Dance, times, extras: dict) -> int:
     gltf = pygltflib.GLTF2(asset=pygltflib.Asset(version="2.0", generator="eigendance"))
     gltf.extras = {"eigendance": extras}
     builder = _Builder(gltf)
-    color = [*(float(c) for c in srgb_to_linear(np.array(BASE_COLOR) / 255)), 1.0]
-    gltf.materials.append(pygltflib.Material(
-        name="eigendance", doubleSided=True,
-        pbrMetallicRoughness=pygltflib.PbrMetallicRoughness(baseColorFactor=color,
-                                                            metallicFactor=0.0,
-                                                            roughnessFactor=0.6)))
-    attributes = pygltflib.Attributes(
-        POSITION=builder.accessor(dance.rest.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, True),
-        NORMAL=builder.accessor(dance.rest_normals().astype("<f4"), 3, pygltflib.ARRAY_BUFFER))
-    index_type = "<u2" if dance.n <= 65535 else "<u4"
-    primitive = pygltflib.Primitive(
-        attributes=attributes, material=0, mode=pygltflib.TRIANGLES,
-        indices=builder.accessor(dance.faces.astype(index_type).ravel(), 1,
-                                 pygltflib.ELEMENT_ARRAY_BUFFER))
-    mesh = pygltflib.Mesh(name=dance.name, primitives=[primitive])
+    look = getattr(dance, "appearance", None)
+    welded = look.welded if look is not None else np.arange(dance.n)
+    attributes = pygltflib.Attributes()
+    parts = _surface(dance, look, builder, attributes)
+    mesh = pygltflib.Mesh(name=dance.name, primitives=[
+        pygltflib.Primitive(attributes=attributes, material=material, mode=pygltflib.TRIANGLES,
+                            indices=builder.accessor(triangles.astype(index_type).ravel(), 1,
+                                                     pygltflib.ELEMENT_ARRAY_BUFFER))
+        for material, triangles, index_type in parts])
     gltf.meshes.append(mesh)
     gltf.nodes.append(pygltflib.Node(name=dance.name, mesh=0))
     gltf.scenes.append(pygltflib.Scene(name=dance.name, nodes=[0]))
     gltf.scene = 0
     sample_input = builder.accessor(times.astype("<f4"), 1, bounds=True)
+    base = dance.rest[welded]
     if isinstance(dance, HarmonicDance) and dance.basis.reduced is not None:
-        _sample_skin(dance, times, builder, attributes, sample_input)
+        _sample_skin(dance, times, builder, attributes, welded, sample_input)
     elif isinstance(dance, HarmonicDance):
-        _morph_targets(dance, times, builder, mesh, primitive, sample_input)
+        base = _morph_targets(dance, times, builder, mesh, welded, sample_input)
     elif isinstance(dance, RigDance):
-        _skin(dance, times, builder, attributes, sample_input)
+        _skin(dance, times, builder, attributes, welded, sample_input)
     else:
         raise TypeError(f"cannot write {type(dance).__name__} as glTF")
+    attributes.POSITION = builder.accessor(base.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, True)
     return builder.write(file)
 
 
-def _morph_targets(dance: HarmonicDance, times, builder, mesh, primitive, sample_input):
+def _surface(dance: Dance, look, builder, attributes) -> list[tuple]:
+    """Materials and the drawn attributes but POSITION; (material, triangles, index type) of
+    each primitive: one per material of the look, or one in clay."""
+    if look is None:
+        color = [*(float(c) for c in srgb_to_linear(np.array(BASE_COLOR) / 255)), 1.0]
+        builder.gltf.materials.append(pygltflib.Material(
+            name="eigendance", doubleSided=True,
+            pbrMetallicRoughness=pygltflib.PbrMetallicRoughness(
+                baseColorFactor=color, metallicFactor=0.0, roughnessFactor=0.6)))
+        attributes.NORMAL = builder.accessor(dance.rest_normals().astype("<f4"), 3,
+                                             pygltflib.ARRAY_BUFFER)
+        return [(0, dance.faces, "<u2" if dance.n <= 65535 else "<u4")]
+    materials = write_look(look, builder)
+    drawn_attributes(look, builder, attributes)
+    index_type = "<u2" if look.n <= 65535 else "<u4"
+    return [(materials[part.material], part.triangles, index_type) for part in look.parts]
+
+
+def blender_safe(weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per target the range [lo, hi] its weights (T, J) are rescaled from: lo = min(0, min w),
+    hi = max(0, max w) (hi = lo + 1 for a target whose weights are all 0); returns (lo, hi).
+
+    Example
+    -------
+    >>> lo, hi = blender_safe(np.array([[-2.0, 0.5], [3.0, 0.25]]))
+    >>> lo.tolist(), hi.tolist()
+    ([-2.0, 0.0], [3.0, 0.5])
+    """
+    lo = np.minimum(0.0, weights.min(axis=0, initial=0.0))
+    hi = np.maximum(0.0, weights.max(axis=0, initial=0.0))
+    return lo, np.where(hi > lo, hi, lo + 1.0)
+
+
+def _morph_targets(dance: HarmonicDance, times, builder, mesh, welded, sample_input):
+    """The targets and their animation (see the module docstring); returns the base
+    positions (n_d, 3)."""
     morphs = dance.morphs(times)
-    for target in morphs.targets:
-        primitive.targets.append(pygltflib.Attributes(POSITION=builder.accessor(
-            target.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, bounds=True)))
+    lo, hi = blender_safe(morphs.weights)
+    span = hi - lo
+    base = dance.rest + np.einsum("j,jnd->nd", lo, morphs.targets)
+    for target, scale in zip(morphs.targets, span, strict=True):
+        accessor = builder.accessor((scale * target[welded]).astype("<f4"), 3,
+                                    pygltflib.ARRAY_BUFFER, bounds=True)
+        for primitive in mesh.primitives:
+            primitive.targets.append(pygltflib.Attributes(POSITION=accessor))
     if len(morphs.harmonics) == 0:
-        return  # a still mapping: no target, nothing to animate
-    mesh.weights = [0.0] * len(morphs.harmonics)
+        return base[welded]  # a still mapping: no target, nothing to animate
+    mesh.weights = [float(w) for w in -lo / span]
     mesh.extras = {"targetNames": [f"harmonic {int(nu)}" for nu in morphs.harmonics]}
-    output = builder.accessor(morphs.weights.astype("<f4").ravel(), 1)
+    weights = np.clip((morphs.weights - lo) / span, 0.0, 1.0)
+    output = builder.accessor(weights.astype("<f4").ravel(), 1)
     builder.gltf.animations.append(pygltflib.Animation(
         name="dance",
         samplers=[pygltflib.AnimationSampler(input=sample_input, output=output,
                                              interpolation=pygltflib.ANIM_LINEAR)],
         channels=[pygltflib.AnimationChannel(
             sampler=0, target=pygltflib.AnimationChannelTarget(node=0, path="weights"))]))
+    return base[welded]
 
 
-def _skin(dance: RigDance, times, builder, attributes, sample_input):
+def _skin(dance: RigDance, times, builder, attributes, welded, sample_input):
     gltf = builder.gltf
     count = len(dance.body_names)
     first_joint = len(gltf.nodes) + 1
@@ -207,7 +261,7 @@ def _skin(dance: RigDance, times, builder, attributes, sample_input):
                                      inverseBindMatrices=builder.accessor(
                                          inverse.astype("<f4").reshape(-1, 16), 16)))
     gltf.nodes[0].skin = 0
-    indices, weights = _influences(dance.weights)
+    indices, weights = _influences(dance.weights[welded])
     joint_type = "u1" if count <= 256 else "<u2"
     for set_index in range(indices.shape[1] // 4):
         columns = slice(4 * set_index, 4 * set_index + 4)
@@ -231,7 +285,7 @@ def _skin(dance: RigDance, times, builder, attributes, sample_input):
                                                channels=channels))
 
 
-def _sample_skin(dance: HarmonicDance, times, builder, attributes, sample_input):
+def _sample_skin(dance: HarmonicDance, times, builder, attributes, welded, sample_input):
     """The reduced dance as a skin on its samples (module docstring)."""
     skin = dance.sample_skin(times)
     gltf = builder.gltf
@@ -256,9 +310,9 @@ def _sample_skin(dance: HarmonicDance, times, builder, attributes, sample_input)
     for set_index in range(skin.indices.shape[1] // 4):
         columns = slice(4 * set_index, 4 * set_index + 4)
         setattr(attributes, f"JOINTS_{set_index}", builder.accessor(
-            skin.indices[:, columns].astype("<u2"), 4, pygltflib.ARRAY_BUFFER))
+            skin.indices[welded, columns].astype("<u2"), 4, pygltflib.ARRAY_BUFFER))
         setattr(attributes, f"WEIGHTS_{set_index}", builder.accessor(
-            skin.weights[:, columns].astype("<f4"), 4, pygltflib.ARRAY_BUFFER))
+            skin.weights[welded, columns].astype("<f4"), 4, pygltflib.ARRAY_BUFFER))
     samplers, channels = [], []
     frames = len(skin.amplitudes)
     for joint in range(count):

@@ -6,7 +6,8 @@ points as the default value, then points and extent at every time code) and, whe
 known, /Dance/Song (UsdMedia.SpatialAudio, non-spatial, from time code 0) naming the song file
 written beside it. Units are the model file's (metersPerUnit 1 is declared, as the source files
 carry no unit); upAxis Y, as glTF and the player use. Any dance (harmonics, either skinning of a
-rig) is exact here: the points are the reference positions.
+rig) is exact here: the points are the reference positions. A dance with a look keeps it
+(`usd_look`: UsdPreviewSurface materials per subset, the textures as files beside the stage).
 """
 
 from __future__ import annotations
@@ -15,10 +16,11 @@ import numpy as np
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdMedia, Vt
 
 from eigendance.export.dance import Dance
+from eigendance.export.usd_look import bind_look
 
 
 def write_usd(path: str, dance: Dance, times, fps: float, song: str | None = None,
-              progress=None) -> None:
+              progress=None, textures: list[str] = ()) -> None:
     """Write the USD stage of `dance` at `times` (time code i = times[i]·fps) to `path`.
 
     Parameters
@@ -29,6 +31,7 @@ def write_usd(path: str, dance: Dance, times, fps: float, song: str | None = Non
     fps : frames per second (timeCodesPerSecond).
     song : the song's file name relative to `path`'s folder, or None.
     progress : optional callable(frames done).
+    textures : the image files of the dance's look, written beside `path` (`usd_look`).
     """
     times = np.asarray(times, dtype=np.float64)
     layer = Sdf.Layer.CreateNew(path)
@@ -44,13 +47,17 @@ def write_usd(path: str, dance: Dance, times, fps: float, song: str | None = Non
     mesh = UsdGeom.Mesh.Define(stage, "/Dance/Mesh")
     mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
     mesh.CreateDoubleSidedAttr(True)
+    look = dance.appearance
+    faces = dance.faces if look is None else look.welded[look.triangles]
     mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(
-        np.full(len(dance.faces), 3, dtype=np.int32)))
-    mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(
-        dance.faces.astype(np.int32).ravel()))
+        np.full(len(faces), 3, dtype=np.int32)))
+    mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(faces.astype(np.int32).ravel()))
     points = mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(dance.rest.astype(np.float32)))
     extent = mesh.CreateExtentAttr(_extent(dance.rest))
-    mesh.CreateDisplayColorAttr(Vt.Vec3fArray([Gf.Vec3f(0.91, 0.66, 0.49)]))
+    if look is None:
+        mesh.CreateDisplayColorAttr(Vt.Vec3fArray([Gf.Vec3f(0.91, 0.66, 0.49)]))
+    else:
+        bind_look(stage, mesh, look, list(textures))
     for first, positions, _ in dance.frames(times):
         for offset, frame in enumerate(positions):  # USD sets one time sample per call
             code = Usd.TimeCode(round(times[first + offset] * fps, 6))

@@ -97,6 +97,7 @@ class HarmonicBasis:
     residual: np.ndarray
     laplacian: str = "cotan"
     seconds: float = 0.0  # time the eigen-solve took (not saved; 0 when it came from the cache)
+    appearance: object = None  # the mesh's assets.Appearance (not saved; docs/design.md#appearance)
     reduced: ReducedHarmonics | None = None  # a reduced basis: U = P U_r; eigenvectors is None
 
     @property
@@ -141,7 +142,8 @@ class HarmonicBasis:
             coefficients = reduced.transpose_lift(weighted)
             residual = mesh.vertices - reduced.lift(coefficients)
         return cls(mesh.vertices, mesh.faces, mesh.center, mesh.scale, mass, eigenvalues,
-                   eigenvectors, coefficients, residual, laplacian, seconds, reduced)
+                   eigenvectors, coefficients, residual, laplacian, seconds, mesh.appearance,
+                   reduced)
 
     @classmethod
     def from_mesh(cls, mesh: Mesh | str | os.PathLike, k: int, laplacian: str = "cotan",

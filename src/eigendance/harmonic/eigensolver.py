@@ -11,6 +11,7 @@ Both return (eigenvalues (k,) ascending, eigenvectors (n, k)) with Uᵀ M U = I.
 from __future__ import annotations
 
 import ctypes
+import math
 import multiprocessing
 import os
 import signal
@@ -411,7 +412,8 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, count, null)]
     else:
         bands = []
-    repairs = 0
+    repairs, rounds = 0, 0
+    most = 4 * math.ceil(k / count) + 8  # rounds of new bands before giving up (no progress)
     with _Workers(workers) as run:
         while True:
             pieces, gap = _stitch(bands) if bands else ([], None)
@@ -431,6 +433,10 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 bands = [_complete_band(stiffness, mass, band, missing) if band in wrong
                          else band for band in bands]
             else:
+                rounds += 1
+                if rounds > most:  # e.g. copies of a multiple eigenvalue at every band's edge
+                    raise InternalError(f"eigen-solver: the bands do not close after {most} "
+                                        "rounds", remedy={"solver": "eigsh"})
                 shifts = _next_shifts(pieces, gap, k, count, workers, mass.total)
                 bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
             bands.sort(key=lambda band: band.shift)
@@ -569,7 +575,10 @@ def _verify(values, pieces, bands):
 def solve(stiffness, mass, k: int, solver: str = "bands", progress=None):
     """Dispatch to `solve_bands` or `solve_eigsh`; see SOLVERS."""
     if solver == "bands":
-        return solve_bands(stiffness, mass, k, progress)
+        try:
+            return solve_bands(stiffness, mass, k, progress)
+        except InternalError:  # bands it cannot certify (many copies of multiple eigenvalues)
+            return solve_eigsh(stiffness, mass, k, progress)
     if solver == "eigsh":
         return solve_eigsh(stiffness, mass, k, progress)
     raise InputError(f"unknown solver '{solver}' (expected one of {', '.join(SOLVERS)})")

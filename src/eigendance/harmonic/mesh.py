@@ -10,14 +10,16 @@ repaired raises `InputError` with a one-line message.
 from __future__ import annotations
 
 import os
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
 
-from eigendance.errors import InputError, one_line
-from eigendance.files import check_readable, check_suffix
+from eigendance.assets.appearance import WELD_TOLERANCE, Appearance
+from eigendance.assets.model import Model
+from eigendance.assets.reader import read_model
+from eigendance.errors import InputError
+from eigendance.files import check_suffix
 from eigendance.geometry import (
     MAX_COORDINATE,
     bounding_box_diagonal,
@@ -31,9 +33,6 @@ ZERO_AREA = 1e-14
 # Smallest extent (largest side of the bounding box) of a model, in its own unit: positions are
 # written as float32, whose normal numbers end near 1e-38.
 MIN_EXTENT = 1e-30
-# An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
-# last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
-OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n]|$)", re.M)
 
 
 @dataclass
@@ -44,6 +43,8 @@ class Mesh:
     faces: (m, 3) int64 triangles, every vertex referenced, no zero-area or repeated triangle.
     vertex_map: (n_input,) int64, the cleaned index of each input vertex, -1 for dropped ones.
     report: what the clean-up changed, e.g. {"duplicate_vertices": 3, "zero_area_faces": 1}.
+    appearance: how the model is drawn (docs/design.md#appearance), its `welded` map onto
+        these vertices; None for a model without a look of its own (drawn in clay).
 
     Example
     -------
@@ -62,6 +63,7 @@ class Mesh:
     vertex_map: np.ndarray
     report: dict = field(default_factory=dict)
     name: str = "mesh"
+    appearance: Appearance | None = None
 
     @property
     def n(self) -> int:
@@ -73,7 +75,7 @@ class Mesh:
         return self.vertices * self.scale + self.center
 
     @classmethod
-    def from_arrays(cls, vertices, faces, name: str = "mesh") -> Mesh:
+    def from_arrays(cls, vertices, faces, name: str = "mesh", weld_tolerance: float = 0.0) -> Mesh:
         """Check, clean and normalise raw arrays (see the module docstring).
 
         Parameters
@@ -81,13 +83,15 @@ class Mesh:
         vertices : (n, 3) finite coordinates, any unit.
         faces : (m, 3) vertex indices of triangles (integers in 0 … n − 1).
         name : how messages call this mesh (a file name).
+        weld_tolerance : vertices closer than this fraction of the bounding-box diagonal are
+            merged (0: only exact duplicates; `geometry.weld`).
 
         Returns
         -------
         Mesh, normalised into [-1, 1]³; InputError for anything that cannot be repaired.
         """
         vertices, faces = _validated(vertices, faces, name)
-        vertices, faces, vertex_map, report = _cleaned(vertices, faces, name)
+        vertices, faces, vertex_map, report = _cleaned(vertices, faces, name, weld_tolerance)
         lower, upper = vertices.min(axis=0), vertices.max(axis=0)
         center = (lower + upper) / 2
         scale = float((upper - lower).max() / 2)
@@ -113,10 +117,22 @@ class Mesh:
                          self.report.items() if count)
 
 
-def load_mesh(path: str | os.PathLike) -> Mesh:
-    """Read a mesh file (OBJ, PLY, OFF, STL, glTF/GLB) with trimesh and clean it.
+    @classmethod
+    def from_model(cls, model: Model) -> Mesh:
+        """The analysis mesh of a model as drawn (`assets.read_model`): drawn vertices within
+        WELD_TOLERANCE of the diagonal welded, then cleaned as `from_arrays`; `appearance`
+        maps every drawn vertex onto its welded vertex (docs/design.md#appearance)."""
+        mesh = cls.from_arrays(model.positions, model.triangles, model.name,
+                               WELD_TOLERANCE if model.styled else 0.0)
+        mesh.appearance = model.appearance(mesh.vertex_map)
+        return mesh
 
-    All triangle primitives of a glTF scene are merged with their node transforms applied.
+
+def load_mesh(path: str | os.PathLike) -> Mesh:
+    """Read a mesh file (glTF/GLB, OBJ with its MTL, PLY, OFF, STL) and clean it.
+
+    Every mesh node of a glTF scene comes in with its node transform (`assets.read_model`);
+    a model with materials or vertex colours keeps them in `Mesh.appearance`.
 
     Parameters
     ----------
@@ -130,52 +146,11 @@ def load_mesh(path: str | os.PathLike) -> Mesh:
     -------
     >>> from importlib.resources import files
     >>> cat = load_mesh(files("eigendance") / "data" / "cat_lowres.obj")
-    >>> cat.n, len(cat.faces), float(np.abs(cat.vertices).max())
-    (7949, 15894, 1.0)
+    >>> cat.n, len(cat.faces), float(np.abs(cat.vertices).max()), cat.appearance
+    (7949, 15894, 1.0, None)
     """
-    import trimesh  # heavy (≈0.8 s): imported when a mesh file is read
-
     check_suffix(path, "mesh")
-    path = check_readable(path)
-    name = os.path.basename(path)
-    if path.lower().endswith(".obj"):
-        _check_obj_indices(path, name)
-    try:
-        loaded = trimesh.load(path, force="mesh", process=False)
-    except Exception as error:  # trimesh raises many types for malformed files
-        raise InputError(f"{name}: cannot read the mesh ({one_line(error, 200)})") from None
-    faces = getattr(loaded, "faces", None)
-    if faces is None or len(faces) == 0:
-        if path.lower().endswith(".stl"):
-            _check_stl_length(path, name)
-        raise InputError(f"{name}: the file holds no triangles (a point cloud or empty mesh)")
-    return Mesh.from_arrays(loaded.vertices, faces, name=name)
-
-
-def _check_obj_indices(path: str, name: str) -> None:
-    """InputError for a face corner with vertex index 0, which OBJ does not have."""
-    try:
-        with open(path, "rb") as file:
-            found = OBJ_ZERO_INDEX.search(file.read())
-    except OSError as error:
-        raise InputError(f"{name}: cannot read ({error.strerror})") from None
-    if found:
-        line = found.string.count(b"\n", 0, found.start()) + 1
-        raise InputError(f"{name}: line {line}: a face uses vertex index 0 (OBJ counts vertices "
-                         "from 1)")
-
-
-def _check_stl_length(path: str, name: str) -> None:
-    """InputError for a binary STL shorter than the triangle count of its header says."""
-    size = os.path.getsize(path)
-    with open(path, "rb") as file:
-        head = file.read(84)
-    if len(head) < 84 or head.lstrip().startswith(b"solid") and b"facet" in head:
-        return
-    count = int.from_bytes(head[80:84], "little")
-    if 84 + 50 * count > size:
-        raise InputError(f"{name}: truncated binary STL: the header announces {count} "
-                         f"triangles, the file holds {(size - 84) // 50}")
+    return Mesh.from_model(read_model(path))
 
 
 def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
@@ -205,10 +180,10 @@ def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
     return vertices, faces
 
 
-def _cleaned(vertices, faces, name):
-    """Merge exact duplicates, drop degenerate/repeated triangles and unused vertices."""
+def _cleaned(vertices, faces, name, tolerance=0.0):
+    """Merge duplicates, drop degenerate/repeated triangles and unused vertices."""
     n_input = len(vertices)
-    first, first_to_unique = weld(vertices)  # merged vertices keep their first input order
+    first, first_to_unique = weld(vertices, tolerance)  # merged: first input order kept
     unique = vertices[first]
     faces = first_to_unique[faces]
     duplicate_vertices = n_input - len(unique)

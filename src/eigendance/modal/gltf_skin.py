@@ -1,20 +1,22 @@
 """glTF 2.0 skins as skeletons: joint hierarchy, rest pose, skinned mesh (docs/design.md#skeleton).
 
-pygltflib parses the file (.glb or .gltf with embedded, external or binary-chunk buffers); this
-module decodes accessors into numpy arrays, walks the node tree (`read_skins`) and turns the
-joints into bodies and elastic joints (`skeleton_from_gltf`).
+`assets.read_model` reads the file (every mesh node, skins, meshes attached to bones, materials);
+this module keeps the joints that move something (`moving_joints`) and turns them into bodies
+and elastic joints (`skeleton_from_gltf`).
 """
 
 from __future__ import annotations
 
-import base64
 import os
 from dataclasses import dataclass, field
 
 import numpy as np
-import pygltflib
 
-from eigendance.errors import InputError, one_line
+from eigendance.assets.appearance import WELD_TOLERANCE
+from eigendance.assets.gltf import GltfFile
+from eigendance.assets.model import Model
+from eigendance.assets.reader import read_model
+from eigendance.errors import InputError
 from eigendance.geometry import weld
 from eigendance.modal.skeleton import (
     DEFAULT_JOINT_FREQUENCY,
@@ -24,10 +26,9 @@ from eigendance.modal.skeleton import (
     set_automatic_stiffness,
 )
 
-COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
-                   5125: np.uint32, 5126: np.float32}
-WIDTHS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
-TRIANGLES = 4
+# A joint carries the skin when some vertex gives it at least this weight (or a mesh hangs
+# from it); joints that carry nothing and connect nothing that does are left out.
+CARRY_WEIGHT = 1e-6
 
 
 @dataclass
@@ -54,261 +55,128 @@ def skeleton_from_gltf(path: str | os.PathLike,
     - Rest pose: the file's node pose. Joint j sits at the origin of its world matrix W_j;
       skinned vertices are placed at Σ_j w_j W_j·IBM_j·x (the bind pose, x itself when the
       inverse bind matrices match the nodes, as they do in exported rigs).
-    - Bodies: one per joint node, from the node to its child joint (the child with the most
-      descendant joints, then the farthest), or, for a leaf, along the node's own +y axis
-      (the bone axis of Blender and most exporters) as far as the vertices it weighs reach.
-      Radius: the median distance from the axis of the vertices the body dominates, clamped
-      to [0.02, 1]·length. Density DEFAULT_DENSITY (the size unit is taken to be metres;
-      frequencies do not depend on it with the default stiffness).
-    - Joints: one spherical joint (free ω, natural for characters) between each joint node
-      and its parent joint node, at the child's position; stiffness per rotation row from
-      `skeleton.automatic_stiffness`: each of the two parts a joint joins (for a limb: the
-      limb from that joint outward, and the rest) swings about it like a pendulum of its own
-      length under one gravity, at `stiffness_frequency` Hz (1 Hz) when its centre lies a
-      quarter of the rig's size from the joint. Other choices: `Skeleton.with_stiffness`, or
-      change `joints` (type, stiffness) of the returned skeleton in code; the skin stays valid.
-    - Skin: every triangle primitive of every skinned mesh node (several skins sharing one
-      skeleton are merged by joint node); JOINTS_n/WEIGHTS_n read, renormalised to sum 1
-      (vertices with no weight go to the nearest body); seam vertices (same position)
-      welded.
+    - Skin: every mesh node of the scene (`assets.read_model`): skinned meshes (several skins
+      sharing one skeleton are merged by joint node) with their JOINTS_n/WEIGHTS_n, and meshes
+      attached to a bone (a mesh node below a joint node: a hat, a gun) with weight 1 on that
+      joint; weights renormalised to sum 1 (vertices with no weight go to the nearest body);
+      drawn vertices within WELD_TOLERANCE of the diagonal welded (`Skeleton.appearance` maps
+      them back, with the file's materials).
+    - Joints that move nothing are left out (`moving_joints`): IK and pole targets, roots above
+      the skeleton.
+    - Bodies: one per joint kept, from the node to its child joint (the child with the most
+      descendant joints, then the farthest), or, for a leaf, toward the middle of the vertices
+      it carries, else along the node's own +y axis (the bone axis of Blender and most
+      exporters). Radius: the median distance from the axis of the vertices the body
+      dominates, clamped to [0.02, 1]·length. Density DEFAULT_DENSITY (the size unit is taken
+      to be metres; frequencies do not depend on it with the default stiffness).
+    - Joints: one spherical joint (free ω, natural for characters) between each joint kept and
+      its nearest kept ancestor, at the child's position; stiffness per rotation row from
+      `skeleton.automatic_stiffness`: each of the two parts a joint joins swings about it like a
+      pendulum of its own length under one gravity, at `stiffness_frequency` Hz (1 Hz) when its
+      centre lies a quarter of the rig's size from the joint. Other choices:
+      `Skeleton.with_stiffness`, or change `joints` (type, stiffness) of the returned skeleton in
+      code; the skin stays valid.
     """
-    rig = read_skins(path)
-    return _skeleton_from_rig(rig, os.path.basename(os.fspath(path)), stiffness_frequency)
+    model = read_model(path, name)
+    label = name or os.path.basename(os.fspath(path))
+    if model.skin is None:
+        raise InputError(f"{label}: the file has no skin (no skeleton to analyse)")
+    rig, welded = skinned_rig(model)
+    skeleton = _skeleton_from_rig(rig, label, stiffness_frequency)
+    skeleton.appearance = model.appearance(welded)
+    return skeleton
 
 
 def has_skin(path: str | os.PathLike) -> bool:
     """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable."""
     try:
-        document = pygltflib.GLTF2().load(os.fspath(path))
-    except Exception:  # noqa: BLE001 - pygltflib raises many kinds; the mesh reader says why
+        return bool(GltfFile(path).document.skins)
+    except Exception:  # noqa: BLE001 - the mesh reader says why the file cannot be read
         return False
-    return bool(document is not None and document.skins)
 
 
-def read_skins(path: str | os.PathLike) -> SkinnedRig:
-    """Every skin of the file merged by joint node (several skins may share one skeleton)."""
-
-    path = os.fspath(path)
-    label = os.path.basename(path)
-    if not os.path.exists(path):
-        raise InputError(f"{path}: no such file")
-    try:
-        document = pygltflib.GLTF2().load(path)
-    except Exception as error:  # pygltflib raises many kinds on a corrupt file
-        raise InputError(f"{label}: not a readable glTF file ({one_line(error, 150)})") from None
-    if document is None:
-        raise InputError(f"{label}: not a readable glTF file")
-    try:
-        return _read(document, label)
-    except InputError:
-        raise
-    except (IndexError, KeyError, ValueError, TypeError, AttributeError) as error:
-        raise InputError(f"{label}: malformed glTF ({one_line(error, 150)})") from None
-
-
-def _read(document, label: str) -> SkinnedRig:
-    if not document.skins:
-        raise InputError(f"{label}: the file has no skin (no skeleton to analyse)")
-    buffers = {}
-
-    def buffer(index):
-        if index not in buffers:
-            uri = document.buffers[index].uri
-            if uri and uri.startswith("data:"):  # any media type (pygltflib knows only one)
-                if ";base64," not in uri:
-                    raise InputError(f"{label}: buffer {index} is not base64 data")
-                data = base64.b64decode(uri.split(";base64,", 1)[1])
-            else:
-                data = document.get_data_from_buffer_uri(uri)
-            if data is None:
-                raise InputError(f"{label}: buffer {index} cannot be read")
-            buffers[index] = bytes(data)
-        return buffers[index]
-
-    def accessor(index) -> np.ndarray:
-        item = document.accessors[index]
-        dtype = np.dtype(COMPONENT_TYPES[item.componentType]).newbyteorder("<")
-        width = WIDTHS[item.type]
-        if item.bufferView is None:
-            values = np.zeros((item.count, width), dtype=dtype)
-        else:
-            view = document.bufferViews[item.bufferView]
-            data = buffer(view.buffer)
-            offset = (view.byteOffset or 0) + (item.byteOffset or 0)
-            stride = view.byteStride or dtype.itemsize * width
-            needed = offset + stride * (item.count - 1) + dtype.itemsize * width
-            if item.count and needed > len(data):
-                raise InputError(f"{label}: accessor {index} runs past its buffer")
-            values = np.ndarray((item.count, width), dtype=dtype, buffer=data, offset=offset,
-                                strides=(stride, dtype.itemsize)).copy()
-        if item.sparse is not None and item.sparse.count:
-            sparse = item.sparse
-            indices = _raw(document, buffer, sparse.indices.bufferView,
-                           sparse.indices.byteOffset, sparse.indices.componentType,
-                           sparse.count, 1)[:, 0].astype(np.int64)
-            values[indices] = _raw(document, buffer, sparse.values.bufferView,
-                                   sparse.values.byteOffset, item.componentType,
-                                   sparse.count, width)
-        if item.normalized and dtype.kind in "iu":
-            return np.maximum(values / np.iinfo(dtype).max, -1.0)
-        return values
-
-    nodes = document.nodes
-    parent_node = np.full(len(nodes), -1)
-    for index, node in enumerate(nodes):
-        for child in node.children or []:
-            parent_node[child] = index
-    world = _world_matrices(nodes, parent_node)
-
-    joint_nodes: list[int] = []
-    for skin in document.skins:
-        for node in skin.joints:
-            if node not in joint_nodes:
-                joint_nodes.append(node)
-    column = {node: position for position, node in enumerate(joint_nodes)}
-    names, seen = [], set()
-    for node in joint_nodes:
-        name = nodes[node].name or f"joint{node}"
-        if name in seen:
-            name = f"{name}#{node}"
-        seen.add(name)
-        names.append(name)
-    parents = np.full(len(joint_nodes), -1)
-    for position, node in enumerate(joint_nodes):
-        ancestor = parent_node[node]
-        while ancestor >= 0 and ancestor not in column:
-            ancestor = parent_node[ancestor]
-        parents[position] = column[ancestor] if ancestor >= 0 else -1
-
-    pieces_vertices, pieces_faces, pieces_weights = [], [], []
-    offset = 0
+def skinned_rig(model: Model) -> tuple[SkinnedRig, np.ndarray]:
+    """The welded skin of a model with skins, over the joints that move something, and the
+    welded vertex of each drawn vertex (n_d,)."""
+    skin = model.skin
+    weights = model.weights.copy()
+    hanging = np.flatnonzero(model.bones >= 0)
+    weights[hanging, model.bones[hanging]] = 1.0
+    keep = moving_joints(skin.parents, weights.max(axis=0, initial=0) >= CARRY_WEIGHT)
     notes = []
-    for node in nodes:
-        if node.skin is None or node.mesh is None:
-            continue
-        skin = document.skins[node.skin]
-        skin_columns = np.array([column[j] for j in skin.joints])
-        if skin.inverseBindMatrices is not None:
-            inverse_bind = accessor(skin.inverseBindMatrices).reshape(-1, 4, 4)
-            inverse_bind = np.swapaxes(inverse_bind, 1, 2).astype(float)  # column-major
-        else:
-            inverse_bind = np.tile(np.eye(4), (len(skin.joints), 1, 1))
-        skinning = world[np.array(skin.joints)] @ inverse_bind  # (n_skin_joints, 4, 4)
-        for primitive in document.meshes[node.mesh].primitives:
-            mode = TRIANGLES if primitive.mode is None else primitive.mode
-            attributes = primitive.attributes
-            if mode != TRIANGLES or attributes.POSITION is None:
-                notes.append("skipped a non-triangle primitive")
-                continue
-            positions = accessor(attributes.POSITION).astype(float)
-            count = len(positions)
-            weights = np.zeros((count, len(joint_nodes)))
-            set_index = 0
-            while getattr(attributes, f"JOINTS_{set_index}", None) is not None:
-                joints = accessor(getattr(attributes, f"JOINTS_{set_index}")).astype(np.int64)
-                weight_index = getattr(attributes, f"WEIGHTS_{set_index}", None)
-                if weight_index is None:
-                    raise InputError(f"{label}: JOINTS_{set_index} without "
-                                          f"WEIGHTS_{set_index}")
-                values = accessor(weight_index).astype(float)
-                if joints.min(initial=0) < 0 or joints.max(initial=0) >= len(skin.joints):
-                    raise InputError(f"{label}: a vertex names joint "
-                                          f"{joints.max()} of a {len(skin.joints)}-joint skin")
-                rows = np.repeat(np.arange(count), joints.shape[1])
-                np.add.at(weights, (rows, skin_columns[joints.reshape(-1)]),
-                          np.clip(values.reshape(-1), 0, None))
-                set_index += 1
-            if set_index == 0:
-                notes.append("skipped a primitive without skin weights")
-                continue
-            # Rest pose: Σ_j w_j (W_j · IBM_j) x, with weights over this skin's joints.
-            local = weights[:, skin_columns]
-            total = local.sum(axis=1, keepdims=True)
-            blend = (local / np.where(total > 0, total, 1)) @ skinning.reshape(-1, 16)
-            blend[total[:, 0] <= 0] = np.eye(4).reshape(-1)
-            blend = blend.reshape(-1, 4, 4)
-            positions = np.einsum("nij,nj->ni", blend[:, :3, :3], positions) + blend[:, :3, 3]
-            if primitive.indices is not None:
-                indices = accessor(primitive.indices).reshape(-1).astype(np.int64)
-            else:
-                indices = np.arange(count)
-            if len(indices) % 3 or (len(indices) and (indices.max() >= count
-                                                       or indices.min() < 0)):
-                raise InputError(f"{label}: a primitive has bad triangle indices")
-            pieces_vertices.append(positions)
-            pieces_weights.append(weights)
-            pieces_faces.append(indices.reshape(-1, 3) + offset)
-            offset += count
-    joint_matrices = world[np.array(joint_nodes)]
-    if not pieces_vertices:
-        return SkinnedRig(names, parents, joint_matrices, np.zeros((0, 3)),
-                          np.zeros((0, 3), dtype=np.int64), np.zeros((0, len(joint_nodes))),
-                          notes + ["no skinned triangles"])
-    vertices = np.concatenate(pieces_vertices)
-    faces = np.concatenate(pieces_faces)
-    weights = np.concatenate(pieces_weights)
-    if not np.all(np.isfinite(vertices)) or not np.all(np.isfinite(weights)):
-        raise InputError(f"{label}: non-finite vertex positions or weights")
-    vertices, faces, weights, welded = weld_seams(vertices, faces, weights)
-    if welded:
-        notes.append(f"welded {welded} seam vertices")
-    return SkinnedRig(names, parents, joint_matrices, vertices, faces, weights, notes)
+    if not keep.all():
+        notes.append(f"left out {int((~keep).sum())} joints that move no vertex "
+                     f"({', '.join(np.array(skin.names)[~keep][:4])}"
+                     f"{', …' if (~keep).sum() > 4 else ''})")
+    if len(hanging):
+        notes.append(f"{len(hanging)} vertices of meshes attached to bones follow their bone")
+    column = np.cumsum(keep) - 1
+    parents = np.array([_kept_ancestor(skin.parents, j, keep, column)
+                        for j in np.flatnonzero(keep)], dtype=np.int64)
+    first, welded = weld(model.positions, WELD_TOLERANCE)
+    counts = np.bincount(welded, minlength=len(first)).astype(float)
+    merged = np.zeros((len(first), int(keep.sum())))
+    np.add.at(merged, welded, weights[:, keep])
+    faces = welded[model.triangles]
+    faces = faces[(faces[:, 0] != faces[:, 1]) & (faces[:, 1] != faces[:, 2])
+                  & (faces[:, 0] != faces[:, 2])]
+    if len(first) < len(welded):
+        notes.append(f"welded {len(welded) - len(first)} seam vertices")
+    rig = SkinnedRig([n for n, k in zip(skin.names, keep, strict=True) if k], parents,
+                     skin.matrices[keep], model.positions[first], faces,
+                     merged / counts[:, None], notes)
+    return rig, welded
 
 
-def weld_seams(vertices, faces, weights, tolerance: float = 1e-7):
-    """Merge vertices closer than tolerance·(bounding-box diagonal) (seams split by exporters);
-    weights of merged vertices are averaged; faces that collapse are dropped."""
-    first, inverse = weld(vertices, tolerance)
-    counts = np.bincount(inverse, minlength=len(first)).astype(float)
-    merged_weights = np.zeros((len(first), weights.shape[1]))
-    np.add.at(merged_weights, inverse, weights)
-    merged_weights /= counts[:, None]
-    faces = inverse[faces]
-    keep = (faces[:, 0] != faces[:, 1]) & (faces[:, 1] != faces[:, 2]) & \
-        (faces[:, 0] != faces[:, 2])
-    return vertices[first], faces[keep], merged_weights, len(vertices) - len(first)
+def moving_joints(parents: np.ndarray, carrying: np.ndarray) -> np.ndarray:
+    """Which joints enter the modal model: (n_j,) bool.
+
+    A joint is kept when it carries the skin (a vertex weight or a mesh attached to it), or
+    when it connects joints that do: at least two of its directions — each child's subtree,
+    and the rest of its tree above it — hold a carrying joint (a hips joint between spine and
+    legs, a twist bone inside an arm). Joints that carry nothing and lie beyond every carrying
+    joint (IK and pole targets, a root above the skeleton, an empty tree) are left out. When
+    no joint carries anything, all are kept.
+
+    Example
+    -------
+    >>> # root → hips → (spine, leg); the leg → pole target; only spine and leg carry vertices
+    >>> moving_joints(np.array([-1, 0, 1, 1, 3]), np.array([0, 0, 1, 1, 0], bool)).tolist()
+    [False, True, True, True, False]
+    """
+    carrying = np.asarray(carrying, dtype=bool)
+    if not carrying.any():
+        return np.ones(len(parents), dtype=bool)
+    children = _children(parents)
+    below = carrying.astype(int)  # carrying joints in each subtree
+    root = np.arange(len(parents))
+    for joint in _postorder(children, parents):
+        if parents[joint] >= 0:
+            below[parents[joint]] += below[joint]
+    for joint in _preorder(children, parents):
+        if parents[joint] >= 0:
+            root[joint] = root[parents[joint]]
+    keep = carrying.copy()
+    for joint in np.flatnonzero(~carrying):
+        directions = sum(below[child] > 0 for child in children[joint])
+        directions += below[root[joint]] - below[joint] > 0
+        keep[joint] = directions >= 2
+    return keep
 
 
-def _raw(document, buffer, view_index, byte_offset, component_type, count, width):
-    dtype = np.dtype(COMPONENT_TYPES[component_type]).newbyteorder("<")
-    view = document.bufferViews[view_index]
-    offset = (view.byteOffset or 0) + (byte_offset or 0)
-    return np.frombuffer(buffer(view.buffer), dtype=dtype, count=count * width,
-                         offset=offset).reshape(count, width)
+def _kept_ancestor(parents, joint, keep, column) -> int:
+    joint = parents[joint]
+    while joint >= 0 and not keep[joint]:
+        joint = parents[joint]
+    return int(column[joint]) if joint >= 0 else -1
 
 
-def _local_matrix(node) -> np.ndarray:
-    if node.matrix is not None:
-        return np.array(node.matrix, dtype=float).reshape(4, 4).T  # column-major
-    matrix = np.eye(4)
-    if node.rotation is not None:
-        x, y, z, w = np.asarray(node.rotation, dtype=float) / np.linalg.norm(node.rotation)
-        matrix[:3, :3] = [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                          [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                          [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
-    if node.scale is not None:
-        matrix[:3, :3] = matrix[:3, :3] * np.asarray(node.scale, dtype=float)[None, :]
-    if node.translation is not None:
-        matrix[:3, 3] = node.translation
-    return matrix
-
-
-def _world_matrices(nodes, parent_node) -> np.ndarray:
-    world = np.full((len(nodes), 4, 4), np.nan)
-
-    def resolve(index, depth=0):
-        if not np.isnan(world[index, 0, 0]):
-            return world[index]
-        if depth > len(nodes):
-            raise InputError("the node hierarchy has a cycle")
-        parent = parent_node[index]
-        local = _local_matrix(nodes[index])
-        world[index] = local if parent < 0 else resolve(parent, depth + 1) @ local
-        return world[index]
-
-    for index in range(len(nodes)):
-        resolve(index)
-    return world
+def _children(parents) -> list[list[int]]:
+    children = [[] for _ in parents]
+    for child, parent in enumerate(parents):
+        if parent >= 0:
+            children[parent].append(child)
+    return children
 
 
 def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:

@@ -175,9 +175,11 @@ class Skeleton:
     """Bodies and pairwise joints, optionally with a skinned mesh.
 
     vertices (n, 3), faces (m, 3) and weights (n, n_bodies, rows summing to 1) describe the skin
-    in the same coordinates as the bodies; all three are None for a bare skeleton. After rest-pose
-    edits (`rotate_joint`), bind_vertices are the skin as loaded and pose (n_bodies, 4, 4) each
-    body's rigid transform since then: vertices = Σ_b w_b pose_b · bind_vertices.
+    in the same coordinates as the bodies; all three are None for a bare skeleton. appearance:
+    how the skin is drawn (materials, drawn vertices on these vertices), or None (clay). After
+    rest-pose edits (`rotate_joint`), bind_vertices are the skin as loaded and pose
+    (n_bodies, 4, 4) each body's rigid transform since then:
+    vertices = Σ_b w_b pose_b · bind_vertices.
 
     Parameters
     ----------
@@ -204,6 +206,7 @@ class Skeleton:
     notes: list[str] = field(default_factory=list)
     bind_vertices: np.ndarray | None = None
     pose: np.ndarray | None = None
+    appearance: object = None  # assets.Appearance of the skin (docs/design.md#appearance)
 
     def __post_init__(self):
         names = [body.name for body in self.bodies]
@@ -431,7 +434,8 @@ class Skeleton:
         skin = [None if a is None else a.copy() for a in (self.vertices, self.faces,
                                                          self.weights)]
         posed = [None if a is None else a.copy() for a in (self.bind_vertices, self.pose)]
-        return Skeleton(bodies, joints, self.name, *skin, list(self.notes), *posed)
+        return Skeleton(bodies, joints, self.name, *skin, list(self.notes), *posed,
+                        self.appearance)
 
     @property
     def size(self) -> float:
@@ -559,7 +563,7 @@ class Skeleton:
         joints = [Joint(j.name, j.type, j.bodies, j.position, j.stiffness * stiffness, j.axis,
                         j.damping) for j in self.joints]
         return Skeleton(bodies, joints, self.name, self.vertices, self.faces, self.weights,
-                        list(self.notes), self.bind_vertices, self.pose)
+                        list(self.notes), self.bind_vertices, self.pose, self.appearance)
 
 
 def is_skeleton_json(path: str | os.PathLike) -> bool:

@@ -18,7 +18,9 @@ disk cache); each job records its progress for the page (server-sent events). `s
 solve in progress at once (its band worker processes are killed) and `close` stops the thread.
 
 Rigs: the built-in rigs are listed from the start and analysed when first asked for; a skeleton
-JSON, or a glTF file with a skin (which is also a mesh), is analysed when added. Each rig item
+JSON, or a glTF file with a skin (listed once, as a rig; as a mesh if its skin cannot be
+analysed), is analysed when added. `first` is
+the first model given to the server (a mesh or a rig): what the page opens first. Each rig item
 keeps its original skeleton and the current one (stiffness and rest-pose edits); every edit
 analyses the rig again (`Rig.from_skeleton`) and bumps its revision.
 """
@@ -252,6 +254,7 @@ class Library:
         self.mappings: dict[str, MappingItem] = {}
         self.jobs: dict[str, Job] = {}
         self.rigs: dict[str, RigItem] = {}
+        self.first: dict | None = None  # {"kind": "mesh" | "rig", "id"} of the first model file
         self.contents: dict[tuple, str] = {}  # content key → item id
         self.arriving: dict[tuple, threading.Event] = {}  # content keys being added now
         self.budget = Budget(memory_budget)
@@ -273,7 +276,10 @@ class Library:
         name = name or os.path.basename(path)
         kind = kind_of(name)
         check_readable(path)
-        return self._add_file(path, name, kind, file_digest(path), "file", k)[0]
+        item = self._add_file(path, name, kind, file_digest(path), "file", k)[0]
+        if self.first is None and isinstance(item, MeshItem | RigItem):
+            self.first = {"kind": "mesh" if isinstance(item, MeshItem) else "rig", "id": item.id}
+        return item
 
     def add_upload(self, stored: str, name: str, kind: str, digest: str):
         """Register an uploaded file, written to `stored` inside the library folder, under a
@@ -301,6 +307,8 @@ class Library:
             document = read_json(path, name)
             if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
                 kind = "rig"
+        elif kind == "mesh" and suffix in (".glb", ".gltf") and has_skin(path):
+            kind = "rig"  # a skinned glTF is a rig (its skin the mesh the modes move)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
             return self.add_mapping(document, name)
@@ -310,9 +318,13 @@ class Library:
         try:
             if kind == "mesh":
                 item = self.add_mesh(path, name, k, key)
-                self.add_skinned_rig(item, path, origin)
             elif kind == "audio":
                 item = self.add_song(path, name, key)
+            elif suffix in (".glb", ".gltf"):  # a skin that cannot be analysed: a mesh
+                try:
+                    item = self.add_rig(path, name, origin, key)
+                except InputError:
+                    item = self.add_mesh(path, name, k, key)
             else:
                 item = self.add_rig(path, name, origin, key)
         finally:
@@ -490,20 +502,6 @@ class Library:
         self._admit(item, self.rigs, f"{name}: the rig")
         return item
 
-    def add_skinned_rig(self, mesh: MeshItem, path: str, origin: str) -> RigItem | None:
-        """The rig of a mesh file that has a skin (glTF), or None. A skin that cannot be
-        analysed is kept as an item with its error, so the page can say why."""
-        if not has_skin(path):
-            return None
-        item = RigItem(new_id(), mesh.name, origin, path)
-        try:
-            self._analyse(item, load_rig(path, mesh.name))
-        except EigendanceError as error:
-            item.error = self.public(str(error), {path: mesh.name})
-        self._admit(item, self.rigs, f"{mesh.name}: the rig")
-        mesh.rig = item.id
-        return item
-
     def ready_rig(self, item: RigItem) -> RigItem:
         """The item analysed (a built-in rig is analysed on first use); InputError (409) if
         it could not be."""
@@ -649,6 +647,8 @@ class Library:
                     "songs": [s.as_json() for s in self.songs.values()],
                     "mappings": [m.as_json() for m in self.mappings.values()],
                     "rigs": [r.as_json() for r in self.rigs.values()],
+                    "first": self.first if self._find((self.first or {}).get("id", ""))
+                    else None,
                     "memory": {"used": self.budget.used, "budget": self.budget.limit}}
 
     def wait(self, timeout: float | None = None) -> bool:

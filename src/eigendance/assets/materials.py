@@ -1,0 +1,180 @@
+"""Materials as `appearance.Material`: from a glTF document, or from trimesh's visuals of an
+OBJ with its MTL (docs/design.md#appearance).
+
+An image that cannot be read (missing, truncated, neither PNG nor JPEG) costs only its
+texture: the material keeps its factors, and the image is listed in the model's warning.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+
+import numpy as np
+
+from eigendance.assets.appearance import ALPHA_MODES, Image, Material, Texture
+from eigendance.assets.gltf import GltfFile
+from eigendance.errors import InputError
+
+SAMPLER_FIELDS = ("magFilter", "minFilter", "wrapS", "wrapT")
+
+
+class Images:
+    """The images a model's materials use, read once each, in the order first used."""
+
+    def __init__(self):
+        self.images: list[Image] = []
+        self.index: dict = {}  # the source's key (glTF image index, file path) → our index
+        self.problems: list[str] = []
+
+    def add(self, key, read) -> int | None:
+        """Our index of the image with `key`, reading it with read() → (name, mime, bytes) the
+        first time; None (and a problem noted) if it cannot be read."""
+        if key not in self.index:
+            try:
+                name, mime, data = read()
+                _check_decodes(data)
+            except InputError as error:
+                self.problems.append(str(error))
+                self.index[key] = None
+            else:
+                self.index[key] = len(self.images)
+                self.images.append(Image(name, mime, data))
+        return self.index[key]
+
+
+def _check_decodes(data: bytes) -> None:
+    """InputError unless Pillow can read the image's header and structure."""
+    from PIL import Image as PillowImage  # imported when a textured model is read
+
+    try:
+        with PillowImage.open(io.BytesIO(data)) as image:
+            image.verify()
+    except Exception as error:  # noqa: BLE001 - Pillow raises many kinds on broken images
+        raise InputError(f"a broken image ({type(error).__name__})") from None
+
+
+def gltf_materials(gltf: GltfFile, images: Images) -> list[Material]:
+    """Every material of the document, in order (KHR_materials_unlit and
+    KHR_texture_transform included)."""
+    return [_gltf_material(gltf, index, item, images)
+            for index, item in enumerate(gltf.document.materials or [])]
+
+
+def _gltf_material(gltf: GltfFile, index: int, item, images: Images) -> Material:
+    pbr = item.pbrMetallicRoughness
+
+    def texture(info, scale_field=None):
+        return _texture(gltf, info, images, scale_field, f"material {index}")
+
+    extensions = item.extensions or {}
+    emissive = _numbers(item.emissiveFactor, 3, (0.0, 0.0, 0.0))
+    strength = (extensions.get("KHR_materials_emissive_strength") or {}).get(
+        "emissiveStrength", 1.0)
+    if isinstance(strength, int | float) and math.isfinite(strength) and strength >= 0:
+        emissive = tuple(float(c) * float(strength) for c in emissive)
+    mode = item.alphaMode if item.alphaMode in ALPHA_MODES else "OPAQUE"
+    cutoff = item.alphaCutoff if isinstance(item.alphaCutoff, int | float) else 0.5
+    return Material(
+        name=str(item.name or f"material {index}"),
+        base_color=_numbers(getattr(pbr, "baseColorFactor", None), 4, (1.0, 1.0, 1.0, 1.0)),
+        base_color_texture=texture(getattr(pbr, "baseColorTexture", None)),
+        metallic=_number(getattr(pbr, "metallicFactor", None), 1.0),
+        roughness=_number(getattr(pbr, "roughnessFactor", None), 1.0),
+        metallic_roughness_texture=texture(getattr(pbr, "metallicRoughnessTexture", None)),
+        normal_texture=texture(item.normalTexture, "scale"),
+        occlusion_texture=texture(item.occlusionTexture, "strength"),
+        emissive=emissive, emissive_texture=texture(item.emissiveTexture),
+        alpha_mode=mode, alpha_cutoff=float(cutoff), double_sided=bool(item.doubleSided),
+        unlit="KHR_materials_unlit" in extensions)
+
+
+def _texture(gltf: GltfFile, info, images: Images, scale_field, what) -> Texture | None:
+    """A textureInfo as a `Texture`, or None when absent or its image cannot be read."""
+    if info is None:
+        return None
+    textures = gltf.document.textures or []
+    index = getattr(info, "index", None)
+    if not isinstance(index, int) or not 0 <= index < len(textures):
+        raise gltf.message(f"{what} names texture {index!r}, which does not exist")
+    texture = textures[index]
+    source = texture.source
+    if source is None:  # only an extension's image (KTX2, WebP): not one we read
+        images.problems.append(f"texture {index}: no PNG or JPEG source")
+        return None
+    image = images.add(("gltf", source), lambda: gltf.image(source))
+    if image is None:
+        return None
+    sampler = {}
+    if isinstance(texture.sampler, int) and 0 <= texture.sampler < len(gltf.document.samplers):
+        item = gltf.document.samplers[texture.sampler]
+        sampler = {name: getattr(item, name) for name in SAMPLER_FIELDS
+                   if isinstance(getattr(item, name, None), int)}
+    transform = (getattr(info, "extensions", None) or {}).get("KHR_texture_transform") or {}
+    tex_coord = transform.get("texCoord", getattr(info, "texCoord", 0) or 0)
+    scale = getattr(info, scale_field, None) if scale_field else None
+    return Texture(image=image, tex_coord=int(tex_coord) if isinstance(tex_coord, int) else 0,
+                   scale=_number(scale, 1.0),
+                   offset=_numbers(transform.get("offset"), 2, (0.0, 0.0)),
+                   rotation=_number(transform.get("rotation"), 0.0),
+                   uv_scale=_numbers(transform.get("scale"), 2, (1.0, 1.0)), sampler=sampler)
+
+
+def _number(value, default: float) -> float:
+    ok = isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+    return float(value) if ok else default
+
+
+def _numbers(values, count: int, default: tuple) -> tuple:
+    if not isinstance(values, list | tuple) or len(values) != count:
+        return default
+    numbers = [_number(value, math.nan) for value in values]
+    return default if any(math.isnan(x) for x in numbers) else tuple(numbers)
+
+
+# --- trimesh (OBJ + MTL, PLY) -------------------------------------------------------------------
+
+def srgb_to_linear(srgb) -> np.ndarray:
+    """sRGB components in [0, 1] → linear (glTF colour factors are linear)."""
+    c = np.clip(np.asarray(srgb, dtype=np.float64), 0.0, 1.0)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def trimesh_material(material, images: Images, name: str) -> Material:
+    """A trimesh material (SimpleMaterial from an MTL, or PBRMaterial) as a `Material`.
+
+    An MTL's Kd is an sRGB colour (as Blender's importer reads it): it becomes the linear base
+    colour; `map_Kd` the base colour texture, `d` the alpha (BLEND below 1)."""
+    pbr = material.to_pbr() if hasattr(material, "to_pbr") else material
+    color = getattr(pbr, "baseColorFactor", None)
+    rgba = np.ones(4) if color is None else np.asarray(color, dtype=float).reshape(-1)[:4]
+    if rgba.max() > 1.0:  # trimesh keeps colours as bytes
+        rgba = rgba / 255.0
+    rgba = np.concatenate([srgb_to_linear(rgba[:3]), rgba[3:4] if len(rgba) > 3 else [1.0]])
+    texture = None
+    image = getattr(pbr, "baseColorTexture", None)
+    if image is not None:
+        index = images.add(("trimesh", id(image)), lambda: _pillow_bytes(image, name))
+        texture = None if index is None else Texture(index)
+    return Material(name=str(getattr(material, "name", "") or "material"),
+                    base_color=tuple(float(c) for c in rgba), base_color_texture=texture,
+                    metallic=_number(getattr(pbr, "metallicFactor", None), 0.0),
+                    roughness=_number(getattr(pbr, "roughnessFactor", None), 0.8),
+                    alpha_mode="BLEND" if rgba[3] < 1 else "OPAQUE")
+
+
+def _pillow_bytes(image, name: str) -> tuple[str, str, bytes]:
+    """(name, mime, bytes) of a Pillow image trimesh decoded: its original file's bytes when
+    Pillow kept them (PNG, JPEG), else re-encoded as PNG."""
+    form = getattr(image, "format", None)
+    filename = getattr(image, "filename", "") or ""
+    if form in ("PNG", "JPEG") and filename:
+        with open(filename, "rb") as file:
+            return filename.rsplit("/", 1)[-1], f"image/{form.lower()}", file.read()
+    buffer = io.BytesIO()
+    try:
+        image.save(buffer, format="PNG")
+    except Exception as error:  # noqa: BLE001 - Pillow's kinds
+        raise InputError(f"{name}: a texture cannot be encoded ({type(error).__name__})") \
+            from None
+    return "texture.png", "image/png", buffer.getvalue()

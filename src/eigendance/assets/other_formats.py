@@ -1,0 +1,179 @@
+"""Models that are not glTF: OBJ (with its MTL and images), PLY (with vertex colours), OFF and
+STL through trimesh; FBX, .blend, .dae and .3ds through Blender when its `bpy` can be imported
+in this interpreter (the optional `blender` extra), else one line saying how to convert them
+(docs/design.md#appearance).
+
+Files an OBJ names (its MTL, the MTL's images) are read only from the model's own folder.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import os
+import re
+import tempfile
+
+import numpy as np
+
+from eigendance.assets.materials import Images, srgb_to_linear, trimesh_material
+from eigendance.assets.model import Model, combine
+from eigendance.assets.scene import Piece
+from eigendance.errors import InputError, one_line
+
+# Formats Blender imports and we do not: converted through bpy when it can be imported.
+CONVERTIBLE = {".fbx": "import_scene.fbx", ".blend": None, ".dae": "wm.collada_import",
+               ".3ds": "import_scene.max3ds"}
+# An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
+# last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
+OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n]|$)", re.M)
+
+
+def read_with_trimesh(path: str, name: str) -> Model:
+    """An OBJ, PLY, OFF or STL file as a `Model` (one piece per material)."""
+    import trimesh  # heavy (≈0.8 s): imported when a mesh file is read
+
+    if path.lower().endswith(".obj"):
+        _check_obj_indices(path, name)
+    try:
+        loaded = trimesh.load(path, process=False, resolver=_FolderResolver(path))
+        geometries = list(loaded.geometry.values()) if isinstance(loaded, trimesh.Scene) \
+            else [loaded]
+        styled = any(_styled(geometry) for geometry in geometries)
+        if not styled:  # exactly the vertices and triangles eigendance has always read
+            geometries = [trimesh.load(path, force="mesh", process=False)]
+    except InputError:
+        raise
+    except Exception as error:  # trimesh raises many types for malformed files
+        raise InputError(f"{name}: cannot read the mesh ({one_line(error, 200)})") from None
+    geometries = [g for g in geometries if len(getattr(g, "faces", None) if
+                                                hasattr(g, "faces") else []) > 0]
+    if not geometries:
+        if path.lower().endswith(".stl"):
+            _check_stl_length(path, name)
+        raise InputError(f"{name}: the file holds no triangles (a point cloud or empty mesh)")
+    images = Images()
+    pieces, materials = [], []
+    for geometry in geometries:
+        pieces.append(_piece(geometry, materials, images, name, styled))
+    model = combine(name, pieces, materials, images.images, problems=images.problems)
+    model.styled = styled
+    return model
+
+
+def _styled(geometry) -> bool:
+    """Whether trimesh found a material (an MTL) or vertex colours."""
+    visual = getattr(geometry, "visual", None)
+    kind = getattr(visual, "kind", None)
+    return kind == "texture" and getattr(visual, "material", None) is not None or \
+        kind == "vertex"
+
+
+def _piece(geometry, materials: list, images: Images, name: str, styled: bool) -> Piece:
+    vertices = np.asarray(geometry.vertices, dtype=np.float64)
+    faces = np.asarray(geometry.faces, dtype=np.int64)
+    visual = geometry.visual
+    uvs, colors, material = [], None, -1
+    if styled and visual.kind == "texture":
+        uv = getattr(visual, "uv", None)
+        if uv is not None and len(uv) == len(vertices):
+            uvs = [np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])]  # OBJ's v points up
+        materials.append(trimesh_material(visual.material, images, name))
+        material = len(materials) - 1
+    elif styled and visual.kind == "vertex":
+        rgba = np.asarray(visual.vertex_colors, dtype=np.float64) / 255.0
+        colors = np.column_stack([srgb_to_linear(rgba[:, :3]), rgba[:, 3]])
+    normals = np.asarray(geometry.vertex_normals, dtype=np.float64) if styled else None
+    return Piece(vertices, faces, normals, None, uvs, colors, material)
+
+
+class _FolderResolver:
+    """trimesh's file resolver, reading only regular files inside the model's folder (an MTL or
+    image named with `..` or an absolute path is not read: trimesh then goes on without it)."""
+
+    def __init__(self, path: str):
+        self.folder = os.path.dirname(os.path.abspath(path))
+
+    def get(self, name: str) -> bytes:
+        parts = str(name).replace("\\", "/").split("/")
+        path = os.path.realpath(os.path.join(self.folder, *parts))
+        if os.path.isabs(name) or ".." in parts or not path.startswith(
+                os.path.realpath(self.folder) + os.sep) or not os.path.isfile(path):
+            raise FileNotFoundError(name)
+        with open(path, "rb") as file:
+            return file.read()
+
+    __getitem__ = get
+
+    def namespaced(self, namespace: str) -> _FolderResolver:
+        return self
+
+    def write(self, name, data):
+        raise PermissionError("read only")
+
+
+def _check_obj_indices(path: str, name: str) -> None:
+    """InputError for a face corner with vertex index 0, which OBJ does not have."""
+    try:
+        with open(path, "rb") as file:
+            found = OBJ_ZERO_INDEX.search(file.read())
+    except OSError as error:
+        raise InputError(f"{name}: cannot read ({error.strerror})") from None
+    if found:
+        line = found.string.count(b"\n", 0, found.start()) + 1
+        raise InputError(f"{name}: line {line}: a face uses vertex index 0 (OBJ counts vertices "
+                         "from 1)")
+
+
+def _check_stl_length(path: str, name: str) -> None:
+    """InputError for a binary STL shorter than the triangle count of its header says."""
+    size = os.path.getsize(path)
+    with open(path, "rb") as file:
+        head = file.read(84)
+    if len(head) < 84 or head.lstrip().startswith(b"solid") and b"facet" in head:
+        return
+    count = int.from_bytes(head[80:84], "little")
+    if 84 + 50 * count > size:
+        raise InputError(f"{name}: truncated binary STL: the header announces {count} "
+                         f"triangles, the file holds {(size - 84) // 50}")
+
+
+def blender_available() -> bool:
+    """Whether Blender's Python module (`bpy`, the `blender` extra) can be imported here."""
+    return importlib.util.find_spec("bpy") is not None
+
+
+@contextlib.contextmanager
+def converted(path: str, name: str):
+    """A temporary .glb of a file Blender imports (FBX, .blend, .dae, .3ds), made with bpy;
+    without bpy, one InputError saying how to convert it."""
+    suffix = os.path.splitext(path)[1].lower()
+    how = "open it in Blender" if suffix == ".blend" else \
+        f"in Blender: File › Import › {suffix[1:].upper()}"
+    if not blender_available():
+        raise InputError(f"{name}: {suffix} files cannot be read; convert it to glTF ({how}, "
+                         "then File › Export › glTF 2.0 (.glb)), or install the blender extra "
+                         "(pip install 'eigendance[blender]')", status=415)
+    with tempfile.TemporaryDirectory(prefix="eigendance-convert-") as folder:
+        glb = os.path.join(folder, "converted.glb")
+        _blender_export(path, glb, CONVERTIBLE[suffix], name)
+        yield glb
+
+
+def _blender_export(path: str, glb: str, operator: str | None, name: str) -> None:
+    import bpy  # optional: the `blender` extra
+
+    try:
+        if operator is None:
+            bpy.ops.wm.open_mainfile(filepath=path)
+        else:
+            bpy.ops.wm.read_factory_settings(use_empty=True)
+            group, action = operator.split(".")
+            importer = getattr(getattr(bpy.ops, group), action)
+            if not importer.poll():
+                raise RuntimeError(f"this Blender ({bpy.app.version_string}) has no importer")
+            importer(filepath=path)
+        bpy.ops.export_scene.gltf(filepath=glb, export_format="GLB", export_animations=False)
+    except Exception as error:  # noqa: BLE001 - Blender raises RuntimeError with its report
+        raise InputError(f"{name}: Blender could not convert it ({one_line(error, 200)})") \
+            from None
