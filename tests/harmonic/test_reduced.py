@@ -11,7 +11,6 @@ from eigendance.errors import EigendanceError
 from eigendance.geometry import vertex_normals
 from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key, choose_construction
 from eigendance.harmonic.interpolation import MOST, QUANTUM
-from eigendance.harmonic.laplacian import laplacian
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.reduced import reduced_key
 from eigendance.music.gallery import initial_gallery
@@ -157,14 +156,25 @@ def test_the_rule_picks_exact_for_small_and_reduced_for_large(monkeypatch):
 
 
 def test_a_mesh_in_several_pieces_gets_a_sample_on_each():
-    """The beetle: 2 components, non-manifold edges (robust Laplacian)."""
-    mesh = load_mesh(fixture_path("meshes", "beetle.obj"))
-    basis = HarmonicBasis.from_mesh(mesh, 12, laplacian="robust", cache=False,
-                                    construction="reduced", samples=300)
-    stiffness, _ = laplacian(mesh.vertices, mesh.faces, "robust")
-    from scipy.sparse.csgraph import connected_components
+    """Three spheres apart: the Laplacian couples the pieces (docs/design.md#laplacian), so one
+    constant harmonic; every piece has samples of its own and moves. The beetle (non-manifold
+    edges, robust Laplacian) gives a result."""
+    import trimesh
 
-    count, labels = connected_components(stiffness, directed=False)
-    assert count >= 2 and set(labels[basis.reduced.samples]) == set(range(count))
-    assert np.sum(np.abs(basis.eigenvalues) <= 1e-8) == count  # one constant per piece
-    assert np.isfinite(basis.filter_positions(np.full(12, 2.0))).all()
+    from eigendance.harmonic.contacts import components
+    from eigendance.harmonic.mesh import Mesh
+
+    ball = trimesh.creation.icosphere(3)
+    pieces = [(ball.vertices * scale + [4.0 * i, 0, 0], ball.faces + len(ball.vertices) * i)
+              for i, scale in enumerate((1.0, 0.5, 0.2))]
+    mesh = Mesh.from_arrays(np.vstack([v for v, _ in pieces]), np.vstack([f for _, f in pieces]))
+    basis = HarmonicBasis.from_mesh(mesh, 12, cache=False, construction="reduced", samples=300)
+    count, labels = components(mesh.n, mesh.faces)
+    assert count == 3 and set(labels[basis.reduced.samples]) == {0, 1, 2}
+    assert np.sum(np.abs(basis.eigenvalues) <= 1e-6 * basis.eigenvalues[-1]) == 1  # coupled: 1
+    moved = basis.filter_positions(np.full(12, 2.0)) - basis.vertices
+    assert all(np.abs(moved[labels == piece]).max() > 0 for piece in range(3))
+    beetle = load_mesh(fixture_path("meshes", "beetle.obj"))
+    robust = HarmonicBasis.from_mesh(beetle, 12, laplacian="robust", cache=False,
+                                     construction="reduced", samples=300)
+    assert np.isfinite(robust.filter_positions(np.full(12, 2.0))).all()
