@@ -50,9 +50,11 @@ CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
 SOLVE_BYTES_PER_VALUE = 24
 CONSTRUCTIONS = ("auto", "exact", "reduced")
 # The exact solve is chosen by "auto" up to this many values n·k: its time grows as n·k
-# (≈ 0.3 µs per value on this 2-core machine: bunny k = 300 5.3 s, armadillo ×4 k = 300
-# 30 s), so 6·10⁷ (200k vertices at k = 300) keeps it near half a minute
-# (benchmarks/bench_reduced.py; docs/design.md#reduced-basis).
+# (≈ 0.5 µs per value on this 2-core machine when it is quiet: bunny k = 300, 1.0·10⁷ values,
+# 5.3 s; the armadillo ×4, 5.2·10⁷ values, 55–132 s on the shared host under a load of 4–11),
+# so 6·10⁷ (200k vertices at k = 300) keeps it near half a minute on a quiet machine; the
+# reduced basis of 1.15 M vertices at k = 300 takes 39 s (benchmarks/bench_reduced.py;
+# docs/design.md#reduced-basis).
 EXACT_VALUES = 6e7
 
 
