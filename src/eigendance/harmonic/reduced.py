@@ -15,7 +15,7 @@ formed — P (≤ 8 weights per vertex) and U_r (m × k) are what is stored and 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
@@ -69,6 +69,7 @@ class ReducedHarmonics:
     samples: np.ndarray
     interpolation: Interpolation
     coarse: np.ndarray
+    _overlap: sp.csr_matrix | None = field(default=None, repr=False, compare=False)  # PᵀP
 
     @property
     def count(self) -> int:
@@ -84,9 +85,11 @@ class ReducedHarmonics:
 
     def gram(self, targets) -> np.ndarray:
         """U[:, t]ᵀ U[:, t] = U_r[:, t]ᵀ (PᵀP) U_r[:, t] (t, t), without forming U."""
-        matrix = self.interpolation.matrix()
+        if self._overlap is None:  # built once: the gallery asks for many blocks
+            matrix = self.interpolation.matrix()
+            self._overlap = (matrix.T @ matrix).tocsr()
         coarse = self.coarse[:, np.asarray(targets, dtype=np.int64)]
-        return coarse.T @ ((matrix.T @ matrix) @ coarse)
+        return coarse.T @ (self._overlap @ coarse)
 
     def transpose_lift(self, fine: np.ndarray) -> np.ndarray:
         """Uᵀ · fine = U_rᵀ (Pᵀ fine): (n, c) → (k, c)."""
