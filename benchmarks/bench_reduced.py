@@ -189,7 +189,7 @@ def bad_input() -> None:
                             ("beetle-294k", "robust")):
         vertices, faces = detailed(name)
         mesh = Mesh.from_arrays(vertices, faces)
-        planned = solve_bytes(mesh.n, len(mesh.faces), K, sample_count(mesh.n, K))
+        planned = solve_bytes(mesh.n, len(mesh.faces), K, sample_count(mesh.n, K), laplacian)
         try:
             seconds, peak, info = in_process(name, 0, "reduced", K, None, laplacian)
             outcome = f"{seconds:.1f} s, peak {peak:.2f} GB (planned {planned / 2**30:.2f} GB), " \

@@ -225,7 +225,7 @@ class HarmonicBasis:
                              f"than k samples and at most one per vertex ({mesh.n}); asked "
                              f"for {count}", remedy={"samples": 4 * k} if 4 * k <= mesh.n
                              else {"exact": True})
-        check_memory(solve_bytes(mesh.n, len(mesh.faces), k, count),
+        check_memory(solve_bytes(mesh.n, len(mesh.faces), k, count, laplacian),
                      f"{mesh.name}: a reduced basis of {k} harmonics of {mesh.n} vertices")
         timing = {"seconds": 0.0}
         operators = {}

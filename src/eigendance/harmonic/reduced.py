@@ -7,7 +7,7 @@ generalised problem
 
     L_r c = λ M_r c,   L_r = PᵀLP,  M_r = PᵀMP   (m × m, sparse),
 
-solved by the band solver (`eigensolver.solve_bands`, sparse mass); the harmonics are
+solved by the band solver (`eigensolver.solve`, sparse mass); the harmonics are
 U = P U_r. Since M_r = PᵀMP, Uᵀ M U = U_rᵀ M_r U_r = I holds to rounding. This is the
 Rayleigh–Ritz (Galerkin) approximation in span P: every λ̃_ν ≥ λ_ν (min-max), and U is never
 formed — P (≤ 8 weights per vertex) and U_r (m × k) are what is stored and sent.
@@ -22,7 +22,7 @@ import scipy.sparse as sp
 
 from eigendance.errors import InputError
 from eigendance.geometry import vertex_normals
-from eigendance.harmonic.eigensolver import RESIDUAL_TOLERANCE, residuals, solve_bands
+from eigendance.harmonic.eigensolver import RESIDUAL_TOLERANCE, residuals, solve
 from eigendance.harmonic.interpolation import Interpolation, maxent_interpolation
 from eigendance.harmonic.sampling import (
     component_labels,
@@ -34,10 +34,12 @@ from eigendance.harmonic.sampling import (
 REDUCED_VERSION = 1  # part of every reduced cache key: a new construction recomputes
 SAMPLES_PER_HARMONIC = 24  # default m = 24·k (benchmarks/bench_reduced.py)
 MIN_SAMPLES = 2000
-# Peak bytes of a reduced solve (bench_reduced.py, 1.15 M vertices): per vertex the Laplacian,
-# the graph, the clusters, a block of weights, P and L·P; per face libigl's temporaries; per
-# coarse value the band solver's (as for an exact solve).
-BYTES_PER_VERTEX = 900
+# Peak bytes of a reduced solve (bench_reduced.py): per vertex the Laplacian, the graph, the
+# clusters, a block of weights, P and L·P (1.15 M vertices, cotan: 1.22 GB at the peak); the
+# robust Laplacian's intrinsic triangulation needs far more (the beetle ×256, 294k vertices:
+# 1.19 GB); per face libigl's temporaries; per coarse value the band solver's (as exact).
+BYTES_PER_VERTEX = {"cotan": 900, "robust": 4500}
+FIXED_BYTES = 300e6  # the interpreter and its libraries (the beetle ×256: 0.51 GB at the peak)
 BYTES_PER_FACE = 200
 BYTES_PER_COARSE_VALUE = 24
 # The arrays of a reduced basis in a basis file and a cache entry (docs/design.md#basis-file).
@@ -46,9 +48,10 @@ REDUCED_KEYS = ("samples", "interpolation_indices", "interpolation_weights",
 CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE  # as for a cached exact solve (basis.py)
 
 
-def solve_bytes(n: int, faces: int, k: int, count: int) -> float:
+def solve_bytes(n: int, faces: int, k: int, count: int, laplacian: str = "cotan") -> float:
     """Bytes a reduced solve of k harmonics with `count` samples on n vertices holds at most."""
-    return BYTES_PER_VERTEX * n + BYTES_PER_FACE * faces + BYTES_PER_COARSE_VALUE * count * k
+    return FIXED_BYTES + BYTES_PER_VERTEX[laplacian] * n + BYTES_PER_FACE * faces + \
+        BYTES_PER_COARSE_VALUE * count * k
 
 
 def sample_count(n: int, k: int) -> int:
@@ -133,7 +136,7 @@ def reduced_harmonics(stiffness, mass: np.ndarray, vertices: np.ndarray, faces: 
                                          samples, slot, spacing)
     del graph, slot
     stiffness_r, mass_r = restricted(stiffness, mass, interpolation.matrix())
-    eigenvalues, coarse = solve_bands(stiffness_r, mass_r, k, progress)
+    eigenvalues, coarse = solve(stiffness_r, mass_r, k, progress=progress)
     return eigenvalues, ReducedHarmonics(samples.astype(np.int64), interpolation,
                                          np.ascontiguousarray(coarse))
 
