@@ -8,6 +8,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "web"))
 
 from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
 
+from helpers import required  # noqa: E402
+
 
 @pytest.fixture(autouse=True)
 def isolated_cache(tmp_path, monkeypatch):
@@ -24,8 +26,7 @@ def rng():
 def browser():
     """Headless Chromium (/usr/bin/chromium), one per session: Playwright's sync API allows one
     instance per thread, so tests/web and tests/export share it."""
-    if not os.path.exists(CHROMIUM):
-        pytest.skip("Chromium is not installed at /usr/bin/chromium")
+    required("Chromium", os.path.exists(CHROMIUM), f"at {CHROMIUM}: make system")
     from playwright.sync_api import sync_playwright  # heavy: only for the browser tests
 
     with sync_playwright() as playwright:

@@ -1,8 +1,11 @@
-"""Small meshes made by code, paths of the test fixtures, and the processes a process started
-(Linux /proc)."""
+"""Small meshes made by code, paths of the test fixtures, the processes a test starts (with the
+signal dispositions it needs) and the processes a process started (Linux /proc)."""
 
 import os
+import signal
+import subprocess
 
+import pytest
 import trimesh
 
 from eigendance.harmonic.mesh import Mesh
@@ -14,6 +17,16 @@ def sphere(subdivisions=3) -> Mesh:
     """Unit icosphere (642 vertices at 3 subdivisions, 2562 at 4)."""
     icosphere = trimesh.creation.icosphere(subdivisions)
     return Mesh.from_arrays(icosphere.vertices, icosphere.faces, name="sphere")
+
+
+def required(what: str, present: bool, how: str) -> None:
+    """Skip without `what`, but fail under CI (CI set in the environment), which must run
+    every check: a test never passes for want of its tool there."""
+    if not present:
+        message = f"{what} is not installed ({how})"
+        if os.environ.get("CI"):
+            pytest.fail(message)
+        pytest.skip(message)
 
 
 def fixture_path(*parts):
@@ -29,6 +42,25 @@ def bumpy_sphere(subdivisions=2) -> Mesh:
     x, y, z = icosphere.vertices.T
     vertices = vertices * (1 + 0.15 * np.sin(3 * x) * np.cos(2 * y) + 0.1 * z ** 2)[:, None]
     return Mesh.from_arrays(vertices, icosphere.faces, name="bumpy sphere")
+
+
+CHILD_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+def default_signals() -> None:
+    """In a child about to run a command: Ctrl-C, SIGTERM and SIGHUP at their default
+    dispositions and unblocked, as a terminal's foreground job has them, whatever the test
+    runner inherited (`nohup make test &` and background jobs ignore SIGINT and SIGHUP, and
+    Python then never turns SIGINT into KeyboardInterrupt)."""
+    for number in CHILD_SIGNALS:
+        signal.signal(number, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, CHILD_SIGNALS)
+
+
+def start(command, **options) -> subprocess.Popen:
+    """subprocess.Popen(command, **options) with `default_signals` in the child: every process a
+    test signals is started so, never relying on what the tests inherited."""
+    return subprocess.Popen(command, preexec_fn=default_signals, **options)
 
 
 def parents() -> dict[int, int]:

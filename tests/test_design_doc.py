@@ -6,8 +6,8 @@ import re
 
 ROOT = os.path.join(os.path.dirname(__file__), "..")
 DESIGN = os.path.join(ROOT, "docs", "design.md")
-SOURCES = ["src/eigendance/**/*.py", "tests/**/*.py", "benchmarks/*.py", "web/src/**/*.ts",
-           "web/test/**/*.ts", "docs/*.md", "README.md"]
+SOURCES = ["src/eigendance/**/*.py", "tests/**/*.py", "tests/**/*.mjs", "benchmarks/*.py",
+           "web/src/**/*.ts", "web/test/**/*.ts", "docs/*.md", "README.md"]
 
 
 def slug(heading: str) -> str:

@@ -24,6 +24,7 @@ from eigendance.files import (
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
 from eigendance.music.spectrogram import Spectrogram
+from helpers import start
 
 # A writer that stops half-way: it writes a megabyte, says so, and waits to be killed.
 STALLED_WRITER = """
@@ -49,8 +50,8 @@ def size(path) -> int:
 
 
 def stalled_writer(path):
-    process = subprocess.Popen([sys.executable, "-c", STALLED_WRITER, str(path)],
-                               stdout=subprocess.PIPE, text=True)
+    process = start([sys.executable, "-c", STALLED_WRITER, str(path)],
+                    stdout=subprocess.PIPE, text=True)
     assert process.stdout.readline().strip() == "writing"
     return process
 
@@ -177,7 +178,7 @@ def test_animate_killed_mid_write_leaves_no_output_and_the_next_run_cleans_up(tm
     folder.mkdir()
     command = [sys.executable, "-m", "eigendance.cli", "animate", str(tmp_path / "basis.npz"),
                str(tmp_path / "song.npz"), "--fps", "60", "-k", "6", "-o", str(folder / "a.npz")]
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    process = start(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     deadline = time.time() + 60
     while not any(size(folder / name) for name in temporary_files(folder)):
         assert process.poll() is None and time.time() < deadline, process.stderr.read()

@@ -1,5 +1,8 @@
 """The package's import graph: no cycles, and no imports hidden inside functions.
 
+`eigendance.cli` is the top of the graph (nothing else imports it): its `__init__` imports its
+own `main`, so that the `eigendance = eigendance.cli:main` entry point finds it.
+
 Only heavy optional libraries are imported where they are used, each with a comment saying so.
 """
 
@@ -8,6 +11,7 @@ import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src")
 LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy"}
+TOP = "eigendance.cli"  # the command line: imports everything, imported by nothing
 
 
 def modules() -> dict[str, ast.Module]:
@@ -37,7 +41,7 @@ def test_module_level_imports_form_no_cycle():
         graph[name] = {target for node in tree.body for target in imported(node)
                        if target.startswith("eigendance.")}
         package = name.rsplit(".", 1)[0]
-        if package.count(".") and package in modules():
+        if package.count(".") and package in modules() and package != TOP:
             graph[name].add(package)  # importing a module runs its subpackage first
     state = {}
 
@@ -57,7 +61,19 @@ def test_module_level_imports_form_no_cycle():
 def test_subpackages_import_nothing_in_their_init():
     for name, (tree, _) in modules().items():
         if name.count(".") == 1 and os.path.isdir(os.path.join(ROOT, *name.split("."))):
-            assert not [node for node in tree.body if imported(node)], name
+            targets = [target for node in tree.body for target in imported(node)]
+            if name == TOP:
+                assert all(target.startswith(TOP + ".") for target in targets), targets
+            else:
+                assert not targets, name
+
+
+def test_nothing_but_the_entry_points_imports_the_command_line():
+    for name, (tree, _) in modules().items():
+        if name in ("eigendance.__main__", TOP) or name.startswith(TOP + "."):
+            continue
+        targets = [target for node in ast.walk(tree) for target in imported(node)]
+        assert not [t for t in targets if t == TOP or t.startswith(TOP + ".")], name
 
 
 def test_only_heavy_optional_libraries_are_imported_inside_functions():

@@ -76,6 +76,15 @@ def one_line(error: BaseException | str, limit: int = 300) -> str:
 
     Control characters (terminal escapes included) are dropped, so a message built from a file
     name or a file's content cannot rewrite the user's terminal.
+
+    Parameters
+    ----------
+    error : an exception or a string.
+    limit : the most characters kept (longer text ends in "…").
+
+    Returns
+    -------
+    str.
     """
     text = error if isinstance(error, str) else (str(error) or type(error).__name__)
     text = "".join(character if character.isprintable() else " " for character in text)

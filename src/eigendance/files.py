@@ -32,12 +32,31 @@ KINDS = {"mesh": MESH_SUFFIXES, "audio": AUDIO_SUFFIXES, "mapping": MAPPING_SUFF
 
 
 def suffix_of(path: str | os.PathLike) -> str:
-    """The lower-case suffix of a path, with its dot ('' if none)."""
+    """The lower-case suffix of a path, with its dot ('' if none).
+
+    Parameters
+    ----------
+    path : a path.
+
+    Returns
+    -------
+    str, e.g. ".obj".
+    """
     return os.path.splitext(os.fspath(path))[1].lower()
 
 
 def kind_of(name: str | os.PathLike, kinds: tuple[str, ...] = ("mesh", "audio", "mapping")) -> str:
-    """'mesh', 'audio' or 'mapping' by suffix, among `kinds`; InputError for any other."""
+    """'mesh', 'audio' or 'mapping' by suffix, among `kinds`; InputError for any other.
+
+    Parameters
+    ----------
+    name : a file name.
+    kinds : the kinds accepted.
+
+    Returns
+    -------
+    str; InputError (415 when any kind would do) for another suffix.
+    """
     suffix = suffix_of(name)
     for kind in kinds:
         if suffix in KINDS[kind]:
@@ -51,12 +70,27 @@ def kind_of(name: str | os.PathLike, kinds: tuple[str, ...] = ("mesh", "audio", 
 
 
 def check_suffix(path: str | os.PathLike, kind: str) -> None:
-    """InputError unless `path` has one of the suffixes of `kind`."""
+    """InputError unless `path` has one of the suffixes of `kind`.
+
+    Parameters
+    ----------
+    path : a path.
+    kind : "mesh", "audio", "rig" or "mapping".
+    """
     kind_of(path, (kind,))
 
 
 def check_readable(path: str | os.PathLike) -> str:
-    """The path as a string; InputError if it is not an existing, non-empty regular file."""
+    """The path as a string; InputError if it is not an existing, non-empty regular file.
+
+    Parameters
+    ----------
+    path : a path.
+
+    Returns
+    -------
+    str (404 InputError for a missing file).
+    """
     path = os.fspath(path)
     if not os.path.exists(path):
         raise InputError(f"{path}: no such file", status=404)
@@ -80,6 +114,14 @@ def sweep_temporary_files(folder: str | os.PathLike) -> int:
     A writer holds an exclusive lock on its temporary file until it renames or removes it, and
     the system drops the lock when the process dies, however it dies. So a temporary file whose
     lock can be taken is debris (unless it is empty and fresh: its writer may be about to lock it).
+
+    Parameters
+    ----------
+    folder : a folder.
+
+    Returns
+    -------
+    int.
     """
     try:
         entries = list(os.scandir(folder))
@@ -112,6 +154,12 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True) -> None:
     sync=False skips the fsync (for large files that are cheap to recompute). An output that
     cannot be written (a folder in the way, no permission, a full disk) is an InputError naming
     the path.
+
+    Parameters
+    ----------
+    path : the file to write.
+    write : callable(binary file).
+    sync : fsync before the rename.
     """
     path = os.fspath(path)
     if os.path.isdir(path):
@@ -154,6 +202,11 @@ def atomic_save_npz(path, **arrays) -> None:
 
     Every array of numbers must be finite: a result with NaN or infinite values is an InputError
     (its inputs were out of range) and no file is written.
+
+    Parameters
+    ----------
+    path : the .npz to write.
+    **arrays : {name: array}.
     """
     for name, array in arrays.items():
         check_finite(array, f"{os.fspath(path)}: not written: {name}", OUT_OF_RANGE)
@@ -165,14 +218,31 @@ OUT_OF_RANGE = "an input value is too large or too small for the result"
 
 def check_finite(array, label: str, why: str = "") -> None:
     """InputError "{label} holds NaN or infinite values ({why})" unless every number in `array`
-    is finite. Arrays of anything but floats (integers, strings) pass."""
+    is finite. Arrays of anything but floats (integers, strings) pass.
+
+    Parameters
+    ----------
+    array : anything numpy takes.
+    label : how the message names it.
+    why : what the message adds in parentheses ('' for nothing).
+    """
     array = np.asarray(array)
     if array.dtype.kind in "fc" and not np.isfinite(array).all():
         raise InputError(f"{label} holds NaN or infinite values" + (f" ({why})" if why else ""))
 
 
 def load_npz(path, required: tuple[str, ...]) -> dict:
-    """Every array of an .npz file, checking that the `required` keys are present."""
+    """Every array of an .npz file, checking that the `required` keys are present.
+
+    Parameters
+    ----------
+    path : an .npz file.
+    required : the keys it must hold.
+
+    Returns
+    -------
+    {name: array}; InputError for an unreadable file or a missing key.
+    """
     path = check_readable(path)
     try:
         with np.load(path, allow_pickle=False) as data:
@@ -192,6 +262,18 @@ def checked_array(arrays: dict, name: str, path, kind: str = "float",
 
     kind: "float" (real numbers, all finite; returned as float64), "int" (integers; int64) or
     "str" (one string; returned as str). shape: the expected shape, None for any length.
+
+    Parameters
+    ----------
+    arrays : the file's arrays.
+    name : the field.
+    path : the file, for messages.
+    kind : "float", "int" or "str".
+    shape : the expected shape (None in it: any length there).
+
+    Returns
+    -------
+    The array (or str).
     """
     array = arrays[name]
     label = f"{os.fspath(path)}: {name}"
@@ -234,7 +316,16 @@ def _json_integer(text: str) -> int:
 
 def finite_number(value) -> bool:
     """Whether a number from a JSON document is finite as a float (an int too large for a float
-    is not: math.isfinite would raise OverflowError)."""
+    is not: math.isfinite would raise OverflowError).
+
+    Parameters
+    ----------
+    value : an int or a float.
+
+    Returns
+    -------
+    bool.
+    """
     try:
         return math.isfinite(value)
     except OverflowError:
@@ -247,6 +338,15 @@ def read_json(path: str | os.PathLike, name: str | None = None):
     Refused: a missing file, text that is not UTF-8 or not JSON, nesting deeper than Python's
     recursion limit, integers of more than JSON_INTEGER_DIGITS digits. Messages call the file
     `name` (default: its base name; an upload's own name rather than where it is stored).
+
+    Parameters
+    ----------
+    path : the file.
+    name : how messages call it.
+
+    Returns
+    -------
+    The document (dict, list, str, number, bool or None).
     """
     path = os.fspath(path)
     name = name or os.path.basename(path)
@@ -271,7 +371,13 @@ def read_json(path: str | os.PathLike, name: str | None = None):
 
 
 def refuse_overwrite(path, force: bool) -> None:
-    """InputError unless `path` is free or the caller asked to overwrite it."""
+    """InputError unless `path` is free or the caller asked to overwrite it.
+
+    Parameters
+    ----------
+    path : the output.
+    force : overwrite anyway (not a folder).
+    """
     path = os.fspath(path)
     if os.path.isdir(path):
         raise InputError(f"{path}: is a folder; give a file name for the output")

@@ -19,7 +19,12 @@ MEMORY_SHARE = 0.8
 
 
 def available_memory() -> int:
-    """Bytes of memory available to a new allocation: Linux's MemAvailable, else all RAM."""
+    """Bytes of memory available to a new allocation: Linux's MemAvailable, else all RAM.
+
+    Returns
+    -------
+    int, bytes.
+    """
     try:
         with open("/proc/meminfo", encoding="ascii") as file:
             for line in file:
@@ -31,12 +36,26 @@ def available_memory() -> int:
 
 
 def memory_budget() -> float:
-    """Bytes one result may plan to use: MEMORY_SHARE of the memory available now."""
+    """Bytes one result may plan to use: MEMORY_SHARE of the memory available now.
+
+    Returns
+    -------
+    float, bytes.
+    """
     return MEMORY_SHARE * available_memory()
 
 
 def size_text(count: float) -> str:
-    """Bytes in words: '3.2 GB', '512 MB'."""
+    """Bytes in words: '3.2 GB', '512 MB'.
+
+    Parameters
+    ----------
+    count : bytes.
+
+    Returns
+    -------
+    str.
+    """
     for unit, size in (("TB", 1e12), ("GB", 1e9), ("MB", 1e6)):
         if count >= size:
             return f"{count / size:.1f} {unit}"
@@ -47,6 +66,12 @@ def check_memory(planned: float, what: str, remedy: dict | None = None) -> None:
     """InputError unless `planned` bytes fit in MEMORY_SHARE of the memory available now.
 
     what: the request in words, e.g. "teapot.obj: 20000 harmonics of 1.2M vertices".
+
+    Parameters
+    ----------
+    planned : bytes.
+    what : the request in words.
+    remedy : settings that may avoid the error (the CLI shows them as flags).
     """
     limit = memory_budget()
     if planned > limit:
@@ -70,7 +95,15 @@ def check_output(path: str | os.PathLike, planned: float, what: str, force: bool
 
 def check_disk(path: str | os.PathLike, planned: float, what: str,
                remedy: dict | None = None) -> None:
-    """InputError unless `planned` bytes fit on the disk that holds `path`'s folder."""
+    """InputError unless `planned` bytes fit on the disk that holds `path`'s folder.
+
+    Parameters
+    ----------
+    path : the output.
+    planned : bytes.
+    what : the request in words.
+    remedy : settings that may avoid the error.
+    """
     folder = os.path.dirname(os.path.abspath(os.fspath(path)))
     while folder and not os.path.isdir(folder):
         folder = os.path.dirname(folder)

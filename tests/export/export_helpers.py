@@ -2,38 +2,37 @@
 
 from __future__ import annotations
 
-import os
+import math
 
 import numpy as np
-import pytest
 
 from eigendance.export.dance import rig_dance
-from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import band_mapping, rig_coefficients, rig_mapping
+from eigendance.modal.motion import band_mapping
+from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
-from helpers import fixture_path
+from helpers import fixture_path, required  # noqa: F401 - the export tests' import
 
 SONG = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")  # 4 s
 LONG_SONG = fixture_path("audio", "kevin_macleod_vibe_ace_0s-21s.ogg")  # 21 s
 
 
-def required(what: str, present: bool, how: str) -> None:
-    """Skip without `what`, but fail under CI, which must run every check."""
-    if not present:
-        message = f"{what} is not installed ({how})"
-        if os.environ.get("CI"):
-            pytest.fail(message)
-        pytest.skip(message)
-
-
 def rig(name: str, skinning: str, song, mode_count: int = 4, audio: str = SONG):
-    skeleton = load_rig(name)
-    model = ModalModel.from_skeleton(skeleton)
-    modes = np.arange(min(mode_count, model.n_modes))
-    mapping = rig_mapping(model, song, band_mapping(song.bands, len(modes)), modes, 0.3, 1.0)
-    return rig_dance(skeleton, model, song.duration,
-                     lambda times: rig_coefficients(model, song, mapping, times),
-                     skinning, audio, f"{skinning}-rig")
+    dancer = Rig(load_rig(name), np.float64)
+    modes = np.arange(min(mode_count, dancer.model.n_modes))
+    mapping = dancer.mapping(song, band_mapping(song.bands, len(modes)), selected=modes,
+                             amplitude=0.3, time_scale=1.0)
+    return rig_dance(dancer, song, mapping, skinning, audio, f"{skinning}-rig")
+
+
+def file_times(duration: float, fps: float) -> np.ndarray:
+    """t_i = i/fps for i = 0 … ⌊duration·fps⌋, written out here (docs/design.md#exports), not
+    taken from the exports' own code."""
+    return np.arange(math.floor(duration * fps + 1e-9) + 1) / fps
+
+
+def video_frame_times(duration: float, fps: float) -> np.ndarray:
+    """Frame i of a video shows i/fps, i < ⌈duration·fps⌉ (at least one), written out here."""
+    return np.arange(max(1, math.ceil(duration * fps - 1e-9))) / fps
 
 
 def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions"):

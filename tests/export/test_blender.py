@@ -20,10 +20,9 @@ import subprocess
 
 import numpy as np
 import pytest
-from export_helpers import check_positions, required, spread_frames
+from export_helpers import check_positions, file_times, required, spread_frames
 from scipy.spatial import cKDTree
 
-from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -69,7 +68,7 @@ def test_blender_plays_the_export_as_the_reference_moves(version, request, tmp_p
     fps = LONG_FPS if dance.duration > 20 else FPS
     path = tmp_path / f"dance.{kind}"
     export_dance(dance, path, fps=fps)
-    times = sample_times(dance.duration, fps)
+    times = file_times(dance.duration, fps)
     frames = spread_frames(len(times)) if dance.duration > 20 else \
         [0, len(times) // 2, len(times) - 1]
     out = tmp_path / "blender.npz"

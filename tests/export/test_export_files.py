@@ -9,11 +9,10 @@ import warnings
 import numpy as np
 import pytest
 import trimesh
-from export_helpers import SONG, check_positions
+from export_helpers import SONG, check_positions, file_times
 from pxr import Usd, UsdGeom, UsdMedia, UsdUtils
 
 from eigendance.errors import InputError
-from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance, format_of
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import pc2_size, read_pc2
@@ -22,7 +21,7 @@ from eigendance.harmonic.motion import positions_at
 
 def test_the_point_cache_holds_every_frame_and_the_obj_the_rest_in_order(harmonic, tmp_path):
     report = export_dance(harmonic, tmp_path / "dance.pc2", fps=20)
-    times = sample_times(harmonic.duration, 20)
+    times = file_times(harmonic.duration, 20)
     with open(tmp_path / "dance.pc2", "rb") as file:
         header = file.read(32)
     assert header[:12] == b"POINTCACHE2\0"
@@ -42,7 +41,7 @@ def test_the_point_cache_holds_every_frame_and_the_obj_the_rest_in_order(harmoni
 def test_usd_time_samples_are_the_frames_and_the_checker_passes(harmonic, tmp_path, suffix):
     path = tmp_path / f"dance{suffix}"
     export_dance(harmonic, path, fps=24)
-    times = sample_times(harmonic.duration, 24)
+    times = file_times(harmonic.duration, 24)
     stage = Usd.Stage.Open(str(path))
     assert stage.GetTimeCodesPerSecond() == 24 and stage.GetFramesPerSecond() == 24
     assert (stage.GetStartTimeCode(), stage.GetEndTimeCode()) == (0, len(times) - 1)
@@ -63,7 +62,7 @@ def test_usd_time_samples_are_the_frames_and_the_checker_passes(harmonic, tmp_pa
 
 def test_a_rig_in_usd_holds_its_skinned_frames(figure_modal, tmp_path):
     export_dance(figure_modal, tmp_path / "figure.usdc", fps=10)
-    times = sample_times(figure_modal.duration, 10)
+    times = file_times(figure_modal.duration, 10)
     stage = Usd.Stage.Open(str(tmp_path / "figure.usdc"))
     points = UsdGeom.Mesh(stage.GetPrimAtPath("/Dance/Mesh")).GetPointsAttr()
     played = np.array([np.array(points.Get(code)) for code in range(len(times))])

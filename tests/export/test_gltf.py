@@ -12,10 +12,10 @@ import os
 import numpy as np
 import pygltflib
 import pytest
-from export_helpers import SONG, check_positions
+from export_helpers import SONG, check_positions, file_times
 from scipy.spatial.transform import Rotation
 
-from eigendance.export.dance import HarmonicDance, sample_times
+from eigendance.export.dance import HarmonicDance
 from eigendance.export.files import export_dance
 from eigendance.export.gltf import glb_bytes
 from eigendance.export.pointcache import pc2_size
@@ -58,7 +58,7 @@ def test_morph_targets_replay_the_reference_positions_at_every_sample(harmonic, 
     assert channel.target.path == "weights" and sampler.interpolation == "LINEAR"
     times = read(sampler.input)
     weights = read(sampler.output).reshape(len(times), len(targets))
-    expected_times = sample_times(harmonic.duration, 30.0)
+    expected_times = file_times(harmonic.duration, 30.0)
     assert report["frames"] == len(times) == len(expected_times)
     np.testing.assert_allclose(times, expected_times, rtol=1e-6)
     played = rest[None] + np.einsum("tj,jnc->tnc", weights, targets)

@@ -20,7 +20,7 @@ from eigendance.export.video import render_frames, view_cameras
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
-from helpers import bumpy_sphere
+from helpers import bumpy_sphere, start
 
 K = 24
 STUDIO_TOLERANCE = 2  # 8-bit levels: two rasterisers' rounding of the backdrop's gradient
@@ -43,10 +43,10 @@ def served(tmp_path_factory):
     from web_helpers import free_port  # noqa: E402 - the web tests' helper
 
     port = free_port()
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", str(mesh_path),
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", str(mesh_path),
                                 SONG, str(folder / "look.json"), "-k", str(K), "--port",
                                 str(port)], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.DEVNULL, text=True)
+                    stderr=subprocess.DEVNULL, text=True)
     line = process.stdout.readline()
     assert "serving on" in line, line
     yield {"url": line.split()[-1], "mesh": str(mesh_path), "mapping": mapping}

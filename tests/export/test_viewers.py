@@ -17,9 +17,8 @@ import threading
 
 import numpy as np
 import pytest
-from export_helpers import check_positions, required, spread_frames
+from export_helpers import check_positions, file_times, required, spread_frames
 
-from eigendance.export.dance import sample_times
 from eigendance.export.files import export_dance
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -91,7 +90,7 @@ def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromiu
     """At three sample times (first, middle, last but one: the mixer loops at the end)."""
     _, dances = glbs
     dance = dances[name]
-    samples = sample_times(dance.duration, fps_of(dance))
+    samples = file_times(dance.duration, fps_of(dance))
     if dance.duration > 20:  # six frames spread over the song (the mixer loops at the end)
         times = [float(samples[i]) for i in spread_frames(len(samples) - 1)]
     else:

@@ -1,6 +1,8 @@
 """Property tests of every reader of user input (docs/design.md#errors): meshes, audio,
 mappings, skeletons and the .npz files. Whatever the input, a reader gives a result whose
-numbers are finite, or an `InputError`: never another exception, never NaN.
+numbers are finite, or an `InputError`: never another exception, never NaN. And a reader that
+refused everything would fail: the inputs that are valid by construction (drawn unspoiled, or
+written by a real tool) must give a result.
 
 Hypothesis draws the inputs from a fixed seed (derandomize) so CI runs the same bounded set of
 examples every time; EIGENDANCE_FUZZ_EXAMPLES=2000 searches deeper.
@@ -21,9 +23,10 @@ from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.laplacian import laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.modal.bodies import JOINT_TYPES
 from eigendance.modal.model import ModalModel
 from eigendance.modal.sample_rigs import load_rig
-from eigendance.modal.skeleton import JOINT_TYPES, Skeleton
+from eigendance.modal.skeleton import Skeleton
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 
@@ -68,29 +71,33 @@ ICOSAHEDRON = trimesh.creation.icosphere(0)  # 12 vertices, 20 triangles: the ba
 
 @st.composite
 def mesh_arrays(draw):
-    """An icosahedron moved, scaled and spoiled a little, or arrays of anything."""
+    """An icosahedron moved, scaled and spoiled a little, or arrays of anything; and whether
+    the arrays are a valid mesh by construction (the icosahedron unspoiled at a usable scale)."""
     if draw(st.booleans()):
         vertices = draw(st.lists(st.lists(wild_floats, min_size=3, max_size=3), max_size=9))
         faces = draw(st.lists(st.lists(st.integers(-3, 12), min_size=3, max_size=3),
                               max_size=12))
         return np.array(vertices, dtype=np.float64).reshape(-1, 3), \
-            np.array(faces, dtype=np.int64).reshape(-1, 3)
+            np.array(faces, dtype=np.int64).reshape(-1, 3), False
     scale = draw(st.sampled_from([1.0, 1e-20, 1e-31, 1e12, 1e16, 1e300]))
     with np.errstate(all="ignore"):
         vertices = ICOSAHEDRON.vertices * scale + draw(st.floats(-1e3, 1e3)) * scale
     faces = ICOSAHEDRON.faces.copy()
-    for _ in range(draw(st.integers(0, 3))):
+    spoils = draw(st.integers(0, 3))
+    for _ in range(spoils):
         if draw(st.booleans()):
             vertices[draw(st.integers(0, 11)), draw(st.integers(0, 2))] = draw(wild_floats)
         else:
             faces[draw(st.integers(0, 19)), draw(st.integers(0, 2))] = draw(st.integers(-2, 13))
-    return vertices, faces
+    return vertices, faces, spoils == 0 and scale in (1.0, 1e-20)
 
 
 @FUZZ
 @given(arrays=mesh_arrays())
 def test_mesh_arrays_give_a_clean_mesh_or_an_input_error(arrays):
-    mesh = outcome(lambda: Mesh.from_arrays(*arrays))
+    vertices, faces, valid = arrays
+    mesh = outcome(lambda: Mesh.from_arrays(vertices, faces))
+    assert mesh is not None or not valid, "a valid mesh was refused"
     if mesh is None:
         return
     assert all_finite(mesh.vertices, mesh.center, mesh.scale) and mesh.scale > 0
@@ -125,8 +132,19 @@ def test_obj_text_gives_a_mesh_or_an_input_error(tmp_path_factory, inserted, dro
     path = tmp_path_factory.mktemp("obj") / "fuzz.obj"
     path.write_bytes("\n".join(lines).encode("latin-1" if latin1 else "utf-8"))
     mesh = outcome(lambda: load_mesh(path))
+    harmless = {"# comment", "vn 0 0 1", "g part", "", "o x"}
+    if not dropped and all(line in harmless for _, line in inserted):
+        assert mesh is not None and (mesh.n, len(mesh.faces)) == (4, 4), "a valid OBJ refused"
     if mesh is not None:
         assert all_finite(mesh.vertices) and mesh.faces.max() < mesh.n
+
+
+@pytest.mark.parametrize("suffix", [".stl", ".ply", ".off", ".obj", ".glb"])
+def test_mesh_files_written_by_trimesh_give_a_mesh(tmp_path, suffix):
+    path = tmp_path / f"sphere{suffix}"
+    trimesh.creation.icosphere(1).export(path)
+    mesh = load_mesh(path)
+    assert (mesh.n, len(mesh.faces)) == (42, 80) and all_finite(mesh.vertices)
 
 
 @FUZZ
@@ -155,6 +173,8 @@ sample_lists = st.one_of(st.lists(st.floats(-2, 2), max_size=300),
 def test_samples_give_a_spectrogram_or_an_input_error(samples, sample_rate, rate, bands):
     spectrogram = outcome(lambda: Spectrogram.from_samples(np.array(samples, dtype=np.float64),
                                                            sample_rate, rate=rate, bands=bands))
+    valid = sample_rate in (8000, 44100) and samples and all_finite(samples)
+    assert spectrogram is not None or not valid, "valid samples were refused"
     if spectrogram is not None:
         values = spectrogram.values
         assert all_finite(values) and values.min() >= 0 and values.max() <= 1
@@ -176,6 +196,9 @@ def test_audio_files_give_a_spectrogram_or_an_input_error(tmp_path_factory, samp
     soundfile.write(path, samples, sample_rate, subtype=subtype, format="WAV")
     path.write_bytes(path.read_bytes()[:max(0, path.stat().st_size - cut)])  # maybe truncated
     spectrogram = outcome(lambda: Spectrogram.from_file(path))
+    valid = cut == 0 and len(samples) and sample_rate > 2 * 20 and all_finite(samples) \
+        and np.abs(samples).max() < 1e30  # finite as float32 too
+    assert spectrogram is not None or not valid, "a valid audio file was refused"
     if spectrogram is not None:
         assert all_finite(spectrogram.values) and 0 <= spectrogram.values.min()
 
@@ -196,7 +219,7 @@ def test_audio_bytes_give_a_spectrogram_or_an_input_error(tmp_path_factory, data
 # --- mappings ---------------------------------------------------------------------------------
 
 @st.composite
-def valid_mapping(draw):
+def valid_mapping(draw, spoil=True):
     """A well-formed mapping document of version 1 or 2 with one field perhaps spoiled."""
     bands = draw(st.integers(1, 6))
     document = {"format": "eigendance.mapping", "version": draw(st.sampled_from([1, 2])),
@@ -206,9 +229,17 @@ def valid_mapping(draw):
                 "seed": draw(st.one_of(st.none(), st.integers(0, 2**64 - 1))),
                 "gain": draw(st.floats(0, 10)), "smoothing": draw(st.floats(0, 1)),
                 "look": {"shading": "flat"}}
-    if draw(st.booleans()):
+    if spoil and draw(st.booleans()):
         document[draw(st.sampled_from(sorted(document)))] = draw(json_values)
     return document
+
+
+@FUZZ
+@given(document=valid_mapping(spoil=False))
+def test_well_formed_mapping_documents_give_a_mapping(document):
+    mapping = outcome(lambda: Mapping.from_json(document, "fuzz.json"))
+    assert mapping is not None, "a well-formed mapping was refused"
+    assert mapping.bands == document["bands"]
 
 
 def mapping_documents():
@@ -282,6 +313,35 @@ def skeleton_documents(draw):
     return document
 
 
+@st.composite
+def sound_skeleton_documents(draw):
+    """A chain of 1 to 4 bodies of sensible sizes, each 0.2 to 2 long and a tenth as thick,
+    joints between neighbours with stiffness "auto" or a number: always a valid skeleton."""
+    count = draw(st.integers(1, 4))
+    steps = draw(st.lists(st.tuples(st.floats(0.2, 2), st.floats(0, 2 * math.pi),
+                                    st.floats(-1, 1)), min_size=count, max_size=count))
+    corners = np.cumsum([[0.0, 0.0, 0.0]] + [
+        [length * math.cos(angle) * math.sqrt(1 - z * z),
+         length * math.sin(angle) * math.sqrt(1 - z * z), length * z]
+        for length, angle, z in steps], axis=0)
+    bodies = [{"name": f"b{i}", "start": corners[i].tolist(), "end": corners[i + 1].tolist(),
+               "radius": steps[i][0] / 10} for i in range(count)]
+    joints = [{"name": f"j{i}", "type": draw(st.sampled_from(JOINT_TYPES)),
+               "bodies": [f"b{i}", f"b{i + 1}"],
+               "stiffness": draw(st.one_of(st.just("auto"), st.floats(1, 1e4)))}
+              for i in range(count - 1)]
+    return {"format": "eigendance.skeleton", "version": 1, "bodies": bodies, "joints": joints}
+
+
+@FUZZ
+@given(document=sound_skeleton_documents())
+def test_sound_skeleton_documents_give_a_skeleton_and_finite_modes(document):
+    skeleton = outcome(lambda: Skeleton.from_dict(document, "fuzz.json"))
+    assert skeleton is not None, "a valid skeleton was refused"
+    model = ModalModel.from_skeleton(skeleton)
+    assert all_finite(model.frequencies, model.modes) and np.all(model.frequencies >= 0)
+
+
 @FUZZ
 @given(document=skeleton_documents())
 def test_skeleton_documents_give_finite_modes_or_an_input_error(document):
@@ -305,6 +365,13 @@ def real_files(tmp_path_factory):
     tone = np.sin(np.arange(4000) / 3.0)
     Spectrogram.from_samples(tone, 8000, bands=8).save(folder / "spectrogram.npz")
     return {name: dict(np.load(folder / f"{name}.npz")) for name in ("basis", "spectrogram")}
+
+
+def test_unspoiled_npz_files_load(tmp_path, real_files):
+    for kind, loader in (("basis", HarmonicBasis.load), ("spectrogram", Spectrogram.load)):
+        np.savez(tmp_path / f"{kind}.npz", **real_files[kind])
+        loaded = loader(tmp_path / f"{kind}.npz")
+        assert all_finite(loaded.values if kind == "spectrogram" else loaded.eigenvectors)
 
 
 spoilers = st.sampled_from([
@@ -358,3 +425,9 @@ def test_spoiled_gltf_skins_give_a_rig_or_an_input_error(tmp_path_factory, name,
     rig = outcome(lambda: load_rig(str(path)))
     if rig is not None:
         assert all_finite(rig.vertices, rig.weights, rig.centers)
+
+
+@pytest.mark.parametrize("name", ["RiggedSimple.glb", "SimpleSkin.gltf"])
+def test_unspoiled_gltf_skins_give_a_rig(name):
+    rig = load_rig(os.path.join(RIGGED, name))
+    assert rig.n_bodies >= 2 and all_finite(rig.vertices, rig.weights, rig.centers)

@@ -19,7 +19,7 @@ import trimesh
 
 from eigendance.harmonic.eigensolver import solve_bands
 from eigendance.harmonic.laplacian import laplacian
-from helpers import alive, descendants, sphere
+from helpers import alive, descendants, sphere, start
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
@@ -33,10 +33,10 @@ def ball(tmp_path_factory):
 
 def start_solve(ball, tmp_path, command=("basis", "-o", "out.npz")):
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", command[0], ball, "-k",
+    process = start([sys.executable, "-m", "eigendance.cli", command[0], ball, "-k",
                                 "900", *command[1:]], env=env, cwd=tmp_path,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               start_new_session=True)
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                    start_new_session=True)
     deadline = time.time() + 60
     while len(workers := descendants(process.pid)) < 3:  # fork server + two band workers
         assert process.poll() is None and time.time() < deadline, "no band workers started"

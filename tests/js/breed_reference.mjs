@@ -1,5 +1,6 @@
-// Reference JavaScript port of eigendance.mapping.breed (DESIGN §4), checked against Python by
-// tests/test_gallery.py: the same seed and parents must give bit-identical children.
+// Reference JavaScript port of eigendance.music.breeding.breed (docs/design.md#breeding), checked
+// against Python by tests/music/test_gallery.py: the same seed and parents must give
+// bit-identical children.
 // Usage: node breed_reference.mjs < {"parents": [{transfer, amplification}], "size", "seed"}
 
 function mulberry32(seed) {

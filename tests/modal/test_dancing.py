@@ -21,7 +21,8 @@ from scipy.spatial.transform import Rotation
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, rig_coefficients
 from eigendance.modal.palette import DANCE_BAND
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
 from eigendance.music.demo_music import demo_track
 from eigendance.music.spectrogram import Spectrogram

@@ -7,11 +7,13 @@ import numpy as np
 import pytest
 
 from eigendance.errors import EigendanceError
+from eigendance.modal.bodies import Body, Joint
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.sample_rigs import open_chain, planar_loop
-from eigendance.modal.skeleton import Body, Joint, Skeleton, automatic_stiffness
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.stiffness import automatic_stiffness
 
 
 def rods(radii=(0.07, 0.05), densities=(900.0, 1300.0), lengths=(1.3, 0.8)):

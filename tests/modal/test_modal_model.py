@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from eigendance.errors import EigendanceError
+from eigendance.modal.bodies import Body, Joint
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     band_mapping,
@@ -16,7 +17,7 @@ from eigendance.modal.motion import (
 )
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.sample_rigs import open_chain, planar_loop, sample_rig
-from eigendance.modal.skeleton import Body, Joint, Skeleton
+from eigendance.modal.skeleton import Skeleton
 
 
 @pytest.mark.parametrize("n_bodies, symmetric, shape, dimension", [

@@ -19,10 +19,12 @@ from eigendance.modal.palette import (
     mode_reach,
     resolve_palette,
 )
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.music.breeding import breed
-from eigendance.music.gallery import full_scale_motion, initial_gallery
+from eigendance.music.dancer import full_scale_motion
+from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path

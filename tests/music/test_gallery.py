@@ -14,6 +14,7 @@ from eigendance.cli import main
 from eigendance.errors import EigendanceError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.breeding import Mulberry32, breed, cross
+from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.demo_music import demo_track
 from eigendance.music.gallery import (
     MAX_GALLERY,
@@ -22,15 +23,13 @@ from eigendance.music.gallery import (
     MOTION_HIGHEST,
     MOTION_LOWEST,
     drivable_harmonics,
-    gallery_correlations,
-    gallery_motion,
     initial_gallery,
     motion_content,
     strongest_item,
 )
 from eigendance.music.mapping import Mapping, harmonic_indices
 from eigendance.music.spectrogram import Spectrogram
-from helpers import bumpy_sphere, fixture_path, sphere
+from helpers import bumpy_sphere, fixture_path, required, sphere
 
 CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
                    "cat_lowres.obj")
@@ -335,8 +334,8 @@ def test_breed_resamples_amplifications_and_checks_bands(rng):
         breed([], 2)
 
 
-@pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
 def test_javascript_port_breeds_identical_children(rng):
+    required("Node", shutil.which("node") is not None, "make system")
     parents = distinct_parents(rng, 3, bands=16, k=24)
     children = breed(parents, 8, seed=987654321)
     payload = {"parents": [{"transfer": list(p.transfer), "amplification":

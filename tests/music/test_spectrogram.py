@@ -1,3 +1,4 @@
+import av
 import numpy as np
 import pytest
 import soundfile
@@ -189,7 +190,6 @@ def test_channels_mix_by_mean(tmp_path, channels):
 
 
 def test_pyav_stereo_is_averaged_not_summed(tmp_path):
-    av = pytest.importorskip("av")
     # Left: a full-scale 1 kHz tone, right: silence. The mean is a half-scale tone (−6 dB).
     path = tmp_path / "left.m4a"
     t = np.arange(SR) / SR
@@ -223,7 +223,6 @@ def test_pyav_decodes_the_same_pcm_as_soundfile(tmp_path, channels, subtype):
 
 
 def test_opus_through_pyav(tmp_path):
-    av = pytest.importorskip("av")
     path = tmp_path / "tone.opus"
     rate = 48000
     t = np.arange(rate) / rate

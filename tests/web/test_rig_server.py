@@ -16,7 +16,8 @@ from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import body_poses, body_transforms, rig_coefficients
 from eigendance.modal.palette import default_palette
-from eigendance.modal.rig import Rig, rig_gallery
+from eigendance.modal.rig import Rig
+from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, open_chain, sample_rig
 from eigendance.modal.skeleton import Skeleton
@@ -312,12 +313,12 @@ def test_a_skinned_gltf_given_alone_opens_as_a_rig(files, tmp_path):
 
 def test_a_skinned_gltf_whose_skin_cannot_be_analysed_dances_as_a_mesh(files, tmp_path,
                                                                        monkeypatch):
-    import eigendance.server.library as library_module
+    import eigendance.server.intake as intake_module
 
     def refuse(path, name=None):
         raise InputError(f"{name}: body 'x' has zero length")
 
-    monkeypatch.setattr(library_module, "load_rig", refuse)
+    monkeypatch.setattr(intake_module, "load_rig", refuse)
     library = Library(str(tmp_path / "broken"), k=8)
     try:
         item = library.add_path(files["glb"])

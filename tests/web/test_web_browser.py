@@ -22,9 +22,10 @@ from eigendance.cli import main
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import load_animation, positions_at
 from eigendance.music.breeding import breed
-from eigendance.music.gallery import gallery_motion
+from eigendance.music.dancer import gallery_motion
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
+from helpers import start
 
 pytestmark = pytest.mark.web
 TIMES = (0.5, 1.7, 4.2)
@@ -414,10 +415,10 @@ def test_a_mapping_given_to_serve_shows_in_the_player(browser, web_files, tmp_pa
     mapping.save(tmp_path / "favourite.json")
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", CAT,
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", CAT,
                                 web_files["song"], str(tmp_path / "favourite.json"), "-k",
                                 str(E2E_K), "--port", str(port)], env=env,
-                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+                    stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     try:
         url = process.stdout.readline().split()[-1]
         served = open_app(browser, url, "?render&size=4")
@@ -536,9 +537,9 @@ def test_float16_download_stays_close_to_the_reference(browser, live_server, ref
 def test_empty_library_fills_up_from_uploads(browser, web_files, tmp_path):
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=web_files["cache"])
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", "-k", "12",
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", "-k", "12",
                                 "--port", str(port)], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.DEVNULL, text=True)
+                    stderr=subprocess.DEVNULL, text=True)
     try:
         url = process.stdout.readline().split()[-1]
         page = open_app(browser, url, "?render&size=4")

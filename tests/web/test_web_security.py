@@ -21,10 +21,14 @@ import trimesh
 from starlette.testclient import TestClient
 from web_helpers import free_port, write_icosphere, write_song
 
-import eigendance.server.app as app_module
-from eigendance.server.app import JSON_LIMIT, create_app
+import eigendance.server.requests as requests_module
+import eigendance.server.rig_routes as rig_routes_module
+import eigendance.server.routes as routes_module
+from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
-from eigendance.server.library import MAX_HARMONICS, Library, MeshItem
+from eigendance.server.items import MeshItem
+from eigendance.server.library import Library
+from eigendance.server.requests import JSON_LIMIT, MAX_HARMONICS
 from eigendance.server.serve import (
     FOLDER_PREFIX,
     LOCK_NAME,
@@ -32,7 +36,7 @@ from eigendance.server.serve import (
     terminal_progress,
 )
 from eigendance.server.workers import Workers
-from helpers import alive, descendants, fixture_path
+from helpers import alive, descendants, fixture_path, start
 
 PORT = 8765
 LOCAL = f"http://127.0.0.1:{PORT}"
@@ -132,9 +136,9 @@ def test_listening_beyond_this_machine_prints_a_warning_naming_the_risk():
 
 def test_serve_prints_the_warning_before_serving(tmp_path):
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"), TMPDIR=str(tmp_path))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", "--host",
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", "--host",
                                 "0.0.0.0", "--port", "0"], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+                    stderr=subprocess.PIPE, text=True)
     try:
         assert "serving on http://127.0.0.1:" in process.stdout.readline()
     finally:
@@ -441,9 +445,10 @@ def test_heavy_work_never_runs_on_the_event_loop(client, library, files, monkeyp
             return function(*args, **kwargs)
         return wrapped
 
-    for name in ("breed", "initial_gallery", "rig_gallery", "parse_json", "rig_meta",
-                 "json_answer"):
-        monkeypatch.setattr(app_module, name, off_the_loop(name, getattr(app_module, name)))
+    for module, name in ((routes_module, "breed"), (routes_module, "initial_gallery"),
+                         (rig_routes_module, "rig_gallery"), (requests_module, "parse_json"),
+                         (rig_routes_module, "rig_meta"), (requests_module, "json_answer")):
+        monkeypatch.setattr(module, name, off_the_loop(name, getattr(module, name)))
     for name in ("add_upload", "add_mapping", "half_bundle", "ready_rig", "edit_rig"):
         monkeypatch.setattr(library, name, off_the_loop(name, getattr(library, name)))
     data = client.get("/api/library").json()
@@ -476,10 +481,10 @@ def start_server(tmp_path, *files, k=8):
     temporary = tmp_path / "tmp"
     temporary.mkdir(exist_ok=True)
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"), TMPDIR=str(temporary))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "serve", *map(str, files),
+    process = start([sys.executable, "-m", "eigendance.cli", "serve", *map(str, files),
                                 "-k", str(k), "--port", str(free_port())], env=env,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               start_new_session=True)
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                    start_new_session=True)
     assert "serving on" in process.stdout.readline()
     return process, temporary
 

@@ -22,7 +22,7 @@ from eigendance.music.mapping import Mapping
 from eigendance.server.app import create_app
 from eigendance.server.binary import unpack
 from eigendance.server.library import Library
-from helpers import bumpy_sphere
+from helpers import bumpy_sphere, start
 
 
 @pytest.fixture(scope="module")
@@ -288,9 +288,9 @@ def test_bad_library_file_on_the_command_line_is_a_one_line_error(tmp_path, caps
 def test_demo_prints_its_url_on_one_line_and_serves_the_cat_and_the_music(tmp_path):
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"))
-    process = subprocess.Popen([sys.executable, "-m", "eigendance.cli", "demo", "-k", "16",
+    process = start([sys.executable, "-m", "eigendance.cli", "demo", "-k", "16",
                                 "--port", str(port)], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+                    stderr=subprocess.PIPE, text=True)
     try:
         line = process.stdout.readline()
         assert line == f"eigendance demo: open http://127.0.0.1:{port}/ in a browser\n"

@@ -9,6 +9,8 @@ import subprocess
 import sys
 import time
 
+from helpers import start
+
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--no-first-run"]
@@ -35,8 +37,8 @@ def running_server(arguments, folder, cache):
     command = [sys.executable, "-m", "eigendance.cli", "serve", *arguments, "--port", str(port)]
     log_path = os.path.join(folder, "server.log")
     with open(log_path, "w") as log:
-        process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=log,
-                                   text=True)
+        process = start(command, env=env, stdout=subprocess.PIPE, stderr=log,
+                        text=True)
         line = process.stdout.readline()
         if "serving on" not in line:
             process.kill()

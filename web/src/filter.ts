@@ -1,5 +1,5 @@
 // The filter of docs/design.md#mapping, evaluated per frame in the browser; the same numbers as the Python
-// reference (eigendance.mapping / eigendance.animate).
+// reference (eigendance.music.mapping / eigendance.harmonic.motion).
 import type { Basis, Spectrum } from "./bundle";
 import { deformReducedCPU } from "./reduced";
 

@@ -84,7 +84,7 @@ export class GalleryView {
   /** Each tile's drawing area (for reading its pixels back). */
   views(): HTMLElement[] { return this.tiles.map((tile) => tile.view); }
 
-  /** A first generation from the server (`eigendance.mapping.initial_gallery`, calibrated on the
+  /** A first generation from the server (`eigendance.music.gallery.initial_gallery`, calibrated on the
    * song) of `size` tiles, added to the mesh's history. Throws the server's error; the gallery
    * on screen then stays as it was. */
   async create(meshId: string, songId: string, note: string, size = this.size): Promise<void> {
@@ -97,7 +97,7 @@ export class GalleryView {
     this.events.status("");
   }
 
-  /** The next generation, bred by the server (`eigendance.mapping.breed`) from the selected
+  /** The next generation, bred by the server (`eigendance.music.breeding.breed`) from the selected
    * tiles: a child of the generation on screen (a new branch if it already has children). */
   async breed(seed = Math.floor(Math.random() * 2 ** 31)): Promise<void> {
     const parents = this.selection.map((i) => this.mappings()[i]);

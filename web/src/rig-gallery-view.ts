@@ -141,7 +141,7 @@ export class RigGalleryView {
     this.updateButtons();
   }
 
-  /** The next generation of dances from the selected ones (`eigendance.mapping.breed`). */
+  /** The next generation of dances from the selected ones (`eigendance.music.breeding.breed`). */
   async breed(seed = Math.floor(Math.random() * 2 ** 31)): Promise<void> {
     const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dances()[i]);
     if (!parents.length) return;

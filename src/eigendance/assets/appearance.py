@@ -27,6 +27,8 @@ ALPHA_MODES = ("OPAQUE", "MASK", "BLEND")
 class Image:
     """The bytes of one texture image, as the file holds them.
 
+    Parameters
+    ----------
     name : how the file names it ('' if it does not).
     mime_type : "image/png" or "image/jpeg" (the formats glTF 2.0 core allows).
     data : the encoded file (PNG or JPEG bytes), never decoded here.
@@ -46,6 +48,8 @@ class Image:
 class Texture:
     """A material's use of an image (glTF textureInfo).
 
+    Parameters
+    ----------
     image : index into `Appearance.images`.
     tex_coord : which UV set it reads (0: TEXCOORD_0, 1: TEXCOORD_1).
     scale : the normal map's scale, the occlusion map's strength; 1 for other textures.
@@ -70,6 +74,12 @@ class Texture:
         return self.offset != (0.0, 0.0) or self.rotation != 0.0 or self.uv_scale != (1.0, 1.0)
 
     def to_json(self) -> dict:
+        """The texture as the page reads it (glTF's camelCase names).
+
+        Returns
+        -------
+        dict.
+        """
         return {"image": self.image, "texCoord": self.tex_coord, "scale": self.scale,
                 "offset": list(self.offset), "rotation": self.rotation,
                 "uvScale": list(self.uv_scale), "sampler": dict(self.sampler)}
@@ -83,6 +93,12 @@ class Material:
     vertex colour (linear RGBA); metallic, roughness = factors · the texture's B, G channels;
     emissive = emissive · texture (linear RGB). Defaults are glTF's (a material the file does not
     give is white, metallic 1, roughness 1).
+
+    Parameters
+    ----------
+    name, base_color, base_color_texture, metallic, roughness, metallic_roughness_texture,
+    normal_texture, occlusion_texture, emissive, emissive_texture, alpha_mode, alpha_cutoff,
+    double_sided, unlit : glTF's fields of the same names (colours linear).
     """
 
     name: str = ""
@@ -104,12 +120,22 @@ class Material:
                 "occlusion_texture", "emissive_texture")
 
     def textures(self) -> dict[str, Texture]:
-        """{field name: texture} of the textures this material uses."""
+        """{field name: texture} of the textures this material uses.
+
+        Returns
+        -------
+        dict.
+        """
         return {name: getattr(self, name) for name in self.TEXTURES
                 if getattr(self, name) is not None}
 
     def to_json(self) -> dict:
-        """JSON-ready fields (camelCase, as glTF and the page name them)."""
+        """JSON-ready fields (camelCase, as glTF and the page name them).
+
+        Returns
+        -------
+        dict.
+        """
         textures = {_camel(name): texture.to_json() for name, texture in self.textures().items()}
         return {"name": self.name, "baseColor": list(self.base_color), "metallic": self.metallic,
                 "roughness": self.roughness, "emissive": list(self.emissive),
@@ -124,7 +150,13 @@ def _camel(name: str) -> str:
 
 @dataclass
 class Part:
-    """The drawn triangles of one material: `triangles` (m, 3) int64 index drawn vertices."""
+    """The drawn triangles of one material: `triangles` (m, 3) int64 index drawn vertices.
+
+    Parameters
+    ----------
+    material : index into `Appearance.materials`.
+    triangles : (m, 3) int64.
+    """
 
     material: int
     triangles: np.ndarray
@@ -134,6 +166,8 @@ class Part:
 class Appearance:
     """How a model is drawn: drawn vertices, their attributes, parts, materials and images.
 
+    Parameters
+    ----------
     welded : (n_d,) int64, drawn vertex i's vertex of the analysis mesh (≥ 0).
     parts : the triangles of each material, one `Part` per material used.
     materials : every material the parts use (indices into this list).
@@ -174,15 +208,34 @@ class Appearance:
             np.zeros((0, 3), dtype=np.int64)
 
     def drawn(self, positions: np.ndarray) -> np.ndarray:
-        """Positions of the drawn vertices (…, n_d, 3) from the welded ones (…, n, 3)."""
+        """Positions of the drawn vertices (…, n_d, 3) from the welded ones (…, n, 3).
+
+        Parameters
+        ----------
+        positions : (…, n, 3) welded positions.
+
+        Returns
+        -------
+        (…, n_d, 3).
+        """
         return np.asarray(positions)[..., self.welded, :]
 
     def textured(self) -> bool:
-        """Whether some material uses an image."""
+        """Whether some material uses an image.
+
+        Returns
+        -------
+        bool.
+        """
         return any(material.textures() for material in self.materials)
 
     def describe(self) -> str:
-        """A short phrase: '3 materials, 2 textures, 1,204 drawn vertices'."""
+        """A short phrase: '3 materials, 2 textures, 1,204 drawn vertices'.
+
+        Returns
+        -------
+        str.
+        """
         what = [f"{len(self.materials)} material{'s' * (len(self.materials) != 1)}"]
         if self.images:
             what.append(f"{len(self.images)} image{'s' * (len(self.images) != 1)}")
@@ -192,7 +245,12 @@ class Appearance:
 
     def to_json(self) -> dict:
         """The description part 2's page reads: materials and images (size and type), the
-        arrays' names and shapes (`arrays` gives them)."""
+        arrays' names and shapes (`arrays` gives them).
+
+        Returns
+        -------
+        dict, ready for json.dump.
+        """
         return {"materials": [m.to_json() for m in self.materials],
                 "images": [{"name": i.name, "mimeType": i.mime_type, "bytes": len(i.data)}
                            for i in self.images],
@@ -203,7 +261,12 @@ class Appearance:
 
     def arrays(self) -> dict[str, np.ndarray]:
         """The per-vertex and per-part arrays by name: welded, normals, uv0, uv1, colors,
-        tangents, triangles<p> (one per part)."""
+        tangents, triangles<p> (one per part).
+
+        Returns
+        -------
+        {name: array}.
+        """
         found = {"welded": self.welded}
         optional = {"normals": self.normals, "colors": self.colors, "tangents": self.tangents,
                     **{f"uv{index}": uv for index, uv in enumerate(self.uvs)}}
@@ -215,7 +278,17 @@ class Appearance:
     def kept(self, keep_vertices: np.ndarray, welded: np.ndarray) -> Appearance:
         """A copy with only the drawn vertices `keep_vertices` (bool (n_d,)), renumbered, and a
         new welded map for them (`welded` (n_d,) before selection); triangles that used a
-        dropped vertex are dropped, and parts left empty."""
+        dropped vertex are dropped, and parts left empty.
+
+        Parameters
+        ----------
+        keep_vertices : (n_d,) bool.
+        welded : (n_d,) int64.
+
+        Returns
+        -------
+        Appearance.
+        """
         renumber = np.full(self.n, -1, dtype=np.int64)
         renumber[keep_vertices] = np.arange(int(keep_vertices.sum()))
         parts = []

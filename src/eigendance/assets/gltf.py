@@ -72,12 +72,30 @@ class GltfFile:
                              "Blender: File › Export › glTF 2.0, compression off)")
 
     def message(self, text: str) -> InputError:
-        """An InputError about this file."""
+        """An InputError about this file.
+
+        Parameters
+        ----------
+        text : what is wrong.
+
+        Returns
+        -------
+        InputError naming the file.
+        """
         return InputError(f"{self.name}: {text}")
 
     # --- buffers ----------------------------------------------------------------------------
     def buffer(self, index: int) -> bytes:
-        """The bytes of buffer `index` (the GLB chunk, a data URI or a file beside the model)."""
+        """The bytes of buffer `index` (the GLB chunk, a data URI or a file beside the model).
+
+        Parameters
+        ----------
+        index : the buffer.
+
+        Returns
+        -------
+        bytes.
+        """
         if index not in self._buffers:
             buffers = self.document.buffers
             if not isinstance(index, int) or not 0 <= index < len(buffers):
@@ -97,7 +115,17 @@ class GltfFile:
         return self._buffers[index]
 
     def uri_bytes(self, uri: str, what: str) -> bytes:
-        """The bytes a URI names: a base64 data URI, or a file inside the model's folder."""
+        """The bytes a URI names: a base64 data URI, or a file inside the model's folder.
+
+        Parameters
+        ----------
+        uri : the URI.
+        what : what it is, for messages.
+
+        Returns
+        -------
+        bytes.
+        """
         if not isinstance(uri, str):
             raise self.message(f"{what}: its uri is not a string")
         if uri.startswith("data:"):
@@ -126,7 +154,16 @@ class GltfFile:
             return file.read()
 
     def view_bytes(self, index: int) -> bytes:
-        """The bytes of buffer view `index`."""
+        """The bytes of buffer view `index`.
+
+        Parameters
+        ----------
+        index : the buffer view.
+
+        Returns
+        -------
+        bytes.
+        """
         views = self.document.bufferViews
         if not isinstance(index, int) or not 0 <= index < len(views):
             raise self.message(f"no buffer view {index}")
@@ -140,7 +177,16 @@ class GltfFile:
     # --- accessors --------------------------------------------------------------------------
     def accessor(self, index: int) -> np.ndarray:
         """Accessor `index` as an (count, width) array: floats as float64, integers as int64,
-        normalised integers as floats in [−1, 1] or [0, 1]."""
+        normalised integers as floats in [−1, 1] or [0, 1].
+
+        Parameters
+        ----------
+        index : the accessor.
+
+        Returns
+        -------
+        (count, width) array.
+        """
         accessors = self.document.accessors
         if not isinstance(index, int) or not 0 <= index < len(accessors):
             raise self.message(f"no accessor {index}")
@@ -200,7 +246,17 @@ class GltfFile:
 
     # --- Draco ------------------------------------------------------------------------------
     def draco(self, extension: dict, what: str) -> tuple[dict[str, np.ndarray], np.ndarray]:
-        """The attributes {name: (n, width) array} and triangles (m, 3) of a Draco primitive."""
+        """The attributes {name: (n, width) array} and triangles (m, 3) of a Draco primitive.
+
+        Parameters
+        ----------
+        extension : the primitive's KHR_draco_mesh_compression.
+        what : the primitive, for messages.
+
+        Returns
+        -------
+        (attributes, triangles).
+        """
         import DracoPy  # optional path: only Draco-compressed files need the decoder
 
         if not isinstance(extension, dict) or not isinstance(extension.get("attributes"),
@@ -227,7 +283,16 @@ class GltfFile:
     # --- images -----------------------------------------------------------------------------
     def image(self, index: int) -> tuple[str, str, bytes]:
         """(name, mime type, bytes) of image `index`; InputError if it cannot be read or is
-        neither PNG nor JPEG."""
+        neither PNG nor JPEG.
+
+        Parameters
+        ----------
+        index : the image.
+
+        Returns
+        -------
+        (name, mime type, bytes).
+        """
         images = self.document.images
         if not isinstance(index, int) or not 0 <= index < len(images):
             raise self.message(f"no image {index}")

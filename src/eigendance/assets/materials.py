@@ -29,7 +29,17 @@ class Images:
 
     def add(self, key, read) -> int | None:
         """Our index of the image with `key`, reading it with read() → (name, mime, bytes) the
-        first time; None (and a problem noted) if it cannot be read."""
+        first time; None (and a problem noted) if it cannot be read.
+
+        Parameters
+        ----------
+        key : what identifies the image in the file (an index, a path).
+        read : () → (name, mime type, bytes).
+
+        Returns
+        -------
+        int or None.
+        """
         if key not in self.index:
             try:
                 name, mime, data = read()
@@ -56,7 +66,17 @@ def _check_decodes(data: bytes) -> None:
 
 def gltf_materials(gltf: GltfFile, images: Images) -> list[Material]:
     """Every material of the document, in order (KHR_materials_unlit and
-    KHR_texture_transform included)."""
+    KHR_texture_transform included).
+
+    Parameters
+    ----------
+    gltf : the file.
+    images : the images read so far (added to).
+
+    Returns
+    -------
+    list of Material.
+    """
     return [_gltf_material(gltf, index, item, images)
             for index, item in enumerate(gltf.document.materials or [])]
 
@@ -135,7 +155,16 @@ def _numbers(values, count: int, default: tuple) -> tuple:
 # --- trimesh (OBJ + MTL, PLY) -------------------------------------------------------------------
 
 def srgb_to_linear(srgb) -> np.ndarray:
-    """sRGB components in [0, 1] → linear (glTF colour factors are linear)."""
+    """sRGB components in [0, 1] → linear (glTF colour factors are linear).
+
+    Parameters
+    ----------
+    srgb : components in [0, 1].
+
+    Returns
+    -------
+    array of the same shape.
+    """
     c = np.clip(np.asarray(srgb, dtype=np.float64), 0.0, 1.0)
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
@@ -144,7 +173,18 @@ def trimesh_material(material, images: Images, name: str) -> Material:
     """A trimesh material (SimpleMaterial from an MTL, or PBRMaterial) as a `Material`.
 
     An MTL's Kd is an sRGB colour (as Blender's importer reads it): it becomes the linear base
-    colour; `map_Kd` the base colour texture, `d` the alpha (BLEND below 1)."""
+    colour; `map_Kd` the base colour texture, `d` the alpha (BLEND below 1).
+
+    Parameters
+    ----------
+    material : the trimesh material.
+    images : the images read so far (added to).
+    name : the model's name, for messages.
+
+    Returns
+    -------
+    Material.
+    """
     pbr = material.to_pbr() if hasattr(material, "to_pbr") else material
     color = getattr(pbr, "baseColorFactor", None)
     rgba = np.ones(4) if color is None else np.asarray(color, dtype=float).reshape(-1)[:4]

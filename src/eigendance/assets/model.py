@@ -26,6 +26,11 @@ class Model:
     skin: the joints of its skins or None; weights (n_d, n_joints) skin weights (rows of rigid
     pieces and of pieces that hang from a bone: 0, and `bones` says which); bones (n_d,) the
     joint column a rigid piece hangs from, -1 if none; warnings: what was not kept.
+
+    Parameters
+    ----------
+    name, positions, parts, materials, images, normals, uvs, colors, tangents, styled, skin,
+    weights, bones, warnings : as above.
     """
 
     name: str
@@ -45,13 +50,28 @@ class Model:
 
     @property
     def triangles(self) -> np.ndarray:
+        """Every part's triangles, one after the other.
+
+        Returns
+        -------
+        (m, 3) int64 into positions.
+        """
         return np.concatenate([part.triangles for part in self.parts]) if self.parts else \
             np.zeros((0, 3), dtype=np.int64)
 
     def appearance(self, welded: np.ndarray) -> Appearance | None:
         """The look with drawn vertex i on analysis vertex welded[i] (−1: the analysis dropped
         it; such vertices and their triangles leave the drawing); None for a model without a
-        look of its own (the clay look)."""
+        look of its own (the clay look).
+
+        Parameters
+        ----------
+        welded : (n_d,) int64.
+
+        Returns
+        -------
+        Appearance or None.
+        """
         if not self.styled:
             return None
         look = Appearance(np.asarray(welded, dtype=np.int64), self.parts, self.materials,
@@ -69,7 +89,20 @@ class Model:
 def combine(name: str, pieces: list[Piece], materials: list[Material], images: list[Image],
             skin: SkinTree | None = None, problems: list[str] | None = None) -> Model:
     """One `Model` of pieces: their vertices one after the other, one part per material
-    (a piece without material takes glTF's default material)."""
+    (a piece without material takes glTF's default material).
+
+    Parameters
+    ----------
+    name : the model's name.
+    pieces : its pieces.
+    materials, images : the file's.
+    skin : the joints of its skins, or None.
+    problems : what was not kept (warnings), or None.
+
+    Returns
+    -------
+    Model.
+    """
     materials = list(materials)
     offsets = np.cumsum([0] + [len(piece.positions) for piece in pieces])
     by_material: dict[int, list[np.ndarray]] = {}

@@ -30,7 +30,17 @@ OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n
 
 
 def read_with_trimesh(path: str, name: str) -> Model:
-    """An OBJ, PLY, OFF or STL file as a `Model` (one piece per material)."""
+    """An OBJ, PLY, OFF or STL file as a `Model` (one piece per material).
+
+    Parameters
+    ----------
+    path : the file.
+    name : how messages call it.
+
+    Returns
+    -------
+    Model.
+    """
     import trimesh  # heavy (≈0.8 s): imported when a mesh file is read
 
     if path.lower().endswith(".obj"):
@@ -139,14 +149,29 @@ def _check_stl_length(path: str, name: str) -> None:
 
 
 def blender_available() -> bool:
-    """Whether Blender's Python module (`bpy`, the `blender` extra) can be imported here."""
+    """Whether Blender's Python module (`bpy`, the `blender` extra) can be imported here.
+
+    Returns
+    -------
+    bool.
+    """
     return importlib.util.find_spec("bpy") is not None
 
 
 @contextlib.contextmanager
 def converted(path: str, name: str):
     """A temporary .glb of a file Blender imports (FBX, .blend, .dae, .3ds), made with bpy;
-    without bpy, one InputError saying how to convert it."""
+    without bpy, one InputError saying how to convert it.
+
+    Parameters
+    ----------
+    path : the file.
+    name : how messages call it.
+
+    Yields
+    ------
+    str, the temporary .glb (removed afterwards).
+    """
     suffix = os.path.splitext(path)[1].lower()
     how = "open it in Blender" if suffix == ".blend" else \
         f"in Blender: File › Import › {suffix[1:].upper()}"

@@ -58,7 +58,17 @@ def read_model(path: str | os.PathLike, name: str | None = None, warn: bool = Tr
 
 
 def read_gltf(path: str, name: str) -> Model:
-    """A glTF file's default scene as a `Model`."""
+    """A glTF file's default scene as a `Model`.
+
+    Parameters
+    ----------
+    path : a .glb or .gltf file.
+    name : how messages call it.
+
+    Returns
+    -------
+    Model.
+    """
     gltf = GltfFile(path, name)
     try:
         images = Images()

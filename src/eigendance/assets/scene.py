@@ -29,6 +29,11 @@ class Piece:
     or None; uvs one (n, 2) per TEXCOORD set; colors (n, 4) or None; material: the document's
     material index or -1; weights (n, n_joints) over `SkinTree` columns (skinned) or None;
     bone: the joint column a rigid mesh hangs from, or -1.
+
+    Parameters
+    ----------
+    positions, triangles, normals, tangents, uvs, colors, material, weights, bone : as above.
+    attributes : the primitive's other attributes by name.
     """
 
     positions: np.ndarray
@@ -46,7 +51,12 @@ class Piece:
 @dataclass
 class SkinTree:
     """The joints of every skin: names, parents (joint column or -1), matrices (n_j, 4, 4)
-    world transforms at rest, nodes (the joint nodes)."""
+    world transforms at rest, nodes (the joint nodes).
+
+    Parameters
+    ----------
+    names, parents, matrices, nodes : as above.
+    """
 
     names: list[str]
     parents: np.ndarray
@@ -56,13 +66,30 @@ class SkinTree:
 
 @dataclass
 class Scene:
+    """Every mesh node of a glTF scene as pieces, and the joints of its skins.
+
+    Parameters
+    ----------
+    pieces : one `Piece` per primitive of every mesh node.
+    skin : the joints of its skins, or None.
+    notes : what was not kept.
+    """
     pieces: list[Piece]
     skin: SkinTree | None
     notes: list[str] = field(default_factory=list)
 
 
 def read_scene(gltf: GltfFile) -> Scene:
-    """Every mesh node of the default scene as `Piece`s, the joints of its skins, and notes."""
+    """Every mesh node of the default scene as `Piece`s, the joints of its skins, and notes.
+
+    Parameters
+    ----------
+    gltf : the file.
+
+    Returns
+    -------
+    Scene.
+    """
     document = gltf.document
     nodes = document.nodes or []
     parents = _parents(gltf, nodes)
@@ -138,7 +165,16 @@ def _preorder(gltf: GltfFile, nodes, roots) -> list[int]:
 
 
 def local_matrix(node) -> np.ndarray:
-    """A node's local transform (4, 4): its matrix, or T·R·S."""
+    """A node's local transform (4, 4): its matrix, or T·R·S.
+
+    Parameters
+    ----------
+    node : a glTF node.
+
+    Returns
+    -------
+    (4, 4).
+    """
     if node.matrix is not None:
         return np.array(node.matrix, dtype=float).reshape(4, 4).T  # column-major
     matrix = np.eye(4)

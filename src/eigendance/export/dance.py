@@ -10,16 +10,21 @@ file's coordinates:
   D_ν = U[:,ν]·X̃_ν·scale (n×3, original units) with weights φ_ν(t) − 1 (`morphs`). With a
   reduced basis (U = P U_r, docs/design.md#reduced-basis) it is exactly linear blend skinning
   with translation-only joints at the samples: x_i(t) = rest_i + Σ_j w_ij D_j(t) (`sample_skin`).
-- `RigDance`: bodies move by world transforms T_b(t) (4×4, rest pose → posed), the skin by
-  linear blend skinning x′ = Σ_b w_ib T_b(t)x (exactly what a glTF skin plays) or by modal
-  skinning (docs/design.md#skinning). `pose(times)` gives the transforms and mode coefficients:
-  the one place rig motion enters the exports.
+- `RigDance`: a `modal.rig.Rig` moving in its modes: bodies by world transforms T_b(t) (4×4,
+  rest pose → posed), the skin by linear blend skinning x′ = Σ_b w_ib T_b(t)x (exactly what a
+  glTF skin plays) or by modal skinning (docs/design.md#skinning), both asked of the rig.
+  `pose(times)` gives the transforms and mode coefficients: the one place rig motion enters the
+  exports.
 
 Positions come chunk by chunk (`frames`), so a long song never holds all frames in memory.
+`dance.window(start, duration)` is the part of the song from `start` (docs/design.md#window):
+its time t is the song's time start + t, so a clip's frames are frames of the whole dance, and
+the exports write it from time 0 with the song cut to the same part.
 """
 
 from __future__ import annotations
 
+import copy
 import math
 import os
 from collections.abc import Callable, Iterator
@@ -28,47 +33,34 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.geometry import bounding_box_diagonal
+from eigendance.geometry import bounding_box_diagonal, vertex_normals
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.motion import iter_positions
-from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import body_transforms
-from eigendance.modal.skeleton import Skeleton
-from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
+from eigendance.modal.rig import SKINNINGS, Rig
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
+from eigendance.window import Window
 
 RIG_CHUNK = 64  # frames skinned per batch
 
 
 def video_times(duration: float, fps: float) -> np.ndarray:
     """Frame i of a video shows time i/fps, i < ⌈duration·fps⌉ (at least one frame): the frames
-    cover [0, duration) and the video lasts as long as the song, to within one frame."""
+    cover [0, duration) and the video lasts as long as the song, to within one frame.
+
+    Parameters
+    ----------
+    duration : s.
+    fps : frames per second.
+
+    Returns
+    -------
+    (⌈duration·fps⌉,) s.
+    """
     if not (math.isfinite(fps) and fps > 0):
         raise InputError(f"frames per second must be a positive number, got {fps}")
     count = max(1, math.ceil(duration * fps - 1e-9))
     return np.arange(count) / float(fps)
-
-
-def sample_times(duration: float, fps: float) -> np.ndarray:
-    """Samples of an animation file: 0, 1/fps, … up to the duration included."""
-    if not (math.isfinite(fps) and fps > 0):
-        raise InputError(f"frames per second must be a positive number, got {fps}")
-    return np.arange(int(math.floor(duration * fps + 1e-9)) + 1) / float(fps)
-
-
-def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
-    """Unit area-weighted vertex normals (n, 3), as three.js computeVertexNormals; a vertex
-    whose triangles' normals cancel gets +z (it still must be a unit vector)."""
-    corners = vertices[faces]
-    face = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    normals = np.zeros_like(vertices, dtype=np.float64)
-    for corner in range(3):
-        np.add.at(normals, faces[:, corner], face)
-    length = np.linalg.norm(normals, axis=1, keepdims=True)
-    normals = np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
-    normals[length[:, 0] <= 0] = (0.0, 0.0, 1.0)
-    return normals
 
 
 @dataclass
@@ -77,6 +69,10 @@ class Morphs:
 
     harmonics: (J,) the driven harmonics ν; targets: (J, n, 3) D_ν in original units;
     weights: (T, J) φ_ν(t_i) − 1.
+
+    Parameters
+    ----------
+    harmonics, targets, weights : as above.
     """
 
     harmonics: np.ndarray
@@ -120,7 +116,9 @@ class Dance:
     faces (m, 3) int64; rest (n, 3) float64; center (3,) and scale: the framing of
     docs/design.md#mesh (the middle of the bounding box, half its largest side); duration (s);
     audio: the song's file or None; name: how messages and files call it; appearance: the
-    model's look (`assets.Appearance`, drawn vertices on these), or None (clay).
+    model's look (`assets.Appearance`, drawn vertices on these), or None (clay). start: where
+    the dance starts in the song (s; 0 unless it is a `window`), length: the whole song (s),
+    note: what the window changed to fit the song (or None).
     """
 
     appearance = None
@@ -130,44 +128,137 @@ class Dance:
     duration: float
     audio: str | None
     info: dict
+    start: float = 0.0
+    length: float = math.inf
+    note: str | None = None
+
+    def window(self, start: float | None = None, duration: float | None = None) -> Dance:
+        """The part of the dance from `start` for `duration` seconds (docs/design.md#window).
+
+        Parameters
+        ----------
+        start : s from this dance's start (None: 0).
+        duration : s (None: to the song's end).
+
+        Returns
+        -------
+        Dance of the same kind whose time t is this dance's time start + t (the song's time
+        self.start + start + t), lasting `duration` (clamped to the song's end, with a `note`).
+        InputError for a start or a duration outside the song (`window.Window.of`).
+
+        Example
+        -------
+        >>> import trimesh
+        >>> from eigendance.harmonic.mesh import Mesh
+        >>> from eigendance.music.demo_music import demo_track
+        >>> sphere = trimesh.creation.icosphere(2)
+        >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices, sphere.faces), 16,
+        ...                                 cache=False)
+        >>> song = Spectrogram.from_samples(*demo_track(4.0))
+        >>> dance = HarmonicDance(basis, song, Mapping(np.full(64, 0.3), np.full(16, 0.5)))
+        >>> clip = dance.window(1.5, 2.0)
+        >>> bool(np.allclose(clip.positions([0.0, 0.5]), dance.positions([1.5, 2.0])))
+        True
+        """
+        clip = Window.of(start, duration, self.duration, self.song_name)
+        dance = copy.copy(self)
+        dance.start, dance.duration, dance.note = self.start + clip.start, clip.duration, \
+            clip.note
+        return dance
+
+    @property
+    def song_name(self) -> str:
+        """How messages call the song: its file's name, else "the dance"."""
+        return os.path.basename(self.audio) if self.audio else "the dance"
+
+    @property
+    def clipped(self) -> bool:
+        """Whether the dance is a part of its song (starting later, or ending before it)."""
+        return self.start > 0 or self.start + self.duration < self.length - 1e-9
 
     @property
     def n(self) -> int:
+        """Vertices."""
         return len(self.rest)
 
     @property
     def center(self) -> np.ndarray:
+        """(3,) the middle of the rest shape's bounding box."""
         return (self.rest.min(axis=0) + self.rest.max(axis=0)) / 2
 
     @property
     def scale(self) -> float:
+        """Half the largest side of the rest shape's bounding box (1 for a point)."""
         return float((self.rest.max(axis=0) - self.rest.min(axis=0)).max() / 2) or 1.0
 
     @property
     def diagonal(self) -> float:
+        """The rest shape's bounding-box diagonal."""
         return bounding_box_diagonal(self.rest)
 
     def rest_normals(self) -> np.ndarray:
-        return vertex_normals(self.rest, self.faces)
+        """Unit vertex normals of the rest shape (+z where none exists), as three.js computes them.
+
+        Returns
+        -------
+        (n, 3) float64.
+        """
+        return vertex_normals(self.rest, self.faces, default=(0.0, 0.0, 1.0))
 
     def drawn(self, positions: np.ndarray) -> np.ndarray:
         """(…, n_d, 3) the drawn vertices' positions from the welded ones (…, n, 3): each at its
-        welded vertex (docs/design.md#appearance); the positions themselves without a look."""
+        welded vertex (docs/design.md#appearance); the positions themselves without a look.
+
+        Parameters
+        ----------
+        positions : (…, n, 3).
+
+        Returns
+        -------
+        (…, n_d, 3).
+        """
         return positions if self.appearance is None else self.appearance.drawn(positions)
 
     def frames(self, times) -> Iterator[tuple[int, np.ndarray, np.ndarray | None]]:
-        """(first frame index, positions (C, n, 3) float32, normals (C, n, 3) or None when the
-        rest normals hold) for `times`, chunk by chunk."""
+        """The dance at `times`, chunk by chunk.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Yields
+        ------
+        (first frame index, positions (C, n, 3) float32, normals (C, n, 3) float32 or None when the
+        rest normals hold).
+        """
         raise NotImplementedError
 
     def loudest_times(self, count: int) -> np.ndarray:
         """Times the camera frames the dance at (besides its rest shape). Without a
         spectrogram to find the song's `count` loudest moments (a harmonic dance's), 8·count
-        times spread evenly over the dance, so the widest poses are held too."""
+        times spread evenly over the dance, so the widest poses are held too.
+
+        Parameters
+        ----------
+        count : how many poses.
+
+        Returns
+        -------
+        (8·count,) s of the dance.
+        """
         return np.arange(8 * count) * (self.duration / (8 * count))
 
     def positions(self, times) -> np.ndarray:
-        """All positions (T, n, 3) float64 at `times` (for tests and short clips)."""
+        """All positions (T, n, 3) float64 at `times` (for tests and short clips).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, n, 3) float64 (from the float32 frames).
+        """
         times = np.asarray(times, dtype=np.float64).reshape(-1)
         out = np.empty((len(times), self.n, 3))
         for first, chunk, _ in self.frames(times):
@@ -196,40 +287,76 @@ class HarmonicDance(Dance):
         self.name = name
         self.faces = np.asarray(basis.faces, dtype=np.int64)
         self.rest = basis.to_original(basis.vertices)
-        self.duration = float(spectrogram.duration)
+        self.duration = self.length = float(spectrogram.duration)
         self.audio = None if audio is None else os.fspath(audio)
         self.info = {"kind": "harmonics", "k": basis.k, "mapping": mapping.to_json()}
         self.appearance = basis.appearance
 
     def phi(self, times) -> np.ndarray:
-        """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram."""
+        """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram at the dance's times
+        (the song's times start + t).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, k).
+        """
         values = self.spectrogram.smoothed(self.mapping.smoothing).at(
-            np.asarray(times, dtype=np.float64))
+            self.start + np.asarray(times, dtype=np.float64))
         return self.mapping.filter(values, self.basis.k)
 
     def loudest_times(self, count: int) -> np.ndarray:
-        """The song's `count` loudest moments (largest sum over bands of a spectrogram frame),
-        at least 0.25 s apart, loudest first: the poses the page frames a model in
-        (web/src/motion.ts `loudestTimes`)."""
-        values = self.spectrogram.values
+        """The dance's `count` loudest moments (largest sum over bands of a spectrogram frame),
+        at least 0.25 s apart, loudest first, in the dance's time: the poses the page frames a
+        model in (web/src/motion.ts `loudestTimes`); a window's own loudest moments.
+
+        Parameters
+        ----------
+        count : how many poses.
+
+        Returns
+        -------
+        (≤ count,) s of the dance.
+        """
+        rate = self.spectrogram.rate
+        first = int(math.ceil(self.start * rate - 1e-9))
+        last = int(math.floor((self.start + self.duration) * rate + 1e-9))
+        values = self.spectrogram.values[first:last + 1]
         order = np.argsort(-values.sum(axis=1, dtype=np.float64), kind="stable")
         times: list[float] = []
         for frame in order:  # stops after `count` picks: a few frames, not the song
             if len(times) == count:
                 break
-            t = frame / self.spectrogram.rate
+            t = (first + frame) / rate - self.start
             if all(abs(t - other) >= 0.25 for other in times):
                 times.append(t)
         return np.array(times)
 
     def driven(self) -> np.ndarray:
         """The harmonics ν the mapping moves: targets of some band with a non-zero
-        amplification (every other φ_ν is 1 at all times), ascending."""
+        amplification (every other φ_ν is 1 at all times), ascending.
+
+        Returns
+        -------
+        (J,) int64, J ≤ B.
+        """
         targets = np.unique(self.mapping.harmonic_indices(self.basis.k))
         return targets[self.mapping.amplification_for(self.basis.k)[targets] != 0]
 
     def morphs(self, times) -> Morphs:
-        """The motion at `times` as morph targets (exact: X_φ is linear in φ)."""
+        """The motion at `times` as morph targets (exact: X_φ is linear in φ).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        Morphs.
+        """
         driven = self.driven()
         basis = self.basis
         targets = (basis.harmonics(driven).T[:, :, None]
@@ -252,98 +379,110 @@ class HarmonicDance(Dance):
                           self.phi(times)[:, driven] - 1.0)
 
     def frames(self, times):
+        times = self.start + np.asarray(times, dtype=np.float64)
         for first, positions in iter_positions(self.basis, self.spectrogram, self.mapping,
                                                times):
             yield first, positions, None
 
 
 class RigDance(Dance):
-    """A rig's skin moved by its bodies (docs/design.md#skinning).
+    """A rig's skin moved by its modes (docs/design.md#skinning), asked of its `Rig`.
 
     Parameters
     ----------
-    vertices : (n, 3) rest positions of the skin; faces : (m, 3) triangles.
-    weights : (n, n_b) skin weights, rows summing to 1 (dense or scipy sparse).
-    pose : times (T,) → (transforms (T, n_b, 4, 4) from the rest pose, coefficients (T, nm)).
-    rest_frames : (n_b, 4, 4) each body's frame in the rest pose (where a glTF joint sits).
-    body_names : one name per body.
-    duration : seconds.
-    modal : a `ModalSkin` to move the skin by modal skinning, or None for linear blend skinning.
+    rig : the rig (its skeleton's skin, its modes, its skinning).
+    coefficients : song times (T,) → mode coefficients c (T, nm), e.g. `Rig.coefficients` of a
+        song and a mapping.
+    duration : seconds (the song's).
+    skinning : "modal" (first order, as the page plays it) or "lbs" (linear blend skinning of
+        the exact body transforms, what a glTF skin plays).
     audio, name : as for `HarmonicDance`.
-    appearance : the skin's look (`assets.Appearance`), or None (clay).
+    info : more to write in the files' metadata.
+
+    The skin's look (`assets.Appearance`) is the skeleton's.
     """
 
-    def __init__(self, vertices, faces, weights, pose: Callable, rest_frames, body_names,
-                 duration: float, modal: ModalSkin | None = None,
-                 audio: str | os.PathLike | None = None, name: str = "dance", info=None,
-                 appearance=None):
-        self.rest = np.asarray(vertices, dtype=np.float64)
-        self.faces = np.asarray(faces, dtype=np.int64)
+    def __init__(self, rig: Rig, coefficients: Callable, duration: float,
+                 skinning: str = "modal", audio: str | os.PathLike | None = None,
+                 name: str = "dance", info=None):
+        if skinning not in SKINNINGS:
+            raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
+        skeleton = rig.skeleton
+        self.rig, self.coefficients, self.skinning = rig, coefficients, skinning
+        self.rest = np.asarray(skeleton.vertices, dtype=np.float64)
+        self.faces = np.asarray(skeleton.faces, dtype=np.int64)
+        weights = skeleton.weights
         self.weights = weights.toarray() if hasattr(weights, "toarray") else \
             np.asarray(weights, dtype=np.float64)
-        self.pose = pose
-        self.rest_frames = np.asarray(rest_frames, dtype=np.float64)
-        self.body_names = [str(name) for name in body_names]
-        self.duration = float(duration)
-        self.modal = modal
+        self.rest_frames = rig.rest_bones
+        self.body_names = [str(name) for name in rig.model.body_names]
+        self.duration = self.length = float(duration)
         self.audio = None if audio is None else os.fspath(audio)
         self.name = name
-        self.info = {"kind": "rig", "skinning": "modal" if modal else "lbs", **(info or {})}
-        self.appearance = appearance
+        self.info = {"kind": "rig", "skinning": skinning, **(info or {})}
+        self.appearance = getattr(skeleton, "appearance", None)
+
+    def pose(self, times) -> tuple[np.ndarray, np.ndarray]:
+        """The body transforms and mode coefficients at the dance's times.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance (the song's times start + t).
+
+        Returns
+        -------
+        transforms (T, n_b, 4, 4) from the rest pose, coefficients (T, nm).
+        """
+        moving = self.coefficients(self.start + np.asarray(times, dtype=float))
+        return self.rig.body_transforms(moving), moving
 
     def frames(self, times):
         times = np.asarray(times, dtype=np.float64)
         normals = self.rest_normals()
         for first in range(0, len(times), RIG_CHUNK):
-            transforms, coefficients = self.pose(times[first:first + RIG_CHUNK])
-            if self.modal is not None:
-                positions = self.modal.positions(coefficients)
-                turned = self.modal.normals(coefficients, normals)
-            else:
-                positions, turned = linear_blend_skinning(self.rest, self.weights, transforms,
-                                                          normals)
+            moving = self.coefficients(self.start + times[first:first + RIG_CHUNK])
+            positions, turned = self.rig.skinned(moving, self.skinning, normals)
             yield first, positions.astype(np.float32), turned.astype(np.float32)
 
     def blend_positions(self, times) -> np.ndarray:
-        """(T, n, 3) linear blend skinning at `times`: what a glTF skin plays."""
-        transforms, _ = self.pose(np.asarray(times, dtype=np.float64))
-        return linear_blend_skinning(self.rest, self.weights, transforms)
+        """(T, n, 3) linear blend skinning at `times`: what a glTF skin plays.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
+        return self.rig.positions(self.pose(times)[1], "lbs")
 
 
-def rig_dance(skeleton: Skeleton, model: ModalModel, duration: float,
-              coefficients: Callable, skinning: str = "modal", audio=None,
-              name: str = "dance") -> RigDance:
-    """A rig moving in its vibration modes, as `eigendance animate-rig` moves it.
+def rig_dance(rig: Rig, spectrogram: Spectrogram | None, mapping: Mapping | None,
+              skinning: str = "modal", audio=None, name: str = "dance",
+              duration: float | None = None) -> RigDance:
+    """A rig dancing to a song, as `eigendance animate-rig` moves it.
 
     Parameters
     ----------
-    skeleton : the rig with its skin; model : its modes (`ModalModel.from_skeleton`).
-    duration : seconds.
-    coefficients : times (T,) → c (T, nm), e.g. `modal.motion.rig_coefficients` of a song and
-        the mapping `modal.motion.rig_mapping` resolved (docs/design.md#modal-motion).
+    rig : the rig with its skin (`modal.rig.Rig`).
+    spectrogram : the song, or None (music off: φ ≡ 1).
+    mapping : the mapping it plays (`Rig.mapping` resolves one), or None for the default.
     skinning : "modal" or "lbs".
     audio, name : the song's file (or None) and how files call the dance.
+    duration : seconds (default: the song's; 4 s without a song).
 
     Returns
     -------
-    RigDance whose `pose(times)` gives the body transforms (`modal.motion.body_transforms`)
-    and c_κ(t).
+    RigDance whose `pose(times)` gives the body transforms and c_κ(t) (`Rig.coefficients`).
     """
-    if skinning not in ("modal", "lbs"):
-        raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
+    if duration is None:
+        duration = spectrogram.duration if spectrogram is not None else 4.0
 
-    def pose(times):
-        moving = coefficients(np.asarray(times, dtype=float))
-        return body_transforms(model, moving), moving
+    def coefficients(times):
+        return rig.coefficients(spectrogram, mapping, times)
 
     moving_modes = np.flatnonzero(np.abs(coefficients(np.linspace(0, duration, 64))).max(axis=0))
-    frames = np.zeros((model.n_bodies, 4, 4))
-    frames[:, :3, :3] = model.body_rotations
-    frames[:, :3, 3] = model.body_centers
-    frames[:, 3, 3] = 1
-    modal = ModalSkin(model, skeleton.vertices, skeleton.weights) if skinning == "modal" else None
     info = {"modes": [int(m) for m in moving_modes],
-            "frequencies_hz": [float(model.frequencies[m]) for m in moving_modes]}
-    return RigDance(skeleton.vertices, skeleton.faces, skeleton.weights, pose, frames,
-                    model.body_names, duration, modal, audio, name, info,
-                    getattr(skeleton, "appearance", None))
+            "frequencies_hz": [float(rig.model.frequencies[m]) for m in moving_modes]}
+    return RigDance(rig, coefficients, duration, skinning, audio, name, info)

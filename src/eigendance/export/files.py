@@ -2,8 +2,13 @@
 (docs/design.md#exports).
 
 `export_dance` samples the dance at t_i = i/fps, i = 0 … ⌊duration·fps⌋, writes the chosen
-format and copies the song beside it (named after the export, the song's suffix kept), all or
-nothing (`output.Outputs`).
+format and puts the song beside it (named after the export, the song's suffix kept), all or
+nothing (`output.Outputs`). The dance may be a window of its song (`Dance.window`,
+docs/design.md#window): the files then start at its time 0, and the song beside them is cut to
+the same part (`export.song`). This is the one call the command line and the server make:
+
+    export_dance(HarmonicDance(basis, spectrogram, mapping, "song.ogg").window(30, 15),
+                 "clip.glb")
 """
 
 from __future__ import annotations
@@ -14,21 +19,33 @@ import os
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.export.dance import Dance, RigDance, sample_times
+from eigendance.export.dance import Dance, RigDance
 from eigendance.export.gltf import glb_size, write_glb
 from eigendance.export.look_files import mtl_text, texture_files, write_textures
 from eigendance.export.look_files import obj_text as obj_text_with_look
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
+from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
 from eigendance.limits import check_memory, check_output
+from eigendance.music.spectrogram import frame_times
 
 FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
 
 
 def format_of(path: str | os.PathLike, format: str | None = None) -> str:
-    """The export format: `format` if given (checked against the suffix), else by suffix."""
+    """The export format: `format` if given (checked against the suffix), else by suffix.
+
+    Parameters
+    ----------
+    path : the file to write.
+    format : "glb", "pc2" or "usd", or None.
+
+    Returns
+    -------
+    str, the format; InputError for an unknown suffix or one that is not the format's.
+    """
     suffix = suffix_of(path)
     if format is None:
         for name, suffixes in FORMATS.items():
@@ -47,16 +64,34 @@ def format_of(path: str | os.PathLike, format: str | None = None) -> str:
 
 
 def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
-                    appearance=None) -> dict:
-    """The files an export writes: {"main", "mesh" (pc2's rest OBJ), "song", and with a look
-    outside a glb "materials" (pc2's MTL) and "texture<i>" (each image)} (None if not)."""
+                    clipped: bool = False, appearance=None) -> dict:
+    """The files an export writes.
+
+    Parameters
+    ----------
+    path : the main file.
+    format : "glb", "pc2" or "usd".
+    audio : the song's file, or None.
+    clipped : the song is cut to a window (it is written anew, never the song itself).
+    appearance : the model's look (`assets.Appearance`), or None.
+
+    Returns
+    -------
+    {"main", "mesh" (pc2's rest OBJ), "song", and with a look outside a glb "materials" (pc2's
+    MTL) and "texture<i>" (each image)}: paths, None for a file not written (a whole song
+    already there under that name, from an earlier export, is not written again).
+    """
     path = os.fspath(path)
     stem = os.path.splitext(path)[0]
     song = None
     if audio is not None:
         song = stem + suffix_of(audio)
-        if os.path.abspath(song) == os.path.abspath(audio) or (
-                os.path.isfile(song) and filecmp.cmp(song, audio, shallow=False)):
+        same = os.path.abspath(song) == os.path.abspath(audio)
+        if clipped and same:
+            raise InputError(f"{path}: the clip's song would replace {os.path.basename(audio)} "
+                             "itself; give the export another name")
+        if not clipped and (same or (os.path.isfile(song)
+                                     and filecmp.cmp(song, audio, shallow=False))):
             song = None  # the song is already there under that name (an earlier export's)
     paths = {"main": path, "mesh": stem + ".obj" if format == "pc2" else None, "song": song}
     if appearance is not None and format != "glb":
@@ -72,7 +107,7 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
 
     Parameters
     ----------
-    dance : a `HarmonicDance` or a `RigDance`.
+    dance : a `HarmonicDance` or a `RigDance`, or a window of one (`Dance.window`).
     path : the file to write; its suffix names the format unless `format` does.
     format : "glb", "pc2" or "usd" (None: by suffix).
     fps : samples per second.
@@ -89,9 +124,9 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     format = format_of(path, format)
     if not (np.isfinite(fps) and 0 < fps <= 1000):
         raise InputError(f"frames per second must be in (0, 1000], got {fps}")
-    times = sample_times(dance.duration, fps)
+    times = frame_times(dance.duration, fps)
     look = dance.appearance
-    paths = companion_paths(path, format, dance.audio, look)
+    paths = companion_paths(path, format, dance.audio, dance.clipped, look)
     written = [p for p in paths.values() if p is not None]
     textures = [p for name, p in paths.items() if name.startswith("texture")]
     song_name = None if dance.audio is None else \
@@ -111,26 +146,16 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
         if progress is not None:
             progress(done, len(times))
 
-    difference = None
     with Outputs(written, force) as outputs:
         main = outputs.temporary(paths["main"])
-        if format == "glb":
-            extras = {"audio": song_name, "fps": fps, "frames": len(times),
-                      "duration": dance.duration, **dance.info}
-            with open(main, "wb") as file:
-                write_glb(file, dance, times, extras)
-            step(len(times))
-            if isinstance(dance, RigDance) and dance.modal is not None:
-                difference = skinning_difference(dance, times)
-        elif format == "pc2":
-            with open(main, "wb") as file:
-                write_pc2(file, dance, times, step)
+        difference = _write(format, dance, times, fps, main, song_name, step, textures)
+        if format == "pc2":
             _write_obj(outputs, paths, dance, os.path.basename(path), textures)
-        else:
-            write_usd(main, dance, times, fps, song_name, step, textures)
         if textures:
             write_textures(outputs, look, textures)
-        if paths["song"]:
+        if paths["song"] and dance.clipped:
+            cut_song(dance.audio, outputs.temporary(paths["song"]), dance.start, dance.duration)
+        elif paths["song"]:
             outputs.copy(dance.audio, paths["song"])
         size = os.path.getsize(main)
     return {"format": format, "files": written, "frames": len(times), "fps": fps,
@@ -150,6 +175,26 @@ def planned_bytes(dance: Dance, format: str, frames: int) -> int:
     return sizes.get("skin", sizes["morph targets"])
 
 
+def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: str | None,
+           step, textures) -> float | None:
+    """Write the main file of an export; the skinning difference of a modal-skinned rig's glb
+    (else None)."""
+    if format == "glb":
+        extras = {"audio": song_name, "fps": fps, "frames": len(times),
+                  "duration": dance.duration, "start": dance.start, **dance.info}
+        with open(path, "wb") as file:
+            write_glb(file, dance, times, extras)
+        step(len(times))
+        if isinstance(dance, RigDance) and dance.skinning == "modal":
+            return skinning_difference(dance, times)
+    elif format == "pc2":
+        with open(path, "wb") as file:
+            write_pc2(file, dance, times, step)
+    else:
+        write_usd(path, dance, times, fps, song_name, step, textures)
+    return None
+
+
 def _write_obj(outputs, paths, dance: Dance, name: str, textures) -> None:
     """The rest mesh beside a point cache (with its MTL when the dance has a look)."""
     comment = f"eigendance: rest mesh of {name}"
@@ -166,7 +211,17 @@ def _write_obj(outputs, paths, dance: Dance, name: str, textures) -> None:
 
 def skinning_difference(dance: RigDance, times) -> float:
     """The largest distance between a rig's modal skinning and the linear blend skinning of
-    the same body transforms (what a glTF skin plays) over `times`, model units."""
+    the same body transforms (what a glTF skin plays) over `times`, model units.
+
+    Parameters
+    ----------
+    dance : a modal-skinned `RigDance`.
+    times : (T,) s.
+
+    Returns
+    -------
+    float.
+    """
     largest = 0.0
     for first, positions, _ in dance.frames(times):
         blended = dance.blend_positions(times[first:first + len(positions)])

@@ -44,7 +44,16 @@ WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is re
 
 
 def srgb_to_linear(srgb) -> np.ndarray:
-    """sRGB components in [0, 1] → linear (the glTF base colour is linear)."""
+    """sRGB components in [0, 1] → linear (the glTF base colour is linear).
+
+    Parameters
+    ----------
+    srgb : components in [0, 1].
+
+    Returns
+    -------
+    array of the same shape.
+    """
     c = np.asarray(srgb, dtype=np.float64)
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
@@ -205,6 +214,14 @@ def _surface(dance: Dance, look, builder, attributes) -> list[tuple]:
 def blender_safe(weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per target the range [lo, hi] its weights (T, J) are rescaled from: lo = min(0, min w),
     hi = max(0, max w) (hi = lo + 1 for a target whose weights are all 0); returns (lo, hi).
+
+    Parameters
+    ----------
+    weights : (T, J).
+
+    Returns
+    -------
+    (lo (J,), hi (J,)).
 
     Example
     -------

@@ -16,7 +16,17 @@ from eigendance.assets.appearance import Appearance, Material, Texture
 
 def write_look(appearance: Appearance, builder) -> list[int]:
     """Add the appearance's images, samplers, textures and materials to `builder.gltf`;
-    returns the glTF material index of each appearance material."""
+    returns the glTF material index of each appearance material.
+
+    Parameters
+    ----------
+    appearance : the look.
+    builder : the glb being built.
+
+    Returns
+    -------
+    list of int.
+    """
     gltf = builder.gltf
     images = []
     for image in appearance.images:
@@ -80,7 +90,14 @@ def _use(gltf, extension: str) -> None:
 
 
 def drawn_attributes(appearance: Appearance, builder, attributes) -> None:
-    """Set the drawn vertices' NORMAL, TANGENT, TEXCOORD_n and COLOR_0 on `attributes`."""
+    """Set the drawn vertices' NORMAL, TANGENT, TEXCOORD_n and COLOR_0 on `attributes`.
+
+    Parameters
+    ----------
+    appearance : the look.
+    builder : the glb being built.
+    attributes : the primitive's attributes (set in place).
+    """
     target = pygltflib.ARRAY_BUFFER
     if appearance.normals is not None:
         attributes.NORMAL = builder.accessor(_unit(appearance.normals).astype("<f4"), 3, target)

@@ -22,7 +22,17 @@ OBJ_TEXTURES = (("map_Kd", "base_color_texture"), ("map_Bump", "normal_texture")
 
 
 def texture_files(path: str, appearance: Appearance | None) -> list[str]:
-    """The image files written beside `path`: `<stem>_texture<i>.png|.jpg`, one per image."""
+    """The image files written beside `path`: `<stem>_texture<i>.png|.jpg`, one per image.
+
+    Parameters
+    ----------
+    path : the export's main file.
+    appearance : the look, or None.
+
+    Returns
+    -------
+    list of str.
+    """
     if appearance is None:
         return []
     stem = os.path.splitext(os.fspath(path))[0]
@@ -31,13 +41,31 @@ def texture_files(path: str, appearance: Appearance | None) -> list[str]:
 
 
 def linear_to_srgb(linear) -> np.ndarray:
-    """Linear components in [0, 1] → sRGB (what an MTL's Kd means to its readers)."""
+    """Linear components in [0, 1] → sRGB (what an MTL's Kd means to its readers).
+
+    Parameters
+    ----------
+    linear : components in [0, 1].
+
+    Returns
+    -------
+    array of the same shape.
+    """
     c = np.clip(np.asarray(linear, dtype=np.float64), 0.0, 1.0)
     return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)
 
 
 def material_names(appearance: Appearance) -> list[str]:
-    """A unique, space-free name per material (MTL names end at the line's end)."""
+    """A unique, space-free name per material (MTL names end at the line's end).
+
+    Parameters
+    ----------
+    appearance : the look.
+
+    Returns
+    -------
+    list of str.
+    """
     names = []
     for index, material in enumerate(appearance.materials):
         base = "".join(c if c.isalnum() or c in "-_." else "_" for c in material.name) or \
@@ -47,7 +75,17 @@ def material_names(appearance: Appearance) -> list[str]:
 
 
 def mtl_text(appearance: Appearance, textures: list[str]) -> str:
-    """The MTL of the appearance's materials; `textures` are the image files' names."""
+    """The MTL of the appearance's materials; `textures` are the image files' names.
+
+    Parameters
+    ----------
+    appearance : the look.
+    textures : the image files.
+
+    Returns
+    -------
+    str.
+    """
     lines = ["# eigendance: materials of the rest mesh"]
     for name, material in zip(material_names(appearance), appearance.materials, strict=True):
         lines += [f"newmtl {name}", *_mtl_lines(material, textures), ""]
@@ -72,7 +110,19 @@ def _mtl_lines(material: Material, textures: list[str]) -> list[str]:
 
 def obj_text(vertices: np.ndarray, appearance: Appearance, mtl: str, comment: str = "") -> str:
     """Wavefront OBJ of the rest mesh with its look: the welded `vertices` in order, the drawn
-    UVs, the drawn triangles by material on their welded vertices."""
+    UVs, the drawn triangles by material on their welded vertices.
+
+    Parameters
+    ----------
+    vertices : (n, 3) welded, at rest.
+    appearance : the look.
+    mtl : the MTL file beside it.
+    comment : a first comment line.
+
+    Returns
+    -------
+    str.
+    """
     lines = [f"# {comment}" if comment else "#", f"mtllib {os.path.basename(mtl)}"]
     text = "\n".join(lines) + "\n"
     text += ("v %.9g %.9g %.9g\n" * len(vertices)) % tuple(np.asarray(vertices, float).ravel())
@@ -88,7 +138,14 @@ def obj_text(vertices: np.ndarray, appearance: Appearance, mtl: str, comment: st
 
 
 def write_textures(outputs, appearance: Appearance | None, files: list[str]) -> None:
-    """Each image's bytes into its file (through `outputs`: all or nothing)."""
+    """Each image's bytes into its file (through `outputs`: all or nothing).
+
+    Parameters
+    ----------
+    outputs : the export's `Outputs`.
+    appearance : the look, or None.
+    files : the image files (`texture_files`).
+    """
     for image, path in zip(appearance.images if appearance else [], files, strict=True):
         with open(outputs.temporary(path), "wb") as file:
             file.write(image.data)

@@ -61,11 +61,26 @@ class Outputs:
         return self
 
     def temporary(self, destination) -> str:
-        """The temporary path that becomes `destination` on success."""
+        """The temporary path that becomes `destination` on success.
+
+        Parameters
+        ----------
+        destination : one of the export's files.
+
+        Returns
+        -------
+        str, the path to write it to.
+        """
         return self.temporaries[os.path.abspath(os.fspath(destination))]
 
     def copy(self, source, destination) -> None:
-        """Copy the file `source` to the temporary of `destination`."""
+        """Copy the file `source` to the temporary of `destination`.
+
+        Parameters
+        ----------
+        source : the file to copy.
+        destination : one of the export's files.
+        """
         try:
             shutil.copyfile(os.fspath(source), self.temporary(destination))
         except OSError as error:

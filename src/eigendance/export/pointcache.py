@@ -21,12 +21,34 @@ MAGIC = b"POINTCACHE2\0"
 
 def pc2_header(points: int, samples: int, start_frame: float = 0.0,
                sampling: float = 1.0) -> bytes:
-    """The 32-byte PC2 header."""
+    """The 32-byte PC2 header.
+
+    Parameters
+    ----------
+    points : vertices.
+    samples : frames.
+    start_frame : the first frame.
+    sampling : frames per sample.
+
+    Returns
+    -------
+    bytes (32).
+    """
     return MAGIC + struct.pack("<iiffi", 1, points, start_frame, sampling, samples)
 
 
 def pc2_size(points: int, samples: int) -> int:
-    """Bytes of a PC2 file: the header plus samples × points × 3 float32."""
+    """Bytes of a PC2 file: the header plus samples × points × 3 float32.
+
+    Parameters
+    ----------
+    points : vertices.
+    samples : frames.
+
+    Returns
+    -------
+    int, bytes.
+    """
     return len(pc2_header(points, samples)) + 12 * points * samples
 
 
@@ -49,7 +71,16 @@ def write_pc2(file, dance: Dance, times, progress=None) -> None:
 
 
 def read_pc2(path) -> tuple[np.ndarray, float, float]:
-    """(positions (T, n, 3) float32, start frame, sampling) of a PC2 file (for checks)."""
+    """(positions (T, n, 3) float32, start frame, sampling) of a PC2 file (for checks).
+
+    Parameters
+    ----------
+    path : a .pc2 file.
+
+    Returns
+    -------
+    (positions, start frame, sampling).
+    """
     with open(path, "rb") as file:
         header = file.read(32)
         if header[:12] != MAGIC:
@@ -62,7 +93,18 @@ def read_pc2(path) -> tuple[np.ndarray, float, float]:
 def obj_text(vertices: np.ndarray, faces: np.ndarray, comment: str = "") -> str:
     """Wavefront OBJ of a triangle mesh: `v` lines in the given order, then 1-based `f` lines.
 
-    Coordinates carry 9 significant digits (float32 round-trips exactly)."""
+    Coordinates carry 9 significant digits (float32 round-trips exactly).
+
+    Parameters
+    ----------
+    vertices : (n, 3).
+    faces : (m, 3) 0-based.
+    comment : a first comment line ('' for none).
+
+    Returns
+    -------
+    str, the file's text.
+    """
     header = f"# {comment}\n" if comment else ""
     n, m = len(vertices), len(faces)
     # One %-format over all numbers at once: no Python loop over vertices.

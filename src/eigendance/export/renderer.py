@@ -148,7 +148,16 @@ void main() {
 
 
 def linear(value: int) -> tuple[float, float, float]:
-    """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`)."""
+    """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`).
+
+    Parameters
+    ----------
+    value : 0xRRGGBB.
+
+    Returns
+    -------
+    (r, g, b) linear, in [0, 1].
+    """
     srgb = np.array([(value >> 16) & 255, (value >> 8) & 255, value & 255]) / 255
     out = np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
     return tuple(float(c) for c in out)
@@ -158,7 +167,13 @@ def linear(value: int) -> tuple[float, float, float]:
 class Look:
     """How a surface is shaded (a mapping's `look`): shading "smooth" | "flat" | "wireframe",
     and the weight of the deformed triangle's flat normal against the original vertex normal
-    (thesis Fig. 6.4(d): 0.4)."""
+    (thesis Fig. 6.4(d): 0.4).
+
+    Parameters
+    ----------
+    shading : "smooth", "flat" or "wireframe".
+    deformed_normal_weight : w in [0, 1].
+    """
 
     shading: str = "smooth"
     deformed_normal_weight: float = 0.4
@@ -179,7 +194,16 @@ def _axes(direction: np.ndarray) -> np.ndarray:
 
 def silhouette(points: np.ndarray) -> np.ndarray:
     """(N, 3) points seen along VIEW_DIRECTION: rows (s, x, y), depth s toward the camera and
-    position across the view (studio.ts `silhouette`)."""
+    position across the view (studio.ts `silhouette`).
+
+    Parameters
+    ----------
+    points : (N, 3).
+
+    Returns
+    -------
+    (N, 3).
+    """
     return np.asarray(points, dtype=np.float64).reshape(-1, 3) @ _axes(VIEW_DIRECTION).T
 
 
@@ -190,7 +214,16 @@ def _middle(shape: np.ndarray) -> tuple[float, float]:
 
 def rim(rest: np.ndarray) -> np.ndarray:
     """Indices of the vertices that frame the model (studio.ts `rim`): the RIM of them reaching
-    farthest, by depth plus distance from the middle of the view (all of a small model)."""
+    farthest, by depth plus distance from the middle of the view (all of a small model).
+
+    Parameters
+    ----------
+    rest : (n, 3) the rest shape.
+
+    Returns
+    -------
+    (≤ RIM,) int indices.
+    """
     shape = silhouette(rest)
     n = len(shape)
     cx, cy = _middle(shape)
@@ -202,7 +235,17 @@ def rim(rest: np.ndarray) -> np.ndarray:
 def framing(points: np.ndarray, aspect: float) -> tuple[np.ndarray, float]:
     """Where the camera stands so that every point (N, 3) fits a view of this aspect with
     MOTION_MARGIN to spare (studio.ts `framing`): the target and the distance from it along
-    VIEW_DIRECTION. The page frames views by their aspect rounded to 1/50."""
+    VIEW_DIRECTION. The page frames views by their aspect rounded to 1/50.
+
+    Parameters
+    ----------
+    points : (N, 3).
+    aspect : width / height of the view.
+
+    Returns
+    -------
+    (target (3,), distance).
+    """
     aspect = math.floor(aspect * 50 + 0.5) / 50
     shape = silhouette(points)
     _, right, up = _axes(VIEW_DIRECTION)
@@ -215,7 +258,13 @@ def framing(points: np.ndarray, aspect: float) -> tuple[np.ndarray, float]:
 
 @dataclass
 class Camera:
-    """A perspective camera: view (4, 4) world → view and projection (4, 4), OpenGL style."""
+    """A perspective camera: view (4, 4) world → view and projection (4, 4), OpenGL style.
+
+    Parameters
+    ----------
+    view : (4, 4).
+    projection : (4, 4).
+    """
 
     view: np.ndarray
     projection: np.ndarray
@@ -225,7 +274,19 @@ class Camera:
                 aspect: float) -> Camera:
         """The page's camera for a model (viewer.ts `aim`): framed on the rest shape (n, 3) and
         the rim in the loudest poses (P, r, 3); `scale` the half size of the model file's
-        coordinates (the page's unit) for the near and far planes."""
+        coordinates (the page's unit) for the near and far planes.
+
+        Parameters
+        ----------
+        rest : (n, 3).
+        poses : (P, r, 3) the rim in the loudest poses.
+        scale : the model's half size.
+        aspect : width / height of the view.
+
+        Returns
+        -------
+        Camera.
+        """
         target, distance = framing(np.concatenate([rest, np.reshape(poses, (-1, 3))]), aspect)
         eye = target + VIEW_DIRECTION * distance
         view = np.eye(4)
@@ -241,7 +302,17 @@ class Camera:
 
 def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
     """(4, 4) placing the contact shadow's unit square under the rest shape (studio.ts
-    `placeShadow`): on the plane just below its lowest point, as wide as its footprint."""
+    `placeShadow`): on the plane just below its lowest point, as wide as its footprint.
+
+    Parameters
+    ----------
+    rest : (n, 3) the rest shape.
+    scale : the model's half size.
+
+    Returns
+    -------
+    (4, 4).
+    """
     low, high = rest.min(axis=0), rest.max(axis=0)
     size = high - low
     model = np.diag([0.62 * size[0] + 0.05 * scale, 1.0, 0.62 * size[2] + 0.05 * scale, 1.0])
@@ -251,7 +322,17 @@ def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
 
 def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, int, int]]:
     """Viewports (x, y from the bottom, w, h) of `count` tiles in the page's grid: ⌈√(1.5·S)⌉
-    columns, rows as needed, row-major from the top left."""
+    columns, rows as needed, row-major from the top left.
+
+    Parameters
+    ----------
+    count : tiles S.
+    width, height : the frame, pixels.
+
+    Returns
+    -------
+    list of (x, y, w, h).
+    """
     columns = math.ceil(math.sqrt(count * 1.5))
     rows = math.ceil(count / columns)
     cell_w = (width - 2 * GALLERY_PADDING - (columns - 1) * GALLERY_GAP) / columns
@@ -275,12 +356,22 @@ _started = {"gl": False}  # set once this process has started OpenGL
 def gl_started() -> bool:
     """Whether this process has created an OpenGL context. llvmpipe keeps its threads in a
     process-wide screen: a process forked after that inherits the state without the threads and
-    hangs at its first draw, so only a process that never drew may fork renderers."""
+    hangs at its first draw, so only a process that never drew may fork renderers.
+
+    Returns
+    -------
+    bool.
+    """
     return _started["gl"]
 
 
 def create_context() -> moderngl.Context:
-    """A headless OpenGL 3.3 context (EGL; Mesa's llvmpipe without a GPU)."""
+    """A headless OpenGL 3.3 context (EGL; Mesa's llvmpipe without a GPU).
+
+    Returns
+    -------
+    moderngl.Context; InputError when no OpenGL 3.3 is available.
+    """
     _started["gl"] = True
     try:
         return moderngl.create_standalone_context(backend="egl", libgl="libGL.so.1",
@@ -345,7 +436,12 @@ class Renderer:
         """Start a frame of these views (x, y, w, h): the canvas's clear colour between them
         and the studio backdrop in each. The backdrop depends on the views only, so it is drawn
         once and copied into every frame (a per-pixel gradient is most of a frame's cost on
-        llvmpipe otherwise)."""
+        llvmpipe otherwise).
+
+        Parameters
+        ----------
+        views : [(x, y, w, h)] pixels from the bottom left.
+        """
         context = self.context
         views = tuple(tuple(int(v) for v in view) for view in views)
         context.scissor = None
@@ -370,7 +466,16 @@ class Renderer:
         """Draw the mesh at `positions` (n, 3) and its contact shadow into `viewport` (one of
         the frame's views; default: the whole frame), in the page's order after the backdrop:
         the model, then the (transparent) shadow, hidden where the model is in front of it.
-        Positions None: the empty studio."""
+        Positions None: the empty studio.
+
+        Parameters
+        ----------
+        positions : (n, 3), or None.
+        camera : the view's camera.
+        look : how the surface is shaded.
+        viewport : (x, y, w, h), or None.
+        normals : (n, 3) turned normals (a rig's), or None (computed from the deformed triangles).
+        """
         context = self.context
         viewport = viewport or (0, 0, self.width, self.height)
         self.framebuffer.viewport = viewport
@@ -409,13 +514,24 @@ class Renderer:
     def read(self) -> bytes:
         """The frame as RGBA rows from the bottom up (OpenGL's order), 4·width·height bytes
         (RGBA, the framebuffer's own layout, reads back faster than RGB: 5 against 8 ms at
-        1280×720 on llvmpipe)."""
+        1280×720 on llvmpipe).
+
+        Returns
+        -------
+        bytes.
+        """
         return self.framebuffer.read(components=4, alignment=1)
 
     def image(self) -> np.ndarray:
-        """The frame as an (height, width, 3) uint8 RGB array, top row first."""
+        """The frame as an (height, width, 3) uint8 RGB array, top row first.
+
+        Returns
+        -------
+        (height, width, 3) uint8.
+        """
         frame = np.frombuffer(self.read(), np.uint8).reshape(self.height, self.width, 4)
         return frame[::-1, :, :3]
 
     def release(self) -> None:
+        """Free the OpenGL objects and the context."""
         self.context.release()

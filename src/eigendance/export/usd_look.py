@@ -30,7 +30,15 @@ COLOR_INPUTS = {"base_color_texture": ("diffuseColor", "rgb", "sRGB"),
 
 def bind_look(stage, mesh: UsdGeom.Mesh, appearance: Appearance, textures: list[str]) -> None:
     """Face-varying UVs and colours on `mesh`, and its materials bound per subset; `textures`
-    are the image files (their names, beside the stage, are the asset paths)."""
+    are the image files (their names, beside the stage, are the asset paths).
+
+    Parameters
+    ----------
+    stage : the USD stage.
+    mesh : its mesh.
+    appearance : the look.
+    textures : the image files.
+    """
     corners = np.concatenate([part.triangles for part in appearance.parts]).ravel()
     primvars = UsdGeom.PrimvarsAPI(mesh)
     for index, uv in enumerate(appearance.uvs):

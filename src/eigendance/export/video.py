@@ -29,6 +29,7 @@ from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs
 from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
+from eigendance.export.song import seek_options
 from eigendance.music.decode import open_audio
 
 MAX_SIDE = 7680  # pixels (8K)
@@ -40,7 +41,16 @@ PRESET, CRF, AUDIO_BITRATE = "veryfast", 18, "192k"  # x264 speed/quality, AAC b
 
 
 def parse_size(text: str) -> tuple[int, int]:
-    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680."""
+    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680.
+
+    Parameters
+    ----------
+    text : WIDTHxHEIGHT.
+
+    Returns
+    -------
+    (width, height); InputError otherwise.
+    """
     parts = text.lower().replace("×", "x").split("x")
     try:
         width, height = (int(part) for part in parts)
@@ -52,6 +62,12 @@ def parse_size(text: str) -> tuple[int, int]:
 
 
 def check_size(width: int, height: int) -> None:
+    """InputError unless both sides are even and 16 … MAX_SIDE pixels.
+
+    Parameters
+    ----------
+    width, height : pixels.
+    """
     for side in (width, height):
         if not 16 <= side <= MAX_SIDE:
             raise InputError(f"size {width}x{height}: each side must be 16 to {MAX_SIDE} pixels")
@@ -59,13 +75,28 @@ def check_size(width: int, height: int) -> None:
             raise InputError(f"size {width}x{height}: H.264 in yuv420p needs even sides")
 
 
-def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str) -> list[str]:
-    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4."""
+def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str,
+                   start: float = 0.0, duration: float | None = None) -> list[str]:
+    """The encoder: raw RGBA frames (bottom row first) on stdin + the song → MP4.
+
+    Parameters
+    ----------
+    width, height : pixels.
+    fps : frames per second.
+    audio : the song's file.
+    output : the MP4 to write.
+    start, duration : the part of the song to mux, s (`export.song.seek_options`; None: to
+        the end).
+
+    Returns
+    -------
+    list of the command's arguments.
+    """
     rate = Fraction(fps).limit_denominator(1001)
     return [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-y",
             "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
             "-framerate", f"{rate.numerator}/{rate.denominator}", "-i", "pipe:0",
-            "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
+            *seek_options(start, duration), "-i", audio, "-map", "0:v:0", "-map", "1:a:0",
             "-vf", "vflip", "-c:v", "libx264", "-preset", PRESET, "-crf", str(CRF),
             "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", AUDIO_BITRATE,
             "-map_metadata", "-1", "-fflags", "+bitexact", "-flags:v", "+bitexact",
@@ -73,7 +104,16 @@ def ffmpeg_command(width: int, height: int, fps: float, audio: str, output: str)
 
 
 def check_song(path) -> str:
-    """The song's path; InputError (one line) unless it decodes (its first chunk is read)."""
+    """The song's path; InputError (one line) unless it decodes (its first chunk is read).
+
+    Parameters
+    ----------
+    path : the song's file.
+
+    Returns
+    -------
+    str.
+    """
     _, chunks = open_audio(path)
     next(iter(chunks), None)
     if hasattr(chunks, "close"):
@@ -94,6 +134,17 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
     One dance fills the frame as the player shows it; several (a gallery of the same mesh)
     share it in the page's grid. Each view's camera frames its dance as the page does: the rest
     shape and the rim in the loudest poses.
+
+    Parameters
+    ----------
+    dances : one dance, or several of the same mesh.
+    looks : one `Look` per dance.
+    times : (T,) s of the dances.
+    width, height : pixels.
+
+    Yields
+    ------
+    bytes, 4·width·height per frame.
     """
     first = dances[0]
     if any(dance.n != first.n or len(dance.faces) != len(first.faces) for dance in dances):
@@ -117,7 +168,17 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
 
 def view_cameras(dances: list[Dance], cells) -> list[Camera]:
     """The camera of each dance's view (x, y, w, h): framed as the page frames it, on the rest
-    shape and the rim in the dance's loudest poses (`renderer.Camera.framing`)."""
+    shape and the rim in the dance's loudest poses (`renderer.Camera.framing`).
+
+    Parameters
+    ----------
+    dances : the dances.
+    cells : their views (x, y, w, h).
+
+    Returns
+    -------
+    list of Camera.
+    """
     first = dances[0]
     framed = rim(first.rest)
     return [Camera.framing(first.rest, dance.positions(dance.loudest_times(POSES))[:, framed],
@@ -135,6 +196,15 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
     drawn before (`renderer.gl_started`) draws itself instead: a fork would inherit llvmpipe's
     state without its threads. Workers ignore Ctrl-C (the caller handles it and kills them) and
     die with the caller.
+
+    Parameters
+    ----------
+    dances, looks, times, width, height : as for `render_frames`.
+    workers : processes drawing in turn.
+
+    Yields
+    ------
+    bytes, each frame in order.
     """
     times = np.asarray(times, dtype=np.float64)
     if workers <= 1 or len(times) < 2 * workers or gl_started() or \
@@ -188,6 +258,46 @@ def _draw_in_turn(send, dances, looks, times, width, height) -> None:
         send.close()
 
 
+def encode(command: list[str], frames, count: int, progress=None) -> None:
+    """Run the encoder and feed it the frames; the encoder's last error line on failure.
+
+    Parameters
+    ----------
+    command : the encoder's command (`ffmpeg_command`).
+    frames : iterable of raw RGBA frames (bytes).
+    count : how many frames (for `progress`).
+    progress : optional callable(frames done, frames in all).
+    """
+    log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
+    encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                               stderr=log)
+    try:
+        try:
+            for index, frame in enumerate(frames):
+                encoder.stdin.write(frame)
+                if progress is not None:
+                    progress(index + 1, count)
+            encoder.stdin.close()
+        except BrokenPipeError:
+            pass  # the encoder stopped: its own message follows
+        encoder.wait()
+        log.seek(0)
+        errors = log.read().decode(errors="replace")
+        if encoder.returncode != 0:
+            last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
+                            f"exit status {encoder.returncode}")
+            raise InternalError(f"ffmpeg failed: {last}")
+    finally:
+        if encoder.poll() is None:
+            encoder.kill()
+            encoder.wait()
+        try:
+            encoder.stdin.close()
+        except BrokenPipeError:
+            pass  # the encoder is gone; nothing more to flush
+        log.close()
+
+
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
                  audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
                  force: bool = False, progress=None) -> dict:
@@ -196,7 +306,8 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     Parameters
     ----------
     path : the .mp4 to write (atomically; never overwritten unless `force`).
-    dances : one dance, or several of the same mesh drawn as the page's gallery grid.
+    dances : one dance, or several of the same mesh drawn as the page's gallery grid; windows
+        of their song (`Dance.window`, the same for all) cut the song to the same part.
     looks : one `Look` per dance.
     audio : the song's file (any format ffmpeg reads), muxed as AAC.
     fps : frames per second; size : (width, height) in pixels, both even.
@@ -214,38 +325,16 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
         raise InputError(f"frames per second must be in (0, 240], got {fps}")
     audio = check_song(audio)
     duration = max(dance.duration for dance in dances)
+    start = dances[0].start
+    if any(dance.start != start for dance in dances):
+        raise InputError("a gallery's dances must start at the same time of the song")
+    clipped = any(dance.clipped for dance in dances)
     times = video_times(duration, fps)
     path = os.fspath(path)
     with Outputs([path], force) as outputs:
-        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path))
-        log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
-        encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                   stderr=log)
-        try:
-            try:
-                for index, frame in enumerate(frames_in_turn(dances, looks, times, width,
-                                                             height)):
-                    encoder.stdin.write(frame)
-                    if progress is not None:
-                        progress(index + 1, len(times))
-                encoder.stdin.close()
-            except BrokenPipeError:
-                pass  # the encoder stopped: its own message follows
-            encoder.wait()
-            log.seek(0)
-            errors = log.read().decode(errors="replace")
-            if encoder.returncode != 0:
-                last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
-                                f"exit status {encoder.returncode}")
-                raise InternalError(f"ffmpeg failed: {last}")
-        finally:
-            if encoder.poll() is None:
-                encoder.kill()
-                encoder.wait()
-            try:
-                encoder.stdin.close()
-            except BrokenPipeError:
-                pass  # the encoder is gone; nothing more to flush
-            log.close()
+        command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
+                                 duration if clipped else None)
+        encode(command, frames_in_turn(dances, looks, times, width, height), len(times),
+               progress)
     return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
             "duration": duration}

@@ -76,13 +76,19 @@ class HarmonicBasis:
     (length)^-2, eigenvectors (n,k), coefficients (k,3), residual (n,3), laplacian "cotan" |
     "robust". Original coordinates are ``vertices * scale + center``.
 
+    Parameters
+    ----------
+    vertices, faces, center, scale, mass, eigenvalues, eigenvectors, coefficients, residual,
+    laplacian : as above.
+    seconds : how long the solve took (0 for a basis read from a file).
+
     Example
     -------
     >>> import trimesh
     >>> sphere = trimesh.creation.icosphere(2)
     >>> basis = HarmonicBasis.from_mesh(Mesh.from_arrays(sphere.vertices, sphere.faces), k=9,
     ...                                 cache=False)
-    >>> np.round(basis.eigenvalues[:4], 1).tolist()   # a unit sphere: l(l+1) = 0, 2, 2, 2
+    >>> (np.round(basis.eigenvalues[:4], 1) + 0.0).tolist()   # unit sphere: l(l+1) = 0, 2, 2, 2
     [0.0, 2.0, 2.0, 2.0]
     >>> bool(np.allclose(basis.filter_positions(np.ones(9)), basis.vertices))   # φ ≡ 1
     True
@@ -104,10 +110,12 @@ class HarmonicBasis:
 
     @property
     def k(self) -> int:
+        """Harmonics k."""
         return len(self.eigenvalues)
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         return len(self.vertices)
 
     @property
@@ -134,8 +142,22 @@ class HarmonicBasis:
     @classmethod
     def from_arrays(cls, mesh: Mesh, eigenvalues, eigenvectors, mass, laplacian="cotan",
                     seconds=0.0, reduced: ReducedHarmonics | None = None) -> HarmonicBasis:
-        """The basis of `mesh` from a solve's eigenpairs: X̃ = Uᵀ M X, D = X − U X̃ (for a
-        reduced basis, eigenvectors None and U = P U_r from `reduced`)."""
+        """The basis of `mesh` from a solve's eigenpairs: X̃ = Uᵀ M X, D = X − U X̃.
+
+        Parameters
+        ----------
+        mesh : the normalised mesh.
+        eigenvalues : (k,).
+        eigenvectors : (n, k), M-orthonormal; None for a reduced basis.
+        mass : (n,).
+        laplacian : "cotan" or "robust".
+        seconds : how long the solve took.
+        reduced : a reduced basis's `ReducedHarmonics` (U = P U_r), or None.
+
+        Returns
+        -------
+        HarmonicBasis.
+        """
         weighted = mass[:, None] * mesh.vertices
         if reduced is None:
             coefficients = eigenvectors.T @ weighted
@@ -260,7 +282,16 @@ class HarmonicBasis:
         return bounding_box_diagonal(self.vertices)
 
     def displacements(self, phi) -> np.ndarray:
-        """U((φ − 1) ⊙ X̃) for filters (S, k) → (S, n, 3), normalised units."""
+        """U((φ − 1) ⊙ X̃) for filters (S, k) → (S, n, 3), normalised units.
+
+        Parameters
+        ----------
+        phi : (S, k).
+
+        Returns
+        -------
+        (S, n, 3).
+        """
         return Deformer(self.vectors, self.coefficients)(phi)
 
     def motion_gram(self, targets) -> np.ndarray:
@@ -269,6 +300,14 @@ class HarmonicBasis:
         D_ν = u_ν X̃_νᵀ (n, 3) is the displacement of harmonic ν per unit of φ_ν − 1, so a filter
         moves the vertices by RMS √((φ − 1)ᵀ G (φ − 1)) (normalised units; the gallery's
         calibration, docs/design.md#gallery).
+
+        Parameters
+        ----------
+        targets : (T,) harmonic indices.
+
+        Returns
+        -------
+        (T, T), normalised units squared.
         """
         targets = np.asarray(targets, dtype=np.int64)
         if self.reduced is None:
@@ -279,7 +318,16 @@ class HarmonicBasis:
         return overlaps * (self.coefficients[targets] @ self.coefficients[targets].T) / self.n
 
     def deformer(self, original: bool = False) -> Deformer:
-        """The deformation kernel for this basis, in normalised or original coordinates."""
+        """The deformation kernel for this basis, in normalised or original coordinates.
+
+        Parameters
+        ----------
+        original : positions in the file's coordinates (else normalised).
+
+        Returns
+        -------
+        Deformer.
+        """
         if original:
             return Deformer(self.vectors, self.coefficients * self.scale,
                             self.to_original(self.vertices))
@@ -289,6 +337,14 @@ class HarmonicBasis:
         """Filtered normalised positions X + U((φ − 1) ⊙ X̃) for φ of shape (..., k) → (..., n, 3).
 
         All leading axes (gallery items, frames) go through a single matrix product.
+
+        Parameters
+        ----------
+        phi : (…, k).
+
+        Returns
+        -------
+        (…, n, 3) normalised.
         """
         phi = np.asarray(phi, dtype=np.float64)
         if phi.shape[-1:] != (self.k,):
@@ -298,11 +354,25 @@ class HarmonicBasis:
         return self.deformer()(phi.reshape(-1, self.k)).reshape(*batch, self.n, 3)
 
     def to_original(self, positions: np.ndarray) -> np.ndarray:
-        """Map normalised positions back to the mesh file's coordinates."""
+        """Map normalised positions back to the mesh file's coordinates.
+
+        Parameters
+        ----------
+        positions : (…, n, 3) normalised.
+
+        Returns
+        -------
+        (…, n, 3) in the file's unit.
+        """
         return positions * self.scale + self.center
 
     def save(self, path: str | os.PathLike) -> None:
-        """Write the basis file atomically (a temporary file, then a rename)."""
+        """Write the basis file atomically (a temporary file, then a rename).
+
+        Parameters
+        ----------
+        path : the .npz to write.
+        """
         arrays = {name: getattr(self, name) for name in COMMON_KEYS}
         if self.reduced is None:
             arrays["eigenvectors"] = self.eigenvectors
@@ -314,7 +384,16 @@ class HarmonicBasis:
     def load(cls, path: str | os.PathLike) -> HarmonicBasis:
         """Read a basis file, checked: InputError naming the field for anything that is not a
         basis (a missing field, a wrong type or shape, NaN, faces past the vertices, a
-        coefficient or remainder that does not follow from the vertices and eigenvectors)."""
+        coefficient or remainder that does not follow from the vertices and eigenvectors).
+
+        Parameters
+        ----------
+        path : a basis file.
+
+        Returns
+        -------
+        HarmonicBasis.
+        """
         path = os.fspath(path)
         data = load_npz(path, COMMON_KEYS)
         fields = {"vertices": checked_array(data, "vertices", path, shape=(None, 3)),
@@ -379,6 +458,17 @@ def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
     Shapes, finite values, the same mass, ascending eigenvalues, uᵀ M u = 1 and every residual
     within CACHE_TOLERANCE, and Uᵀ M U = I probed with one fixed random vector w: ‖Uᵀ M U w − w‖
     is zero for the identity and, for any other matrix, almost surely not. O(nnz(L)·k).
+
+    Parameters
+    ----------
+    stiffness : L (n, n) sparse.
+    mass : (n,) M's diagonal.
+    k : harmonics.
+    arrays : the stored arrays.
+
+    Returns
+    -------
+    bool.
     """
     eigenvalues, eigenvectors, stored_mass = (arrays.get(name) for name in
                                               ("eigenvalues", "eigenvectors", "mass"))
@@ -405,7 +495,12 @@ def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
 
 
 def basis_cache() -> DiskCache:
-    """The disk cache of eigen-solves (folder `bases` of the cache folder)."""
+    """The disk cache of eigen-solves (folder `bases` of the cache folder).
+
+    Returns
+    -------
+    DiskCache.
+    """
     return DiskCache("bases")
 
 
@@ -413,6 +508,17 @@ def basis_key(mesh: Mesh, k: int, laplacian: str, solver: str = "bands") -> str:
     """The cache key of a solve: everything its eigenpairs depend on.
 
     The normalised geometry's SHA-256, k, the Laplacian, the solver and its version.
+
+    Parameters
+    ----------
+    mesh : the normalised mesh.
+    k : harmonics.
+    laplacian : "cotan" or "robust".
+    solver : "bands" or "eigsh".
+
+    Returns
+    -------
+    str.
     """
     digest = hashlib.sha256()
     digest.update(np.ascontiguousarray(mesh.vertices, dtype=np.float64).tobytes())

@@ -30,12 +30,26 @@ KEY, CHECKSUM = "__key__", "__checksum__"
 
 
 def cache_folder() -> str:
-    """$EIGENDANCE_CACHE_DIR, else the user cache folder of the platform."""
+    """$EIGENDANCE_CACHE_DIR, else the user cache folder of the platform.
+
+    Returns
+    -------
+    str.
+    """
     return os.environ.get("EIGENDANCE_CACHE_DIR") or platformdirs.user_cache_dir("eigendance")
 
 
 def checksum(arrays: dict[str, np.ndarray]) -> str:
-    """SHA-256 over the names, dtypes, shapes and bytes of the arrays, in name order."""
+    """SHA-256 over the names, dtypes, shapes and bytes of the arrays, in name order.
+
+    Parameters
+    ----------
+    arrays : {name: array}.
+
+    Returns
+    -------
+    str, 64 hexadecimal digits.
+    """
     digest = hashlib.sha256()
     for name in sorted(arrays):
         array = np.ascontiguousarray(arrays[name])
@@ -45,13 +59,28 @@ def checksum(arrays: dict[str, np.ndarray]) -> str:
 
 
 class DiskCache:
-    """Arrays stored under string keys in `folder` (default: `cache_folder()/subfolder`)."""
+    """Arrays stored under string keys in `folder` (default: `cache_folder()/subfolder`).
+
+    Parameters
+    ----------
+    subfolder : the cache's subfolder.
+    folder : the folder itself, or None.
+    """
 
     def __init__(self, subfolder: str = "arrays", folder: str | None = None):
         self.folder = folder or os.path.join(cache_folder(), subfolder)
 
     def path(self, key: str) -> str:
-        """The file of the entry for `key`."""
+        """The file of the entry for `key`.
+
+        Parameters
+        ----------
+        key : the key.
+
+        Returns
+        -------
+        str.
+        """
         return os.path.join(self.folder, hashlib.sha256(key.encode()).hexdigest() + ".npz")
 
     def __contains__(self, key: str) -> bool:
@@ -63,6 +92,16 @@ class DiskCache:
 
         valid: the client's check of a stored entry's content (an entry it refuses is computed
         again), for entries that are intact but wrong: written by a bug or by hand.
+
+        Parameters
+        ----------
+        key : the key.
+        fetch : () → the arrays, when nothing valid is stored.
+        valid : arrays → bool, or None.
+
+        Returns
+        -------
+        {name: array}.
         """
         found = self.load(key)
         if found is not None:
@@ -74,7 +113,16 @@ class DiskCache:
         return arrays
 
     def load(self, key: str) -> dict[str, np.ndarray] | None:
-        """The arrays of a valid entry for `key`, or None (an invalid entry is removed)."""
+        """The arrays of a valid entry for `key`, or None (an invalid entry is removed).
+
+        Parameters
+        ----------
+        key : the key.
+
+        Returns
+        -------
+        {name: array} or None.
+        """
         path = self.path(key)
         if not os.path.lexists(path):
             return None
@@ -90,7 +138,13 @@ class DiskCache:
         return None
 
     def store(self, key: str, arrays: dict[str, np.ndarray]) -> None:
-        """Write an entry atomically; an unwritable cache folder is ignored."""
+        """Write an entry atomically; an unwritable cache folder is ignored.
+
+        Parameters
+        ----------
+        key : the key.
+        arrays : {name: array}.
+        """
         try:
             atomic_save_npz(self.path(key), **arrays, **{KEY: np.array(key),
                                                          CHECKSUM: np.array(checksum(arrays))})

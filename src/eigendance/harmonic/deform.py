@@ -37,12 +37,14 @@ class Deformer:
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         if self.reduced is not None:
             return self.reduced.interpolation.n
         return self.eigenvectors.shape[0]
 
     @property
     def k(self) -> int:
+        """Harmonics k."""
         return self.coefficients_rows.shape[1]
 
     def __call__(self, phi: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:

@@ -41,6 +41,13 @@ BASELINE_SHIFT = -1e-2
 
 
 def check_request(n: int, k: int) -> None:
+    """InputError unless k harmonics of an n-vertex mesh can be asked for (1 ≤ k, k ≤ n − 1).
+
+    Parameters
+    ----------
+    n : vertices.
+    k : harmonics.
+    """
     if k < 1:
         raise InputError(f"k must be at least 1, got {k}")
     if k >= n:
@@ -50,7 +57,19 @@ def check_request(n: int, k: int) -> None:
 
 def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
                 progress=None) -> tuple[np.ndarray, np.ndarray]:
-    """Naive baseline: all k pairs in one ARPACK shift-invert run around σ = BASELINE_SHIFT."""
+    """Naive baseline: all k pairs in one ARPACK shift-invert run around σ = BASELINE_SHIFT.
+
+    Parameters
+    ----------
+    stiffness : L (n, n) sparse.
+    mass : (n,).
+    k : pairs.
+    progress : optional callable(pairs done).
+
+    Returns
+    -------
+    (eigenvalues (k,) ascending, eigenvectors (n, k) M-orthonormal).
+    """
     n = stiffness.shape[0]
     check_request(n, k)
     mass = as_mass(mass)
@@ -96,6 +115,14 @@ class Band:
 
     below: Sylvester inertia of L − σM, the number of eigenvalues < σ (None if unknown).
     residuals: ‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, computed where the band was solved.
+
+    Parameters
+    ----------
+    shift : σ.
+    radius : the band's half width.
+    eigenvalues : (p,).
+    eigenvectors : (n, p).
+    below, residuals : as above.
     """
 
     shift: float
@@ -107,10 +134,12 @@ class Band:
 
     @property
     def lower(self) -> float:
+        """σ − radius."""
         return self.shift - self.radius
 
     @property
     def upper(self) -> float:
+        """σ + radius."""
         return self.shift + self.radius
 
 
@@ -261,6 +290,16 @@ def null_space(stiffness, mass, most: int) -> np.ndarray:
 
     The constant on each connected component of the graph of L's non-zero weights:
     u_c = 1_c / √area_c, and L u_c = 0 because every row of L sums to zero.
+
+    Parameters
+    ----------
+    stiffness : L.
+    mass : (n,).
+    most : the most rows kept.
+
+    Returns
+    -------
+    (p, n).
     """
     mass = as_mass(mass)
     graph = sp.csr_matrix(stiffness, copy=True)
@@ -274,7 +313,19 @@ def null_space(stiffness, mass, most: int) -> np.ndarray:
 
 
 def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
-    """‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, in column blocks to bound the memory."""
+    """‖Lu − λMu‖ / (max(|λ|,1)·‖Mu‖) of each pair, in column blocks to bound the memory.
+
+    Parameters
+    ----------
+    stiffness : L.
+    mass : (n,) areas, or a sparse mass (`harmonic.mass`).
+    eigenvalues : (k,).
+    eigenvectors : (n, k).
+
+    Returns
+    -------
+    (k,).
+    """
     mass = as_mass(mass)
     result = np.empty(len(eigenvalues))
     for start in range(0, len(eigenvalues), 256):
@@ -396,6 +447,19 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     inertia (and one more at the top) must equal the number of accepted eigenvalues below its
     shift, else the bands around it look again for the copies of multiple eigenvalues they
     missed; every accepted pair is checked by its residual. Nothing is missed or doubled.
+
+    Parameters
+    ----------
+    stiffness : L (n, n) sparse.
+    mass : (n,).
+    k : pairs.
+    progress : optional callable(pairs done).
+    per_band : pairs per band, about.
+    workers : bands solved at once.
+
+    Returns
+    -------
+    (eigenvalues (k,) ascending, eigenvectors (n, k) M-orthonormal).
     """
     n = stiffness.shape[0]
     check_request(n, k)
@@ -573,7 +637,20 @@ def _verify(values, pieces, bands):
 
 
 def solve(stiffness, mass, k: int, solver: str = "bands", progress=None):
-    """Dispatch to `solve_bands` or `solve_eigsh`; see SOLVERS."""
+    """Dispatch to `solve_bands` or `solve_eigsh`; see SOLVERS.
+
+    Parameters
+    ----------
+    stiffness : L.
+    mass : (n,).
+    k : pairs.
+    solver : "bands" or "eigsh".
+    progress : optional callable(pairs done).
+
+    Returns
+    -------
+    (eigenvalues (k,) ascending, eigenvectors (n, k) M-orthonormal).
+    """
     if solver == "bands":
         try:
             return solve_bands(stiffness, mass, k, progress)

@@ -30,6 +30,20 @@ def lanczos_extreme(apply, n: int, count: int, *, tol: float = 1e-13,
     direction per eigenspace, so copies of a multiple eigenvalue can be missed; callers check
     the count and find the missing copies again with `deflate` = the known eigenvectors (rows,
     orthonormal), which the iteration then stays orthogonal to.
+
+    Parameters
+    ----------
+    apply : x (n,) → A x.
+    n : the dimension.
+    count : pairs wanted.
+    tol : the relative residual accepted.
+    max_steps : the most steps (default 3·count + 50).
+    seed : of the start vector.
+    deflate : (p, n) orthonormal rows kept out, or None.
+
+    Returns
+    -------
+    (theta, vectors), or None.
     """
     max_steps = min(n - (0 if deflate is None else len(deflate)), max_steps or 3 * count + 50)
     basis = np.empty((max_steps + 1, n))  # Lanczos vectors as rows: each pass is one gemv

@@ -71,7 +71,18 @@ def laplacian(vertices: np.ndarray, faces: np.ndarray,
 
 def coupling(found: Contacts, n: int, weight: float) -> sp.csc_matrix:
     """Σ over contacts of weight·CONTACT_STIFFNESS·g gᵀ, g = e_i − Σ_k β_k e_(face k): the
-    springs between touching pieces (n, n), symmetric PSD, zero row sums."""
+    springs between touching pieces (n, n), symmetric PSD, zero row sums.
+
+    Parameters
+    ----------
+    found : the contacts.
+    n : vertices.
+    weight : the typical edge weight the springs scale.
+
+    Returns
+    -------
+    (n, n) csc.
+    """
     terms = np.column_stack([np.ones(len(found)), -found.weights])  # (c, 4)
     nodes = np.column_stack([found.vertices, found.faces])
     values = weight * CONTACT_STIFFNESS * terms[:, :, None] * terms[:, None, :]

@@ -46,6 +46,12 @@ class Mesh:
     appearance: how the model is drawn (docs/design.md#appearance), its `welded` map onto
         these vertices; None for a model without a look of its own (drawn in clay).
 
+    Parameters
+    ----------
+    vertices, faces, center, scale, vertex_map, report, appearance : as above (`from_arrays`
+        and `from_model` make them).
+    name : how messages call it.
+
     Example
     -------
     >>> square = Mesh.from_arrays([[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 0]],
@@ -67,6 +73,7 @@ class Mesh:
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         return len(self.vertices)
 
     @property
@@ -90,7 +97,7 @@ class Mesh:
         -------
         Mesh, normalised into [-1, 1]³; InputError for anything that cannot be repaired.
         """
-        vertices, faces = _validated(vertices, faces, name)
+        vertices, faces = check_mesh(vertices, faces, name)
         vertices, faces, vertex_map, report = _cleaned(vertices, faces, name, weld_tolerance)
         lower, upper = vertices.min(axis=0), vertices.max(axis=0)
         center = (lower + upper) / 2
@@ -100,19 +107,34 @@ class Mesh:
         return cls((vertices - center) / scale, faces, center, scale, vertex_map, report, name)
 
     def adjacency(self):
-        """Sparse (n, n) vertex adjacency through triangle edges."""
+        """Sparse (n, n) vertex adjacency through triangle edges.
+
+        Returns
+        -------
+        scipy.sparse csr (n, n).
+        """
         edges = self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
         n = len(self.vertices)
         return sp.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), (n, n)).tocsr()
 
     def non_manifold_edge_count(self) -> int:
-        """Number of undirected edges shared by more than two triangles."""
+        """Number of undirected edges shared by more than two triangles.
+
+        Returns
+        -------
+        int.
+        """
         edges = np.sort(self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
         _, counts = np.unique(edges[:, 0] * np.int64(self.n) + edges[:, 1], return_counts=True)
         return int((counts > 2).sum())
 
     def describe_cleanup(self) -> str:
-        """A short phrase listing what the clean-up removed, '' if nothing."""
+        """A short phrase listing what the clean-up removed, '' if nothing.
+
+        Returns
+        -------
+        str.
+        """
         return ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in
                          self.report.items() if count)
 
@@ -121,7 +143,16 @@ class Mesh:
     def from_model(cls, model: Model) -> Mesh:
         """The analysis mesh of a model as drawn (`assets.read_model`): drawn vertices within
         WELD_TOLERANCE of the diagonal welded, then cleaned as `from_arrays`; `appearance`
-        maps every drawn vertex onto its welded vertex (docs/design.md#appearance)."""
+        maps every drawn vertex onto its welded vertex (docs/design.md#appearance).
+
+        Parameters
+        ----------
+        model : the model as read.
+
+        Returns
+        -------
+        Mesh with its appearance (None without a look).
+        """
         mesh = cls.from_arrays(model.positions, model.triangles, model.name,
                                WELD_TOLERANCE if model.styled else 0.0)
         mesh.appearance = model.appearance(mesh.vertex_map)
@@ -153,7 +184,26 @@ def load_mesh(path: str | os.PathLike) -> Mesh:
     return Mesh.from_model(read_model(path))
 
 
-def _validated(vertices, faces, name: str) -> tuple[np.ndarray, np.ndarray]:
+def check_mesh(vertices, faces, name: str = "mesh") -> tuple[np.ndarray, np.ndarray]:
+    """The one check of a mesh's arrays (as potpourri3d's `validate_mesh`): InputError naming
+    the mesh and the first defect that no clean-up can repair.
+
+    Parameters
+    ----------
+    vertices : (n, 3) coordinates, n ≥ 1, finite, within ±MAX_COORDINATE.
+    faces : (m, 3) vertex indices, m ≥ 1, integers in 0 … n − 1.
+    name : how messages call the mesh (a file name).
+
+    Returns
+    -------
+    (vertices float64, faces int64).
+
+    Example
+    -------
+    >>> vertices, faces = check_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    >>> vertices.dtype, faces.dtype
+    (dtype('float64'), dtype('int64'))
+    """
     vertices = np.asarray(vertices, dtype=np.float64)
     faces = np.asarray(faces)
     if vertices.ndim != 2 or vertices.shape[1] != 3 or len(vertices) == 0:

@@ -24,6 +24,7 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.limits import check_output
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
+from eigendance.window import Window
 
 CHUNK_BYTES = 24 << 20  # float64 product of one chunk of frames (cache-friendly; measured)
 
@@ -61,7 +62,16 @@ def positions_at(basis: HarmonicBasis, spectrogram: Spectrogram, mapping: Mappin
 
 
 def chunk_frames(n: int) -> int:
-    """Frames per chunk so that one chunk's float64 product stays near CHUNK_BYTES."""
+    """Frames per chunk so that one chunk's float64 product stays near CHUNK_BYTES.
+
+    Parameters
+    ----------
+    n : vertices.
+
+    Returns
+    -------
+    int, 1 … 512.
+    """
     return max(1, min(512, CHUNK_BYTES // max(1, n * 3 * 8)))
 
 
@@ -70,6 +80,16 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
 
     Original coordinates, `dtype` (float32 by default). The arrays come from two buffers used
     in turn: a chunk stays valid until the next-but-one is requested (copy it to keep it).
+
+    Parameters
+    ----------
+    basis, spectrogram, mapping : the mesh's harmonics, the song, the mapping.
+    times : (T,) s of the song.
+    dtype : of the positions.
+
+    Yields
+    ------
+    (first frame index, (C, n, 3)).
     """
     times = np.asarray(times, dtype=np.float64)
     spectrogram = spectrogram.smoothed(mapping.smoothing)
@@ -84,17 +104,32 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
 
 
 def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: float = 30.0,
-                    progress=None, force: bool = False) -> int:
-    """Write the animation file (see the module docstring) atomically; returns the frame count.
+                    progress=None, window: Window | None = None, force: bool = False) -> int:
+    """Write the animation file (see the module docstring) atomically.
 
     Frames are computed chunk by chunk and streamed into the .npy member of the zip, so neither
     the positions nor the file are ever held in memory; a writer thread stores (CRC + write) one
-    chunk while the next is computed. progress: optional callable(done frames). A chunk that is
-    not finite (an amplification or a model too large for float32) ends the write with an
-    InputError, and no file is left. Its size is checked first: it must fit on the disk, and
-    beyond `limits.LARGE_OUTPUT` it is written only with `force`.
+    chunk while the next is computed. A chunk that is not finite (an amplification or a model
+    too large for float32) ends the write with an InputError, and no file is left. Its size is
+    checked first: it must fit on the disk, and beyond `limits.LARGE_OUTPUT` it is written only
+    with `force`.
+
+    Parameters
+    ----------
+    path : the .npz to write.
+    basis, spectrogram, mapping : the mesh's harmonics, the song, the mapping.
+    fps : frames per second.
+    progress : optional callable(done frames).
+    window : the part of the song (`window.Window`; None: the whole song): the file's times
+        start at 0 and its frame at time t is the song's at window.start + t.
+    force : write a file beyond `limits.LARGE_OUTPUT`.
+
+    Returns
+    -------
+    int, the frame count.
     """
-    times = frame_times(spectrogram.duration, fps)
+    window = window or Window(0.0, spectrogram.duration)
+    times = frame_times(window.duration, fps)
     check_output(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
                  f"{len(times)} frames of {basis.n} vertices", force)
     header = {"descr": np.lib.format.dtype_to_descr(np.dtype("<f4")), "fortran_order": False,
@@ -109,8 +144,8 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
                   ThreadPoolExecutor(max_workers=1) as writer):
                 np.lib.format.write_array_header_1_0(member, header)
                 job = None
-                for first, positions in iter_positions(basis, spectrogram, mapping, times,
-                                                       np.dtype("<f4")):
+                for first, positions in iter_positions(basis, spectrogram, mapping,
+                                                       window.start + times, np.dtype("<f4")):
                     check_finite(positions, f"{os.fspath(path)}: not written: positions",
                                  OUT_OF_RANGE)
                     if job is not None:
@@ -128,5 +163,14 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
 
 
 def load_animation(path: str | os.PathLike) -> dict:
-    """Read an animation file: {"times", "faces", "positions"} (positions fully in memory)."""
+    """Read an animation file: {"times", "faces", "positions"} (positions fully in memory).
+
+    Parameters
+    ----------
+    path : an animation file.
+
+    Returns
+    -------
+    {"times", "faces", "positions"}.
+    """
     return load_npz(path, ("times", "faces", "positions"))

@@ -18,13 +18,9 @@ from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
 from eigendance.geometry import weld
-from eigendance.modal.skeleton import (
-    DEFAULT_JOINT_FREQUENCY,
-    Body,
-    Joint,
-    Skeleton,
-    set_automatic_stiffness,
-)
+from eigendance.modal.bodies import Body, Joint
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.stiffness import DEFAULT_JOINT_FREQUENCY, set_automatic_stiffness
 
 # A joint carries the skin when some vertex gives it at least this weight (or a mesh hangs
 # from it); joints that carry nothing and connect nothing that does are left out.

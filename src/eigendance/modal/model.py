@@ -38,7 +38,16 @@ MODAL_KEYS = ("frequencies", "modes", "rigid_modes", "nullspace_dim", "constrain
 
 
 def joint_adjoints(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray]:
-    """Ad_{i→j} and Ad_{l→j} for every joint, each (n_joints, 6, 6)."""
+    """Ad_{i→j} and Ad_{l→j} for every joint, each (n_joints, 6, 6).
+
+    Parameters
+    ----------
+    skeleton : the bodies and joints.
+
+    Returns
+    -------
+    (first, second): (n_joints, 6, 6) each.
+    """
     joints = skeleton.joints
     if not joints:
         return np.zeros((0, 6, 6)), np.zeros((0, 6, 6))
@@ -60,7 +69,16 @@ def joint_adjoints(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray]:
 
 
 def joint_matrices(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """G (constrained rows), R (free rows) and the stiffness diagonal K of a skeleton."""
+    """G (constrained rows), R (free rows) and the stiffness diagonal K of a skeleton.
+
+    Parameters
+    ----------
+    skeleton : the bodies and joints.
+
+    Returns
+    -------
+    G (constrained rows, 6·n_b columns), R (free rows, 6·n_b columns), K (free rows,).
+    """
     n_bodies, joints = skeleton.n_bodies, skeleton.joints
     first, second = joint_adjoints(skeleton)
     full = np.zeros((len(joints), 6, n_bodies, 6))
@@ -78,14 +96,33 @@ def joint_matrices(skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray, np.ndarr
 
 
 def null_space(matrix: np.ndarray, n_columns: int) -> np.ndarray:
-    """Orthonormal basis of ker matrix as columns (n_columns, dim), relative tolerance."""
+    """Orthonormal basis of ker matrix as columns (n_columns, dim), relative tolerance.
+
+    Parameters
+    ----------
+    matrix : (rows, n_columns), possibly with no rows.
+    n_columns : its column count.
+
+    Returns
+    -------
+    (n_columns, dim) orthonormal columns.
+    """
     if matrix.shape[0] == 0:
         return np.eye(n_columns)
     return scipy.linalg.null_space(matrix, rcond=RANK_TOLERANCE)
 
 
 def matrix_rank(matrix: np.ndarray) -> int:
-    """Rank by SVD: singular values above RANK_TOLERANCE times the largest."""
+    """Rank by SVD: singular values above RANK_TOLERANCE times the largest.
+
+    Parameters
+    ----------
+    matrix : any 2-D array.
+
+    Returns
+    -------
+    int.
+    """
     if matrix.size == 0:
         return 0
     singular = np.linalg.svd(matrix, compute_uv=False)
@@ -102,6 +139,12 @@ class ModalModel:
     (n_j, 2) and joint_positions (n_j, 3): the two bodies of every joint and where it is;
     size: the skeleton's extent (`Skeleton.size`), the length that turns translations into
     angles (docs/design.md#modal-motion).
+
+    Parameters
+    ----------
+    frequencies, modes, rigid_modes, nullspace_dim, constraint_rows, constraint_rank, body_names,
+    body_centers, body_rotations, mass, joint_bodies, joint_positions, size : as above;
+        `from_skeleton` makes them, `load` reads them.
 
     Example
     -------
@@ -139,10 +182,12 @@ class ModalModel:
 
     @property
     def n_modes(self) -> int:
+        """Vibration modes (rigid motions not counted)."""
         return len(self.frequencies)
 
     @property
     def n_bodies(self) -> int:
+        """Bodies."""
         return len(self.body_names)
 
     @classmethod
@@ -199,7 +244,12 @@ class ModalModel:
         return model
 
     def body_energy(self) -> np.ndarray:
-        """(n_b, nm): each body's share of a mode's kinetic energy ηᵀMη (columns sum to 1)."""
+        """(n_b, nm): each body's share of a mode's kinetic energy ηᵀMη (columns sum to 1).
+
+        Returns
+        -------
+        (n_b, nm) shares, each column summing to 1.
+        """
         mass = self.mass if self.mass is not None else np.ones(self.modes.shape[0])
         energy = (mass[:, None] * self.modes**2).reshape(self.n_bodies, 6, -1).sum(axis=1)
         total = energy.sum(axis=0, keepdims=True)
@@ -207,7 +257,12 @@ class ModalModel:
 
     # ----------------------------------------------------------------- files
     def save(self, path: str | os.PathLike) -> None:
-        """Write the modal file (docs/design.md#modal-file) atomically."""
+        """Write the modal file (docs/design.md#modal-file) atomically.
+
+        Parameters
+        ----------
+        path : the .npz to write.
+        """
         atomic_save_npz(
             path, frequencies=self.frequencies, modes=self.modes,
             rigid_modes=np.int64(self.rigid_modes), nullspace_dim=np.int64(self.nullspace_dim),
@@ -221,7 +276,16 @@ class ModalModel:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> ModalModel:
-        """Read a modal file; a missing key or inconsistent shape raises InputError."""
+        """Read a modal file; a missing key or inconsistent shape raises InputError.
+
+        Parameters
+        ----------
+        path : a modal file.
+
+        Returns
+        -------
+        ModalModel.
+        """
         data = load_npz(path, MODAL_KEYS)
         names = [str(name) for name in data["body_names"]]
         n_bodies = len(names)

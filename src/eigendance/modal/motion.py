@@ -30,22 +30,28 @@ from eigendance.modal.palette import (
     single_mode_amplitudes,
 )
 from eigendance.modal.rotations import rotation_exp
-from eigendance.modal.skeleton import Skeleton
-from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
-
-FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
 
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
                       time_scale: float = 1.0, drive=None, modes=None) -> np.ndarray:
-    """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ), shape (T, nm): the kernel of the motion.
+    """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ): the kernel of the motion.
 
-    amplitudes: μ per mode (nm,) in coefficient units, default each mode alone at its default
-    bend (`palette.single_mode_amplitudes`); phases: γ (nm,), default 0. modes: indices of the
-    modes that move (others get c = 0); default all. drive: φ, shape (T, nm) (or
-    (T, len(modes)) when `modes` is given), default 1.
+    Parameters
+    ----------
+    model : the rig's modes.
+    times : (T,) s.
+    amplitudes : μ per mode (nm,) in coefficient units; default each mode alone at its default
+        bend (`palette.single_mode_amplitudes`).
+    phases : γ (nm,) radians; default 0.
+    time_scale : s.
+    drive : φ, (T, nm) (or (T, len(modes)) when `modes` is given); default 1.
+    modes : indices of the modes that move (others get c = 0); default all.
+
+    Returns
+    -------
+    (T, nm) coefficients.
     """
     times = np.asarray(times, dtype=float).reshape(-1)
     count = model.n_modes
@@ -74,7 +80,17 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
 
 
 def mapping_palette(model: ModalModel, mapping: Mapping | None) -> Palette:
-    """The palette a mapping plays on this model: its `modes`, completed by the default rule."""
+    """The palette a mapping plays on this model: its `modes`, completed by the default rule.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    mapping : a mapping, or None.
+
+    Returns
+    -------
+    Palette.
+    """
     return resolve_palette(model, mapping.modes if mapping is not None else None)
 
 
@@ -121,14 +137,34 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
 
 
 def twists(model: ModalModel, coefficients) -> np.ndarray:
-    """Body twists [θ; x] in body frames, (T, n_b, 6), for coefficients (T, nm)."""
+    """Body twists [θ; x] in body frames, (T, n_b, 6), for coefficients (T, nm).
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    coefficients : (T, nm).
+
+    Returns
+    -------
+    (T, n_b, 6).
+    """
     coefficients = np.atleast_2d(np.asarray(coefficients, dtype=float))
     return (coefficients @ model.modes.T).reshape(len(coefficients), model.n_bodies, 6)
 
 
 def body_poses(model: ModalModel, coefficients) -> tuple[np.ndarray, np.ndarray]:
     """World rotations (T, n_b, 3, 3) and centres (T, n_b, 3) of every body: rotation
-    exp([θ]×) about the centre of mass, then translation x, both in the body frame."""
+    exp([θ]×) about the centre of mass, then translation x, both in the body frame.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    coefficients : (T, nm).
+
+    Returns
+    -------
+    rotations (T, n_b, 3, 3), centres (T, n_b, 3).
+    """
     twist = twists(model, coefficients)
     rotations = model.body_rotations[None] @ rotation_exp(twist[..., :3])
     centers = model.body_centers[None] + np.einsum("bij,tbj->tbi", model.body_rotations,
@@ -140,6 +176,16 @@ def body_transforms(model: ModalModel, coefficients=None, poses=None) -> np.ndar
     """World transforms (T, n_b, 4, 4) taking rest-pose points to posed points.
 
     From the coefficients, or from `poses` = body_poses(model, coefficients) already computed.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    coefficients : (T, nm), or None when `poses` is given.
+    poses : (rotations, centres) of `body_poses`, or None.
+
+    Returns
+    -------
+    (T, n_b, 4, 4).
     """
     rotations, centers = poses if poses is not None else body_poses(model, coefficients)
     linear = rotations @ np.swapaxes(model.body_rotations, -1, -2)[None]
@@ -156,6 +202,15 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
     Band ξ drives the mode ⌊(ξ + ½)·nm/B⌋ (low sounds drive low modes), each with the
     amplification nm/B, so that a full-scale spectrum gives φ ≈ 1 on every mode that a band
     reaches.
+
+    Parameters
+    ----------
+    bands : B.
+    n_modes : nm, the targets.
+
+    Returns
+    -------
+    Mapping named "bands in order".
     """
     transfer = (np.arange(bands) + 0.5) / bands
     return Mapping(transfer, np.array([n_modes / bands]), name="bands in order")
@@ -167,6 +222,16 @@ def song_calibrated(mapping: Mapping, spectrogram: Spectrogram, n_modes: int) ->
 
     Unchanged when the song never reaches any target (silence, or a transfer and an
     amplification that never meet).
+
+    Parameters
+    ----------
+    mapping : the mapping.
+    spectrogram : the song.
+    n_modes : the mapping's targets.
+
+    Returns
+    -------
+    Mapping, a new one (or `mapping` itself when unchanged).
     """
     music = mode_drive(mapping, spectrogram, spectrogram.times, n_modes, offset=0.0)
     loudest = float(np.abs(music).max(initial=0.0))
@@ -178,7 +243,17 @@ def song_calibrated(mapping: Mapping, spectrogram: Spectrogram, n_modes: int) ->
 
 def default_mapping(spectrogram: Spectrogram, n_modes: int) -> Mapping:
     """`band_mapping` calibrated to the song (`song_calibrated`): what plays when no mapping
-    is given."""
+    is given.
+
+    Parameters
+    ----------
+    spectrogram : the song.
+    n_modes : the palette's selected modes.
+
+    Returns
+    -------
+    Mapping.
+    """
     return song_calibrated(band_mapping(spectrogram.bands, n_modes), spectrogram, n_modes)
 
 
@@ -227,6 +302,18 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
     """φ (T, n_modes) = gain·a·Σ g̃ + b: the mapping's filter over the modes at `times`.
 
     b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
+
+    Parameters
+    ----------
+    mapping : the mapping.
+    spectrogram : the song.
+    times : (T,) s.
+    n_modes : the targets.
+    offset : b, or None (the mapping's).
+
+    Returns
+    -------
+    (T, n_modes).
     """
     if mapping.bands != spectrogram.bands:
         raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands, the song's "
@@ -237,7 +324,17 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
 
 
 def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:
-    """'0,2,5-8' → sorted indices; None → None (the palette's default selection)."""
+    """'0,2,5-8' → sorted indices; None → None (the palette's default selection).
+
+    Parameters
+    ----------
+    text : the --modes value, or None.
+    n_modes : the rig's vibration modes.
+
+    Returns
+    -------
+    (k,) int64 or None; InputError naming a mode that does not exist.
+    """
     if text is None:
         return None
     indices = []
@@ -265,41 +362,12 @@ def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:
     return np.array(sorted(set(indices)))
 
 
-def animate_rig(skeleton: Skeleton, model: ModalModel, times, coefficients,
-                palette: Palette, skinning: str = "modal", progress=None) -> dict:
-    """Arrays of the rig animation file (docs/design.md#animation-file).
-
-    times (T,), faces, float32 positions (T, n, 3) skinned by `skinning` ("modal": ModalSkin,
-    first order, as the page; "lbs": linear blend skinning of the exact body transforms), body
-    rotations/centres/transforms per frame, the coefficients (T, nm) (`rig_coefficients`), the
-    frequencies and the palette that made them.
-    """
-    times = np.asarray(times, dtype=float)
-    coefficients = np.asarray(coefficients, dtype=float)
-    rotations, centers = body_poses(model, coefficients)
-    transforms = body_transforms(model, poses=(rotations, centers))
-    positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
-    skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype=np.float32) \
-        if skinning == "modal" else None
-    for start in range(0, len(times), FRAME_CHUNK):
-        stop = min(start + FRAME_CHUNK, len(times))
-        if skin is not None:
-            positions[start:stop] = skin.positions(coefficients[start:stop])
-        else:
-            positions[start:stop] = linear_blend_skinning(skeleton.vertices, skeleton.weights,
-                                                          transforms[start:stop])
-        if progress is not None:
-            progress(stop)
-    return {"times": times, "faces": skeleton.faces.astype(np.int64), "positions": positions,
-            "rest_vertices": skeleton.vertices, "weights": skeleton.weights.astype(np.float32),
-            "body_names": np.array(model.body_names, dtype=str),
-            "body_rotations": rotations, "body_centers": centers,
-            "body_transforms": transforms.astype(np.float32), "coefficients": coefficients,
-            "modes": palette.selected.astype(np.int64), "amplitudes": palette.amplitudes,
-            "phases": palette.phases, "time_scale": np.float64(palette.time_scale),
-            "frequencies": model.frequencies, "skinning": np.array(skinning)}
-
-
 def save_animation(path, arrays: dict) -> None:
-    """Write a rig animation file atomically."""
+    """Write a rig animation file atomically.
+
+    Parameters
+    ----------
+    path : the .npz to write.
+    arrays : the arrays (`Rig.animation`).
+    """
     atomic_save_npz(path, **arrays)

@@ -51,6 +51,10 @@ class Palette:
 
     selected (k,) int64 ascending mode indices; amplitudes (k,) reach at φ = 1, radians;
     phases (k,) radians; time_scale s > 0.
+
+    Parameters
+    ----------
+    selected, amplitudes, phases, time_scale : as above.
     """
 
     selected: np.ndarray
@@ -59,22 +63,54 @@ class Palette:
     time_scale: float
 
     def coefficient_amplitudes(self, model: ModalModel) -> np.ndarray:
-        """μ (k,) of the selected modes: amplitude / reach."""
+        """μ (k,) of the selected modes: amplitude / reach.
+
+        Parameters
+        ----------
+        model : the rig's modes.
+
+        Returns
+        -------
+        (k,).
+        """
         return self.amplitudes / mode_reach(model)[self.selected]
 
     def to_settings(self) -> ModeSettings:
-        """The palette as the mapping file's `modes` field, every value explicit."""
+        """The palette as the mapping file's `modes` field, every value explicit.
+
+        Returns
+        -------
+        ModeSettings.
+        """
         return ModeSettings(self.selected.copy(), self.amplitudes.copy(), self.phases.copy(),
                             float(self.time_scale))
 
 
 def reach_length(model: ModalModel) -> float:
-    """ℓ = REACH_LENGTH · size: the length that turns a translation into an angle."""
+    """ℓ = REACH_LENGTH · size: the length that turns a translation into an angle.
+
+    Parameters
+    ----------
+    model : the rig's modes (its size).
+
+    Returns
+    -------
+    float, the rig's unit.
+    """
     return REACH_LENGTH * model.size
 
 
 def mode_reach(model: ModalModel) -> np.ndarray:
-    """(nm,) reach per unit coefficient: max over bodies of max(|θ_b|, |x_b|/ℓ)."""
+    """(nm,) reach per unit coefficient: max over bodies of max(|θ_b|, |x_b|/ℓ).
+
+    Parameters
+    ----------
+    model : the rig's modes.
+
+    Returns
+    -------
+    (nm,) radians per unit coefficient (1 for a mode that moves nothing).
+    """
     twists = model.modes.reshape(model.n_bodies, 6, -1)
     rotation = np.linalg.norm(twists[:, :3], axis=1).max(axis=0, initial=0.0)
     translation = np.linalg.norm(twists[:, 3:], axis=1).max(axis=0, initial=0.0)
@@ -88,6 +124,14 @@ def joint_bend(model: ModalModel) -> np.ndarray:
     Body b's world rotation vector and velocity per unit coefficient: ω_b = R_b θ_b and
     u_b = R_b x_b; the joint point P moves on body b by u_b + ω_b × (P − c_b), so
     Δθ = ω_l − ω_i and Δp = (u_l + ω_l × (P − c_l)) − (u_i + ω_i × (P − c_i)).
+
+    Parameters
+    ----------
+    model : the rig's modes.
+
+    Returns
+    -------
+    (n_j, nm) radians per unit coefficient.
     """
     pairs = model.joint_bodies
     if not len(pairs):
@@ -107,7 +151,16 @@ def joint_bend(model: ModalModel) -> np.ndarray:
 
 
 def default_selection(frequencies) -> np.ndarray:
-    """The lowest ≤ DEFAULT_MODES modes within MODE_SPREAD times the lowest frequency."""
+    """The lowest ≤ DEFAULT_MODES modes within MODE_SPREAD times the lowest frequency.
+
+    Parameters
+    ----------
+    frequencies : (nm,) Hz ascending.
+
+    Returns
+    -------
+    (k,) int64 mode indices.
+    """
     frequencies = np.asarray(frequencies, dtype=float)
     if not len(frequencies):
         return np.zeros(0, dtype=np.int64)
@@ -117,7 +170,16 @@ def default_selection(frequencies) -> np.ndarray:
 
 
 def default_time_scale(frequencies) -> float:
-    """s closest to 1 with s·[min ν, max ν] inside TEMPO_BAND, else the geometric centring."""
+    """s closest to 1 with s·[min ν, max ν] inside TEMPO_BAND, else the geometric centring.
+
+    Parameters
+    ----------
+    frequencies : the selected modes' natural frequencies, Hz.
+
+    Returns
+    -------
+    float s.
+    """
     frequencies = np.asarray(frequencies, dtype=float)
     positive = frequencies[frequencies > 0]
     if not len(positive):
@@ -130,12 +192,30 @@ def default_time_scale(frequencies) -> float:
 
 
 def default_phases(selected) -> np.ndarray:
-    """γ_κ = κ·g mod 2π for the modes κ, g = π(3 − √5) the golden angle (radians)."""
+    """γ_κ = κ·g mod 2π for the modes κ, g = π(3 − √5) the golden angle (radians).
+
+    Parameters
+    ----------
+    selected : (k,) mode indices.
+
+    Returns
+    -------
+    (k,) radians in [0, 2π).
+    """
     return np.mod(np.asarray(selected, dtype=float) * GOLDEN_ANGLE, 2 * math.pi)
 
 
 def single_mode_amplitudes(model: ModalModel) -> np.ndarray:
-    """(nm,) the reach at which each mode alone bends its most bent joint by MODE_BEND."""
+    """(nm,) the reach at which each mode alone bends its most bent joint by MODE_BEND.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+
+    Returns
+    -------
+    (nm,) radians.
+    """
     bend = joint_bend(model).max(axis=0, initial=0.0)
     mu = MODE_BEND / np.where(bend > 0, bend, np.inf)
     mu = np.where(bend > 0, mu, MODE_BEND)  # a mode that bends nothing: reach MODE_BEND
@@ -143,7 +223,17 @@ def single_mode_amplitudes(model: ModalModel) -> np.ndarray:
 
 
 def default_amplitudes(model: ModalModel, selected) -> np.ndarray:
-    """(k,) reach of the selected modes: MODE_BEND each, capped together at COMBINED_BEND."""
+    """(k,) reach of the selected modes: MODE_BEND each, capped together at COMBINED_BEND.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    selected : (k,) mode indices.
+
+    Returns
+    -------
+    (k,) radians.
+    """
     selected = np.asarray(selected, dtype=np.int64)
     amplitudes = single_mode_amplitudes(model)[selected]
     mu = amplitudes / mode_reach(model)[selected]
@@ -154,7 +244,16 @@ def default_amplitudes(model: ModalModel, selected) -> np.ndarray:
 
 
 def default_palette(model: ModalModel) -> Palette:
-    """The palette of the default rule (module docstring)."""
+    """The palette of the default rule (module docstring).
+
+    Parameters
+    ----------
+    model : the rig's modes (at least one).
+
+    Returns
+    -------
+    Palette.
+    """
     return resolve_palette(model, None)
 
 
@@ -164,6 +263,15 @@ def resolve_palette(model: ModalModel, settings: ModeSettings | None) -> Palette
     The selected modes are taken in ascending order (amplitudes and phases follow them), so
     the mapping's targets ν = 0, 1, … are the selected modes from low to high frequency.
     InputError if a selected mode does not exist in this model.
+
+    Parameters
+    ----------
+    model : the rig's modes.
+    settings : the mapping's `modes`, or None.
+
+    Returns
+    -------
+    Palette.
     """
     if model.n_modes == 0:
         raise InputError("the rig has no vibration mode (no elastic joint); nothing moves")

@@ -1,58 +1,82 @@
-"""A rig ready to play, and its modes as a gallery dancer (docs/design.md#modal-motion).
+"""A rig: one object built once from a skeleton and queried by every caller
+(docs/design.md#rig).
 
-`Rig.from_skeleton` is the preprocessing of the thesis's Table 7.2: the modal analysis and the
-modal-skinning precomputation. `RigDancer` lets the music pipeline's gallery
-(`eigendance.music.gallery`) work on the palette's modes as it works on a mesh's harmonics, and
-`rig_gallery` is the initial gallery of mode mappings, calibrated to the song.
+As potpourri3d's solver classes are built once and then asked, a `Rig` does the preprocessing
+of the thesis's Table 7.2 once — the modal analysis, and (on first use) the modal-skinning
+precomputation — and answers everything about the rig's motion: the palette a mapping plays,
+the mode coefficients for a song, the bodies' poses and transforms, the skin's positions and
+normals by modal skinning or by linear blend skinning, the arrays of an animation file, the
+rest bone matrices, which joints close a loop and each joint's default stiffness. The command
+line (`animate-rig`, `export`, `render`), the exports (`export.dance.rig_dance`) and the server
+(`server.rigs`, `server.binary.rig_bundle`) all ask it, so rig motion is made one way. Edits
+(`with_stiffness`, `rotate_joint`) give a new Rig and keep this one.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-from eigendance.geometry import bounding_box_diagonal
+from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
-from eigendance.modal.motion import song_calibrated
+from eigendance.modal.motion import (
+    body_poses,
+    body_transforms,
+    mapping_palette,
+    rig_coefficients,
+    rig_mapping,
+)
 from eigendance.modal.palette import Palette, default_palette
+from eigendance.modal.rig_gallery import RigDancer
 from eigendance.modal.skeleton import Skeleton
-from eigendance.modal.skinning import ModalSkin
-from eigendance.music.gallery import DEFAULT_GALLERY, initial_gallery
+from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 
+SKINNINGS = ("modal", "lbs")
+FRAME_CHUNK = 64  # frames skinned per batch (bounds the memory of linear blend skinning)
 
-@dataclass
+
 class Rig:
-    """A rig ready to play: its skeleton, vibration modes, modal skin and default palette.
+    """A skeleton with a skin, its vibration modes and everything asked of its motion.
 
     Parameters
     ----------
     skeleton : bodies, joints and the skin (vertices, faces, weights).
-    model : the skeleton's vibration modes.
-    skin : the modal skinning of the skin (`ModalSkin`).
-    palette : the default palette (`eigendance.modal.palette`), None without vibration modes.
+    dtype : the modal skin's precision: float32 (as a GPU plays it, the default) or float64
+        (a reference).
+
+    Attributes: skeleton; model (`ModalModel`, the vibration modes); skin (`ModalSkin`, made on
+    first use); palette (the default palette, None without vibration modes).
 
     Example
     -------
-    >>> from eigendance.modal.motion import rig_coefficients
     >>> from eigendance.modal.sample_rigs import load_rig
-    >>> rig = Rig.from_skeleton(load_rig("hand"))
-    >>> moved = rig.skin.positions(rig_coefficients(rig.model, None, None, [0.0, 0.5]))
+    >>> rig = Rig(load_rig("hand"))
+    >>> moved = rig.positions(rig.coefficients(None, None, [0.0, 0.5]))
     >>> moved.shape == (2, len(rig.skeleton.vertices), 3)
     True
     """
 
-    skeleton: Skeleton
-    model: ModalModel
-    skin: ModalSkin
-    palette: Palette | None
+    def __init__(self, skeleton: Skeleton, dtype=np.float32):
+        self.skeleton = skeleton
+        self.model = ModalModel.from_skeleton(skeleton)
+        self.dtype = np.dtype(dtype)
+        self.palette: Palette | None = default_palette(self.model) if self.model.n_modes \
+            else None
+        self._skin: ModalSkin | None = None
 
     @classmethod
     def from_skeleton(cls, skeleton: Skeleton, dtype=np.float32) -> Rig:
-        """Modal analysis and skin precomputation of a skeleton with a skin; the modal skin in
-        float32 by default, as a GPU plays it (float64 for a reference).
+        """Modal analysis of a skeleton with a skin (`Rig(skeleton, dtype)`).
+
+        Parameters
+        ----------
+        skeleton : bodies, joints and skin.
+        dtype : the modal skin's precision (float32 by default, float64 for a reference).
+
+        Returns
+        -------
+        Rig.
 
         Example
         -------
@@ -61,77 +85,228 @@ class Rig:
         >>> rig.model.n_modes, rig.skin.displacement.shape      # thesis Table 7.2: 13 modes
         (13, (13, 4608))
         """
-        model = ModalModel.from_skeleton(skeleton)
-        skin = ModalSkin(model, skeleton.vertices, skeleton.weights, dtype)
-        return cls(skeleton, model, skin, default_palette(model) if model.n_modes else None)
+        return cls(skeleton, dtype)
+
+    # --- what the rig holds --------------------------------------------------------------------
+    @property
+    def skin(self) -> ModalSkin:
+        """The modal skinning of the skin (`ModalSkin`), precomputed on first use and kept."""
+        if self._skin is None:
+            self._skin = ModalSkin(self.model, self.skeleton.vertices, self.skeleton.weights,
+                                   self.dtype)
+        return self._skin
+
+    @property
+    def rest_bones(self) -> np.ndarray:
+        """(n_b, 4, 4) the bodies' frames at rest, [R_b | c_b] (body frame → world): where a
+        glTF joint or a three.js bone sits."""
+        bones = np.zeros((self.model.n_bodies, 4, 4))
+        bones[:, :3, :3] = self.model.body_rotations
+        bones[:, :3, 3] = self.model.body_centers
+        bones[:, 3, 3] = 1.0
+        return bones
+
+    @property
+    def closes_loop(self) -> np.ndarray:
+        """(n_j,) bool: the joints whose two bodies stay connected without them (neither side
+        can turn alone)."""
+        return np.array([self.skeleton.joint_sides(index) is None
+                         for index in range(len(self.skeleton.joints))], dtype=bool)
+
+    @property
+    def default_stiffness(self) -> list[np.ndarray]:
+        """Each joint's stiffness by the default rule ("auto"), one value per free row."""
+        return self.skeleton.automatic_stiffnesses()
+
+    # --- motion ------------------------------------------------------------------------------
+    def palette_of(self, mapping: Mapping | None) -> Palette:
+        """The palette a mapping plays on this rig: its `modes`, completed by the default rule.
+
+        Parameters
+        ----------
+        mapping : a mapping, or None (the default palette).
+
+        Returns
+        -------
+        Palette (`modal.palette`).
+        """
+        return mapping_palette(self.model, mapping)
+
+    def mapping(self, spectrogram: Spectrogram | None, mapping: Mapping | None = None,
+                **overrides) -> Mapping:
+        """The complete mapping the rig plays, its palette resolved (`modal.motion.rig_mapping`).
+
+        Parameters
+        ----------
+        spectrogram : the song, or None.
+        mapping : what to play (None: the default mapping for the song).
+        **overrides : selected, amplitude, time_scale, offset, bands (`rig_mapping`).
+
+        Returns
+        -------
+        Mapping with every palette field explicit.
+        """
+        return rig_mapping(self.model, spectrogram, mapping, **overrides)
+
+    def coefficients(self, spectrogram: Spectrogram | None, mapping: Mapping | None,
+                     times) -> np.ndarray:
+        """The mode coefficients of the rig dancing to a song (`modal.motion.rig_coefficients`).
+
+        Parameters
+        ----------
+        spectrogram : the song, or None (music off: φ ≡ 1).
+        mapping : the mapping (None: the default one).
+        times : (T,) song time, s.
+
+        Returns
+        -------
+        (T, nm) coefficients c_κ(t).
+        """
+        return rig_coefficients(self.model, spectrogram, mapping, times)
+
+    def body_poses(self, coefficients) -> tuple[np.ndarray, np.ndarray]:
+        """World rotations and centres of every body for coefficients c.
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+
+        Returns
+        -------
+        rotations (T, n_b, 3, 3) and centres (T, n_b, 3), the skeleton's units.
+        """
+        return body_poses(self.model, coefficients)
+
+    def body_transforms(self, coefficients) -> np.ndarray:
+        """World transforms taking rest-pose points to posed points, for coefficients c.
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+
+        Returns
+        -------
+        (T, n_b, 4, 4).
+        """
+        return body_transforms(self.model, coefficients)
+
+    def skinned(self, coefficients, skinning: str = "modal", normals=None):
+        """The skin moved by coefficients c: modal skinning (first order, as the page plays
+        it) or linear blend skinning of the exact body transforms (what a glTF skin plays).
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+        skinning : "modal" or "lbs".
+        normals : (n, 3) rest normals to turn with the skin, or None.
+
+        Returns
+        -------
+        positions (T, n, 3) in the rig's `dtype` for "modal", float64 for "lbs"; with
+        `normals`, also the turned unit normals (T, n, 3).
+        """
+        if skinning not in SKINNINGS:
+            raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
+        skeleton = self.skeleton
+        if skinning == "lbs":
+            return linear_blend_skinning(skeleton.vertices, skeleton.weights,
+                                         self.body_transforms(coefficients), normals)
+        positions = self.skin.positions(coefficients)
+        return positions if normals is None else (positions,
+                                                  self.skin.normals(coefficients, normals))
+
+    def positions(self, coefficients, skinning: str = "modal") -> np.ndarray:
+        """The skin's positions for coefficients c (`skinned` without normals).
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+        skinning : "modal" or "lbs".
+
+        Returns
+        -------
+        (T, n, 3) positions, the skeleton's units.
+        """
+        return self.skinned(coefficients, skinning)
+
+    def animation(self, times, coefficients, palette: Palette, skinning: str = "modal",
+                  progress=None) -> dict:
+        """The arrays of the rig animation file (docs/design.md#animation-file).
+
+        Parameters
+        ----------
+        times : (T,) s, as the file stores them.
+        coefficients : (T, nm) at those frames (`coefficients`).
+        palette : the palette that made them (stored with them).
+        skinning : "modal" or "lbs".
+        progress : optional callable(frames done).
+
+        Returns
+        -------
+        {"times", "faces", "positions" (T, n, 3) float32, "rest_vertices", "weights",
+        "body_names", "body_rotations", "body_centers", "body_transforms", "coefficients",
+        "modes", "amplitudes", "phases", "time_scale", "frequencies", "skinning"}.
+        """
+        times = np.asarray(times, dtype=float)
+        coefficients = np.asarray(coefficients, dtype=float)
+        skeleton, model = self.skeleton, self.model
+        rotations, centers = self.body_poses(coefficients)
+        transforms = body_transforms(model, poses=(rotations, centers))
+        positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
+        for start in range(0, len(times), FRAME_CHUNK):
+            stop = min(start + FRAME_CHUNK, len(times))
+            positions[start:stop] = self.positions(coefficients[start:stop], skinning)
+            if progress is not None:
+                progress(stop)
+        return {"times": times, "faces": skeleton.faces.astype(np.int64), "positions": positions,
+                "rest_vertices": skeleton.vertices,
+                "weights": skeleton.weights.astype(np.float32),
+                "body_names": np.array(model.body_names, dtype=str),
+                "body_rotations": rotations, "body_centers": centers,
+                "body_transforms": transforms.astype(np.float32), "coefficients": coefficients,
+                "modes": palette.selected.astype(np.int64), "amplitudes": palette.amplitudes,
+                "phases": palette.phases, "time_scale": np.float64(palette.time_scale),
+                "frequencies": model.frequencies, "skinning": np.array(skinning)}
 
     def dancer(self, palette: Palette | None = None, band_edges=None) -> RigDancer:
-        """The palette's modes (default: the rig's default palette) as a gallery `Dancer`."""
+        """The palette's modes as a gallery `Dancer` (`modal.rig_gallery`).
+
+        Parameters
+        ----------
+        palette : the modes that dance (default: the rig's default palette).
+        band_edges : (B+1,) Hz, the song's bands (default 20 Hz … 16 kHz).
+
+        Returns
+        -------
+        RigDancer.
+        """
         return RigDancer(self.model, self.skin, palette or self.palette, band_edges)
 
+    # --- edits -----------------------------------------------------------------------------------
+    def with_stiffness(self, values: dict, scale: float = 1.0) -> Rig:
+        """A new rig with new joint stiffness (`Skeleton.with_stiffness`).
 
-class RigDancer:
-    """A rig's selected modes as a `eigendance.music.gallery.Dancer`.
+        Parameters
+        ----------
+        values : {joint name or index: number | [one per free row] | "auto"}.
+        scale : then multiplies every joint's stiffness.
 
-    The k targets are the palette's selected modes, ascending; a filter φ (S, k) moves them
-    with coefficients c = φ·μ (their largest excursion, sin = 1), skinned by the modal skin.
+        Returns
+        -------
+        Rig, analysed anew; this one is unchanged.
+        """
+        return Rig(self.skeleton.with_stiffness(values, scale), self.dtype)
 
-    `frequencies` ranks the modes instead of giving their natural frequencies: mode κ of k
-    stands at ω_κ = (e_B/e_0)^((κ+1)/k), e the band edges (default 20 Hz–16 kHz), so the
-    gallery's direct transfer (thesis 6-4) sends the bands in order onto the modes in order,
-    in equal groups. A rig's natural frequencies span a factor of a few and a song's bands a
-    factor of 800: 6-4 on the natural frequencies would send nearly every band to the lowest
-    mode. `natural_frequencies` are the Hz.
-    """
+    def rotate_joint(self, key, rotation) -> Rig:
+        """A new rig in a new rest pose: one side of a joint turned (`Skeleton.rotate_joint`).
 
-    def __init__(self, model: ModalModel, skin: ModalSkin, palette: Palette, band_edges=None):
-        self.model, self.skin, self.palette = model, skin, palette
-        self._amplitudes = palette.coefficient_amplitudes(model)
-        self._diagonal = bounding_box_diagonal(skin.vertices)
-        edges = np.asarray(band_edges if band_edges is not None else (20.0, 16000.0))
-        k = len(palette.selected)
-        self._ranks = (edges[-1] / edges[0]) ** ((np.arange(k) + 1.0) / k)
+        Parameters
+        ----------
+        key : the joint's name or index.
+        rotation : (3,) rotation vector, radians, world coordinates.
 
-    @property
-    def frequencies(self) -> np.ndarray:
-        """(k,) the selected modes' ranks ω_κ (see the class docstring), ascending."""
-        return self._ranks
-
-    @property
-    def natural_frequencies(self) -> np.ndarray:
-        """(k,) natural frequencies of the selected modes, Hz, ascending."""
-        return self.model.frequencies[self.palette.selected]
-
-    @property
-    def diagonal(self) -> float:
-        return self._diagonal
-
-    def displacements(self, phi) -> np.ndarray:
-        """(S, k) filters → (S, n, 3) displacements of the skin's vertices."""
-        phi = np.atleast_2d(np.asarray(phi, dtype=float))
-        coefficients = np.zeros((len(phi), self.model.n_modes))
-        coefficients[:, self.palette.selected] = phi * self._amplitudes
-        return self.skin.positions(coefficients) - self.skin.vertices
-
-
-def rig_gallery(dancer: RigDancer, spectrogram: Spectrogram,
-                size: int = DEFAULT_GALLERY) -> list[Mapping]:
-    """The initial gallery of mode mappings (thesis 6.2.2 on the palette's modes).
-
-    The transfers and amplification intervals of `initial_gallery` (on the dancer's ranked
-    modes). The harmonics' intervals are made for k in the hundreds: with a palette of a few
-    modes an item's interval may hold no mode its bands reach; such an item amplifies all its
-    modes instead (same sign), so that every tile moves. Each item's amplification is then
-    calibrated to the song (`song_calibrated`): its loudest frame drives its most driven mode
-    at φ = 1, the default motion's level (docs/design.md#modal-motion).
-    """
-    items = initial_gallery(dancer, spectrogram, size, amplitude=1.0)
-    k = len(dancer.frequencies)
-    full = np.ones(spectrogram.bands)
-    playing = []
-    for item in items:
-        if not np.any(item.filter(full, k, offset=0.0)):
-            sign = -1.0 if item.amplification.min() < 0 else 1.0
-            item = item.with_genes(item.transfer, np.full(k, sign), item.seed, item.name)
-        playing.append(song_calibrated(item, spectrogram, k))
-    return playing
+        Returns
+        -------
+        Rig, analysed anew; this one is unchanged.
+        """
+        return Rig(self.skeleton.rotate_joint(key, rotation), self.dtype)

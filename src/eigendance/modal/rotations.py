@@ -10,7 +10,16 @@ import numpy as np
 
 
 def skew(vectors: np.ndarray) -> np.ndarray:
-    """[a]× for a (..., 3) array: (..., 3, 3) with [a]× b = a × b."""
+    """[a]× for a (..., 3) array: (..., 3, 3) with [a]× b = a × b.
+
+    Parameters
+    ----------
+    vectors : (..., 3).
+
+    Returns
+    -------
+    (..., 3, 3).
+    """
     vectors = np.asarray(vectors, dtype=float)
     x, y, z = vectors[..., 0], vectors[..., 1], vectors[..., 2]
     zero = np.zeros_like(x)
@@ -27,7 +36,16 @@ def _rodrigues(angle: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def rotation_exp(vectors: np.ndarray) -> np.ndarray:
-    """exp([θ]×) for a (..., 3) array of rotation vectors (Rodrigues), (..., 3, 3)."""
+    """exp([θ]×) for a (..., 3) array of rotation vectors (Rodrigues), (..., 3, 3).
+
+    Parameters
+    ----------
+    vectors : (..., 3) rotation vectors, radians.
+
+    Returns
+    -------
+    (..., 3, 3) rotations.
+    """
     vectors = np.asarray(vectors, dtype=float)
     a, b = _rodrigues(np.linalg.norm(vectors, axis=-1)[..., None, None])
     k = skew(vectors)
@@ -35,7 +53,17 @@ def rotation_exp(vectors: np.ndarray) -> np.ndarray:
 
 
 def rotate_by_vectors(vectors: np.ndarray, rotation_vectors: np.ndarray) -> np.ndarray:
-    """exp([r]×) v for matching (..., 3) arrays, without forming matrices (Rodrigues)."""
+    """exp([r]×) v for matching (..., 3) arrays, without forming matrices (Rodrigues).
+
+    Parameters
+    ----------
+    vectors : (..., 3) the vectors to turn.
+    rotation_vectors : (..., 3) radians.
+
+    Returns
+    -------
+    (..., 3) turned vectors.
+    """
     a, b = _rodrigues(np.linalg.norm(rotation_vectors, axis=-1, keepdims=True))
     cross = np.cross(rotation_vectors, vectors)
     return vectors + a * cross + b * np.cross(rotation_vectors, cross)

@@ -17,8 +17,10 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import check_readable, suffix_of
+from eigendance.modal.bodies import Body, Joint
 from eigendance.modal.gltf_skin import skeleton_from_gltf
-from eigendance.modal.skeleton import Body, Joint, Skeleton, set_automatic_stiffness
+from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.stiffness import set_automatic_stiffness
 
 SAMPLE_RIGS = ("loop4", "loop8", "loop16", "chain", "hand")
 HAND_FILE = "generic-hand_left.glb"  # in the package's data folder
@@ -26,7 +28,17 @@ HAND_FILE = "generic-hand_left.glb"  # in the package's data folder
 
 def loop_points(n_bodies: int, symmetric: bool = True) -> np.ndarray:
     """Corners of a planar loop in the xy-plane: a regular polygon of radius 1, or (not
-    symmetric) corners on an ellipse at uneven angles."""
+    symmetric) corners on an ellipse at uneven angles.
+
+    Parameters
+    ----------
+    n_bodies : corners.
+    symmetric : a regular polygon, or the uneven ellipse.
+
+    Returns
+    -------
+    (n_bodies, 3).
+    """
     angles = 2 * math.pi * np.arange(n_bodies) / n_bodies
     if symmetric:
         return np.column_stack([np.cos(angles), np.sin(angles), np.zeros(n_bodies)])
@@ -37,7 +49,20 @@ def loop_points(n_bodies: int, symmetric: bool = True) -> np.ndarray:
 def planar_loop(n_bodies: int, symmetric: bool = True, radius: float = 0.05,
                 density: float = 1000.0, stiffness: float | None = None,
                 skin: bool = True) -> Skeleton:
-    """A closed loop of n_bodies bodies joined by revolute joints (axes normal to the plane)."""
+    """A closed loop of n_bodies bodies joined by revolute joints (axes normal to the plane).
+
+    Parameters
+    ----------
+    n_bodies : bodies (and joints).
+    symmetric : regular, or the thesis's non-symmetric shape.
+    radius, density : of every body.
+    stiffness : of every joint (None: the default rule).
+    skin : give it a tube skin.
+
+    Returns
+    -------
+    Skeleton.
+    """
     if n_bodies < 3:
         raise InputError("a loop needs at least 3 bodies")
     corners = loop_points(n_bodies, symmetric)
@@ -60,7 +85,20 @@ def planar_loop(n_bodies: int, symmetric: bool = True, radius: float = 0.05,
 def open_chain(n_bodies: int = 3, joint_type: str = "spherical", radius: float = 0.05,
                density: float = 1000.0, stiffness: float | None = None,
                skin: bool = True) -> Skeleton:
-    """A free zig-zag chain of bodies in 3D joined end to end (a small open tree)."""
+    """A free zig-zag chain of bodies in 3D joined end to end (a small open tree).
+
+    Parameters
+    ----------
+    n_bodies : bodies.
+    joint_type : of every joint.
+    radius, density : of every body.
+    stiffness : of every joint (None: the default rule).
+    skin : give it a tube skin.
+
+    Returns
+    -------
+    Skeleton.
+    """
     points = [np.zeros(3)]
     for index in range(n_bodies):
         turn = 0.6 * index
@@ -82,7 +120,16 @@ def open_chain(n_bodies: int = 3, joint_type: str = "spherical", radius: float =
 
 
 def sample_rig(name: str) -> Skeleton:
-    """One of SAMPLE_RIGS by name (the 8-body loop is the thesis's non-symmetric one)."""
+    """One of SAMPLE_RIGS by name (the 8-body loop is the thesis's non-symmetric one).
+
+    Parameters
+    ----------
+    name : loop4, loop8, loop16, chain or hand.
+
+    Returns
+    -------
+    Skeleton with a skin.
+    """
     if name == "loop4":
         return planar_loop(4)
     if name == "loop8":
@@ -101,7 +148,15 @@ def add_tube_skin(skeleton: Skeleton, rings: int = 8, around: int = 12,
                   blend: float = 0.25) -> None:
     """Give `skeleton` a tube mesh: `rings` rings of `around` vertices along each body, at 1.2
     times its radius, weighted to the body and, within `blend` of an end, half-way into the
-    body that shares that joint."""
+    body that shares that joint.
+
+    Parameters
+    ----------
+    skeleton : the skeleton (its vertices, faces and weights are set).
+    rings : rings per body.
+    around : vertices per ring.
+    blend : the share of a body, at each end, blended with its neighbour.
+    """
     vertices, faces, weights = [], [], []
     n_bodies = skeleton.n_bodies
     neighbours = {(b, end): None for b in range(n_bodies) for end in (0, 1)}

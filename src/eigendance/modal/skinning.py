@@ -21,15 +21,9 @@ import numpy as np
 import scipy.sparse
 
 from eigendance.errors import InputError
+from eigendance.geometry import cross
 from eigendance.modal.model import ModalModel
 from eigendance.modal.rotations import rotate_by_vectors
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """a × b along the last axis, broadcast (faster than np.cross on large stacks)."""
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
 def _checked(vertices, weights, n_bodies):
@@ -75,14 +69,14 @@ class ModalSkin:
         twists = model.modes.reshape(nb, 6, nm)
         omega = np.einsum("bij,bjk->bki", model.body_rotations, twists[:, :3])  # (nb, nm, 3)
         linear = np.einsum("bij,bjk->bki", model.body_rotations, twists[:, 3:])
-        offset = linear - _cross(omega, model.body_centers[:, None, :])
+        offset = linear - cross(omega, model.body_centers[:, None, :])
         if not hasattr(weights, "tocsr"):
             weights = weights.astype(dtype)
         # The per-body arrays are small: cast them first, so the large ones are made in dtype.
         omega, offset = omega.astype(dtype), offset.astype(dtype)
         rho = np.asarray(weights @ omega.reshape(nb, nm * 3)).reshape(n, nm, 3).astype(
             dtype, copy=False)
-        tau = _cross(rho, self.vertices.astype(dtype)[:, None, :])
+        tau = cross(rho, self.vertices.astype(dtype)[:, None, :])
         tau += np.asarray(weights @ offset.reshape(nb, nm * 3)).reshape(n, nm, 3)
         self.displacement = np.ascontiguousarray(tau.transpose(1, 0, 2)).reshape(nm, 3 * n)
         self.rotation = np.ascontiguousarray(rho.transpose(1, 0, 2)).reshape(nm, 3 * n)
@@ -90,10 +84,20 @@ class ModalSkin:
 
     @property
     def n_modes(self) -> int:
+        """Modes nm."""
         return self.displacement.shape[0]
 
     def positions(self, coefficients) -> np.ndarray:
-        """(T, n, 3) skinned positions for coefficients c (T, nm): x + c·τ, one product."""
+        """(T, n, 3) skinned positions for coefficients c (T, nm): x + c·τ, one product.
+
+        Parameters
+        ----------
+        coefficients : (T, nm) (or (nm,)).
+
+        Returns
+        -------
+        (T, n, 3) in the skin's dtype.
+        """
         coefficients = np.atleast_2d(np.asarray(coefficients, dtype=self.displacement.dtype))
         if coefficients.shape[1] != self.n_modes:
             raise InputError(f"coefficients have {coefficients.shape[1]} modes; the skin "
@@ -103,7 +107,17 @@ class ModalSkin:
         return flat.reshape(len(coefficients), -1, 3)
 
     def normals(self, coefficients, normals) -> np.ndarray:
-        """(T, n, 3) rest normals turned by exp([Σ_κ c_κ ρ_iκ]×)."""
+        """(T, n, 3) rest normals turned by exp([Σ_κ c_κ ρ_iκ]×).
+
+        Parameters
+        ----------
+        coefficients : (T, nm).
+        normals : (n, 3) rest normals.
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
         coefficients = np.atleast_2d(np.asarray(coefficients, dtype=self.rotation.dtype))
         turn = (coefficients @ self.rotation).reshape(len(coefficients), -1, 3)
         normals = np.asarray(normals, dtype=float)

@@ -29,6 +29,10 @@ class Mulberry32:
         uniform() = next() / 4294967296   // in [0, 1)
 
     The initial state is the seed modulo 2^32.
+
+    Parameters
+    ----------
+    seed : any integer (taken modulo 2^32).
     """
 
     MASK = 0xFFFFFFFF
@@ -37,6 +41,12 @@ class Mulberry32:
         self.state = int(seed) & self.MASK
 
     def next_uint32(self) -> int:
+        """The next 32-bit output.
+
+        Returns
+        -------
+        int in [0, 2^32).
+        """
         M = self.MASK
         self.state = (self.state + 0x6D2B79F5) & M
         a = self.state
@@ -45,11 +55,25 @@ class Mulberry32:
         return (t ^ (t >> 14)) & M
 
     def uniform(self) -> float:
-        """A float in [0, 1): next_uint32() / 2^32."""
+        """A float in [0, 1): next_uint32() / 2^32.
+
+        Returns
+        -------
+        float.
+        """
         return self.next_uint32() / 4294967296.0
 
     def below(self, count: int) -> int:
-        """An integer in [0, count): ⌊uniform()·count⌋."""
+        """An integer in [0, count): ⌊uniform()·count⌋.
+
+        Parameters
+        ----------
+        count : the bound, ≥ 1.
+
+        Returns
+        -------
+        int.
+        """
         return min(count - 1, int(math.floor(self.uniform() * count)))
 
 
@@ -60,6 +84,16 @@ def cross(first, second, random: Mulberry32, mean_segment: float | None = None) 
     draw u and stop if u < p, else n += 1 (a Geometric(p) length truncated to what is left, one
     uniform per trial), p = min(1, 1/mean_segment), mean_segment = L/4 by default; then draw
     r = uniform() and fill the next n entries with r·first + (1 − r)·second.
+
+    Parameters
+    ----------
+    first, second : (L,) the parents' vectors.
+    random : the generator (its draws are consumed in the documented order).
+    mean_segment : the mean segment length (default L/4).
+
+    Returns
+    -------
+    (L,) the child's vector.
     """
     first = np.asarray(first, dtype=np.float64)
     second = np.asarray(second, dtype=np.float64)

@@ -32,6 +32,10 @@ _INTEGER_SCALE = {"u8": 128.0, "s16": 32768.0, "s32": 2147483648.0, "s64": 92233
 def open_audio(path: str | os.PathLike) -> tuple[int, Iterator[np.ndarray]]:
     """Open an audio file.
 
+    Parameters
+    ----------
+    path : the file (any format libsndfile or FFmpeg reads).
+
     Returns
     -------
     (sample rate in Hz, iterator over mono float64 chunks in [-1, 1]).
@@ -47,7 +51,16 @@ def open_audio(path: str | os.PathLike) -> tuple[int, Iterator[np.ndarray]]:
 
 
 def read_audio(path: str | os.PathLike) -> tuple[np.ndarray, int]:
-    """The whole file as mono float64 samples (for short files and tests) and its sample rate."""
+    """The whole file as mono float64 samples (for short files and tests) and its sample rate.
+
+    Parameters
+    ----------
+    path : the file.
+
+    Returns
+    -------
+    (samples (n,) float64 in [-1, 1], sample rate Hz).
+    """
     sample_rate, chunks = open_audio(path)
     parts = list(chunks)
     samples = np.concatenate(parts) if parts else np.zeros(0)
@@ -58,6 +71,14 @@ def mono(samples) -> np.ndarray:
     """(n,) or (n, channels) samples → mono float64 by the mean of the channels.
 
     Float samples are taken as they are (full scale ±1); integer PCM is scaled by 2^(bits−1).
+
+    Parameters
+    ----------
+    samples : (n,) or (n, channels), float or integer PCM.
+
+    Returns
+    -------
+    (n,) float64.
     """
     samples = np.asarray(samples)
     if np.issubdtype(samples.dtype, np.integer):

@@ -37,7 +37,17 @@ def _place(track, start, sound):
 
 
 def demo_track(duration: float = 30.0, sample_rate: int = SAMPLE_RATE) -> tuple[np.ndarray, int]:
-    """The demo music: (mono float64 samples with peak 0.9, sample rate)."""
+    """The demo music: (mono float64 samples with peak 0.9, sample rate).
+
+    Parameters
+    ----------
+    duration : s.
+    sample_rate : Hz.
+
+    Returns
+    -------
+    (samples (duration·sample_rate,) float64, sample rate Hz).
+    """
     random = np.random.default_rng(20121)
     count = int(round(duration * sample_rate))
     track = np.zeros(count)
@@ -96,7 +106,13 @@ def demo_track(duration: float = 30.0, sample_rate: int = SAMPLE_RATE) -> tuple[
 
 
 def write_demo_wav(path: str | os.PathLike, duration: float = 30.0) -> None:
-    """Write the demo track as a 16-bit mono WAV file (atomically)."""
+    """Write the demo track as a 16-bit mono WAV file (atomically).
+
+    Parameters
+    ----------
+    path : the .wav to write.
+    duration : s.
+    """
     samples, sample_rate = demo_track(duration)
     atomic_write(path, lambda file: soundfile.write(file, samples, sample_rate, format="WAV",
                                                     subtype="PCM_16"))

@@ -7,20 +7,28 @@ diagonal) is MOTION_LOWEST for the first item, falling geometrically to MOTION_H
 last. Harmonics of eigenvalue 0 (translations) and harmonics that carry none of the shape (their
 coefficient is rounding noise) are never driven.
 
-A gallery works on any *dancer* — the harmonics of a mesh, later the vibration modes of a
-rig — through the `Dancer` protocol. Sizes follow one rule, shared by the library, the command
-line, the server and the page: `check_gallery_size`.
+A gallery works on any *dancer* — the harmonics of a mesh, the vibration modes of a rig —
+through the `Dancer` protocol (`music.dancer`, with the measures of motion on a song). Sizes
+follow one rule, shared by the library, the command line, the server and the page:
+`check_gallery_size`.
 """
 
 from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.music.dancer import (
+    Dancer,
+    frame_motion,
+    full_scale_motion,
+    gallery_motion,
+    motion_gram,
+    song_frames,
+)
 from eigendance.music.mapping import Mapping
 
 MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
@@ -33,49 +41,20 @@ ZERO_FREQUENCY = 1e-6  # ω_ν ≤ this · ω_max: eigenvalue 0, a translation o
 # A harmonic moving the model less than this · the largest carries only rounding: of the
 # arithmetic (1e-15) or of the file's coordinates (6 to 7 significant digits in OBJ, PLY, STL).
 CONTENT_FLOOR = 1e-6
-CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
-MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy
 GRAM_CHUNK = 64  # harmonics per block when only the diagonal of the Gram matrix is needed
 
 
-class Dancer(Protocol):
-    """What a gallery needs of a model: its frequencies and the motions filters give it.
-
-    Displacements must be affine in φ: a filter moves the model by Σ_ν (φ_ν − b) D_ν,
-    D_ν (n, 3) the displacement field of target ν (harmonics: b = 1 and D_ν = u_ν X̃_νᵀ; a rig's
-    modes: b = 0). A dancer may also give `motion_gram(targets)` — (T,) → (T, T), the mean over
-    the vertices of ⟨D_ν(x), D_μ(x)⟩ — without forming positions (`HarmonicBasis` does); else
-    `motion_gram` below forms it from the displacements.
-    """
-
-    @property
-    def frequencies(self) -> np.ndarray:
-        """(k,) ascending: √λ of a mesh's harmonics, or a rig's (ranked) modes."""
-
-    @property
-    def diagonal(self) -> float:
-        """Bounding-box diagonal of the rest shape, in the units of the displacements."""
-
-    def displacements(self, phi) -> np.ndarray:
-        """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape."""
-
-
-def motion_gram(dancer: Dancer, targets) -> np.ndarray:
-    """G_νμ = mean over the vertices of ⟨D_ν(x), D_μ(x)⟩ for `targets` (T,) → (T, T): the
-    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0)."""
-    targets = np.asarray(targets, dtype=np.int64)
-    own = getattr(dancer, "motion_gram", None)  # optional in the protocol: a fast path
-    if own is not None:
-        return own(targets)
-    filters_ = np.zeros((len(targets) + 1, len(dancer.frequencies)))
-    filters_[np.arange(1, len(targets) + 1), targets] = 1.0
-    moved = dancer.displacements(filters_)
-    fields = (moved[1:] - moved[0]).reshape(len(targets), -1)
-    return fields @ fields.T / moved.shape[1]
-
-
 def check_gallery_size(size) -> int:
-    """The gallery size as an int; InputError unless it is an integer in [MIN, MAX]."""
+    """The gallery size as an int; InputError unless it is an integer in [MIN, MAX].
+
+    Parameters
+    ----------
+    size : the size asked for (anything).
+
+    Returns
+    -------
+    int.
+    """
     if isinstance(size, bool) or not isinstance(size, int | np.integer) or \
             not MIN_GALLERY <= size <= MAX_GALLERY:
         raise InputError(f"a gallery has {MIN_GALLERY} to {MAX_GALLERY} items; got {size!r}")
@@ -87,7 +66,16 @@ def check_gallery_size(size) -> int:
 
 
 def motion_content(dancer: Dancer) -> np.ndarray:
-    """c_ν = RMS over the vertices of D_ν, the motion of target ν per unit of φ_ν − 1 (k,)."""
+    """c_ν = RMS over the vertices of D_ν, the motion of target ν per unit of φ_ν − 1 (k,).
+
+    Parameters
+    ----------
+    dancer : the model.
+
+    Returns
+    -------
+    (k,).
+    """
     k = len(dancer.frequencies)
     blocks = [np.diag(motion_gram(dancer, np.arange(start, min(k, start + GRAM_CHUNK))))
               for start in range(0, k, GRAM_CHUNK)]
@@ -96,7 +84,17 @@ def motion_content(dancer: Dancer) -> np.ndarray:
 
 def drivable_harmonics(dancer: Dancer, content: np.ndarray | None = None) -> np.ndarray:
     """The targets a gallery may drive, ascending (int64): eigenvalue > 0 (ω_ν above
-    ZERO_FREQUENCY·ω_max) and a motion c_ν above CONTENT_FLOOR times the largest one."""
+    ZERO_FREQUENCY·ω_max) and a motion c_ν above CONTENT_FLOOR times the largest one.
+
+    Parameters
+    ----------
+    dancer : the model.
+    content : `motion_content(dancer)`, or None.
+
+    Returns
+    -------
+    (N,) int64; InputError (remedy more harmonics) when none is.
+    """
     frequencies = np.maximum(np.asarray(dancer.frequencies, dtype=np.float64), 0.0)
     if not len(frequencies) or not frequencies.max() > 0:
         raise InputError("the model has no harmonic of non-zero frequency: nothing can make it "
@@ -120,6 +118,10 @@ class Part:
     item (its own range); profile: the unit magnitude on `home`; order: how its transfer spreads
     the bands over `harmonics` ("direct": low bands to low harmonics, "reversed", or
     "interleaved": band ξ to harmonic ξ mod w).
+
+    Parameters
+    ----------
+    harmonics, unit, home, profile, order : as above.
     """
 
     harmonics: np.ndarray
@@ -131,7 +133,17 @@ class Part:
 
 def geometric_starts(count: int, parts: int) -> np.ndarray:
     """Start positions of `parts` consecutive groups of `count` ≥ `parts` items, each at least
-    one long, lengths growing geometrically: start_i ≈ (count + 1)^(i/parts) − 1."""
+    one long, lengths growing geometrically: start_i ≈ (count + 1)^(i/parts) − 1.
+
+    Parameters
+    ----------
+    count : items.
+    parts : groups.
+
+    Returns
+    -------
+    (parts,) int64 ascending, the first 0.
+    """
     starts = np.round((count + 1.0) ** (np.arange(parts) / parts) - 1).astype(np.int64)
     for i in range(1, parts):  # at least one item per group, room left for the later ones
         starts[i] = min(max(starts[i], starts[i - 1] + 1), count - (parts - i))
@@ -145,6 +157,15 @@ def ranged_parts(drivable: np.ndarray, size: int) -> list[Part]:
     lowest and the highest frequency, so crossings reach any transfer); items 1…S−2 split
     P[1:N−1] into geometrically growing ranges, their bands spread over them, direct and reversed
     in turn. Item s's sign is (−1)^s; its amplification is flat on its range (a band-pass).
+
+    Parameters
+    ----------
+    drivable : (N,) the drivable targets.
+    size : S.
+
+    Returns
+    -------
+    list of S parts.
     """
     count = len(drivable)
     bounds = [0, count - 1]
@@ -167,6 +188,16 @@ def combined_parts(drivable: np.ndarray, content: np.ndarray, size: int) -> list
     The items are the single harmonics, then signed pairs, then signed triples … (first sign the
     item's (−1)^s), each harmonic equalised to the same motion per unit (amplification 1/c_ν), its
     bands interleaved: two such items correlate at most √(2/3) when their loudness is alike.
+
+    Parameters
+    ----------
+    drivable : (N,) the drivable targets.
+    content : (k,) `motion_content`.
+    size : S.
+
+    Returns
+    -------
+    list of S parts; InputError when fewer than S combinations exist.
     """
     count = len(drivable)
     combos = list(itertools.islice(signed_combinations(count), size))
@@ -187,7 +218,16 @@ def combined_parts(drivable: np.ndarray, content: np.ndarray, size: int) -> list
 
 def signed_combinations(count: int):
     """(members, signs) of 1, 2, … of `count` items, first sign +: the singles, then the pairs
-    (+ +, + −), then the triples …; (3^count − 1)/2 in all."""
+    (+ +, + −), then the triples …; (3^count − 1)/2 in all.
+
+    Parameters
+    ----------
+    count : items.
+
+    Yields
+    ------
+    (members (tuple of indices), signs (tuple of ±1)).
+    """
     for width in range(1, count + 1):
         for members in itertools.combinations(range(count), width):
             for signs in itertools.product((1.0, -1.0), repeat=width - 1):
@@ -195,7 +235,18 @@ def signed_combinations(count: int):
 
 
 def part_transfer(part: Part, bands: int, k: int) -> np.ndarray:
-    """The transfer (B,) sending every band into `part.harmonics`: cell centres (ν + ½)/k."""
+    """The transfer (B,) sending every band into `part.harmonics`: cell centres (ν + ½)/k.
+
+    Parameters
+    ----------
+    part : the part.
+    bands : B.
+    k : the targets.
+
+    Returns
+    -------
+    (B,) in [0, 1].
+    """
     width = len(part.harmonics)
     xi = np.arange(bands)
     if part.order == "interleaved":
@@ -206,107 +257,20 @@ def part_transfer(part: Part, bands: int, k: int) -> np.ndarray:
             index = width - 1 - index
     return (part.harmonics[index] + 0.5) / k
 
-
-# ---------------------------------------------------------------------------------------------
-# Motion on a song
-
-
-def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
-    """Band values of at most CALIBRATION_FRAMES evenly spaced frames of the song (F, B),
-    smoothed once more by `smoothing` s (a mapping's setting)."""
-    values = np.asarray(spectrogram.smoothed(smoothing).values, dtype=np.float64)
-    if len(values) > CALIBRATION_FRAMES:
-        values = values[np.linspace(0, len(values) - 1, CALIBRATION_FRAMES).round().astype(int)]
-    return values
-
-
-def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
-    """RMS displacement of each frame: √(wᵀ G w) for weights w (F, T) on T targets → (F,)."""
-    return np.sqrt(np.maximum(((w @ gram) * w).sum(axis=1), 0.0))
-
-
-@dataclass
-class ItemMotion:
-    """How one mapping moves a model on a song: m (fraction of the diagonal), the largest frame's
-    motion (same unit) and the main harmonic range [lowest, highest] (MAIN_SHARE of its energy)."""
-
-    motion: float
-    peak: float
-    lowest: int
-    highest: int
-
-    def as_json(self) -> dict:
-        return {"motion": self.motion, "peak": self.peak,
-                "harmonics": [self.lowest, self.highest]}
-
-
-def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndarray, np.ndarray]:
-    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T)."""
-    k = len(dancer.frequencies)
-    w = mapping.filter(song_frames(spectrogram, mapping.smoothing), k) - 1.0
-    targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
-    return targets, w[:, targets]
-
-
-def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
-    """m, the peak and the main harmonic range of each mapping on the song (any mappings: an
-    initial gallery or bred children). m = 95th percentile over the frames of the RMS vertex
-    displacement divided by the bounding-box diagonal."""
-    results = []
-    diagonal = dancer.diagonal
-    for mapping in mappings:
-        targets, w = item_weights(dancer, spectrogram, mapping)
-        if not len(targets):
-            results.append(ItemMotion(0.0, 0.0, -1, -1))
-            continue
-        gram = motion_gram(dancer, targets)
-        rms = frame_motion(w, gram) / diagonal
-        energy = (w ** 2).mean(axis=0) * np.diag(gram)
-        share = np.cumsum(energy) / max(energy.sum(), 1e-300)
-        tail = (1 - MAIN_SHARE) / 2
-        lowest = targets[min(len(targets) - 1, np.searchsorted(share, tail, side="right"))]
-        highest = targets[min(len(targets) - 1, np.searchsorted(share, 1 - tail))]
-        results.append(ItemMotion(float(np.percentile(rms, 95)), float(rms.max()),
-                                  int(lowest), int(highest)))
-    return results
-
-
-def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
-    """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
-    of the displacements: the most the music can move it."""
-    k = len(dancer.frequencies)
-    motion = []
-    for mapping in mappings:
-        w = mapping.filter(np.ones((1, mapping.bands)), k) - 1.0
-        targets = np.flatnonzero(w[0])
-        motion.append(frame_motion(w[:, targets], motion_gram(dancer, targets))[0]
-                      if len(targets) else 0.0)
-    return np.array(motion)
-
-
-def gallery_correlations(dancer: Dancer, spectrogram, mappings) -> np.ndarray:
-    """(S, S) correlation of the items' displacement fields over the song's frames:
-    Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices."""
-    weights = [item_weights(dancer, spectrogram, mapping) for mapping in mappings]
-    union = np.unique(np.concatenate([targets for targets, _ in weights]))
-    gram = motion_gram(dancer, union)
-    where = [np.searchsorted(union, targets) for targets, _ in weights]
-    size = len(mappings)
-    inner = np.zeros((size, size))
-    for s in range(size):
-        projected = weights[s][1] @ gram[where[s]]  # (F, |union|)
-        for r in range(s, size):
-            inner[s, r] = inner[r, s] = np.sum(projected[:, where[r]] * weights[r][1])
-    norms = np.sqrt(np.maximum(np.diag(inner), 1e-300))
-    return inner / norms[:, None] / norms[None, :]
-
-
-# ---------------------------------------------------------------------------------------------
 # The gallery
 
 
 def motion_targets(size: int) -> np.ndarray:
-    """Target m of each item: MOTION_LOWEST falling geometrically to MOTION_HIGHEST."""
+    """Target m of each item: MOTION_LOWEST falling geometrically to MOTION_HIGHEST.
+
+    Parameters
+    ----------
+    size : S.
+
+    Returns
+    -------
+    (S,) fractions of the diagonal.
+    """
     return MOTION_LOWEST * (MOTION_HIGHEST / MOTION_LOWEST) ** (np.arange(size) /
                                                                 max(1, size - 1))
 
@@ -318,6 +282,19 @@ def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
     m is linear in α: α = target·diagonal / (95th percentile of the unit motion), lowered so
     that no frame moves more than PEAK_MOTION; a silent song is calibrated at full-scale input
     (g̃ ≡ 1, the loudest it could be).
+
+    Parameters
+    ----------
+    dancer : the model.
+    values : (F, B) the song's frames.
+    transfer : (B,).
+    unit_amplification : (k,).
+    target : m, a fraction of the diagonal.
+    diagonal : the model's diagonal.
+
+    Returns
+    -------
+    float α.
     """
     k = len(dancer.frequencies)
     mapping = Mapping(transfer, unit_amplification)
@@ -399,7 +376,18 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
 
 
 def strongest_item(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> Mapping:
-    """The initial-gallery item that moves the model most on this song (a default mapping)."""
+    """The initial-gallery item that moves the model most on this song (a default mapping).
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    size : the gallery measured.
+
+    Returns
+    -------
+    Mapping.
+    """
     gallery = initial_gallery(dancer, spectrogram, size)
     motion = [item.motion for item in gallery_motion(dancer, spectrogram, gallery)]
     return gallery[int(np.argmax(motion))]
@@ -417,6 +405,16 @@ def initial_indices(frequencies, band_edges, positions=None) -> np.ndarray:
     where f_x is the geometric centre of band x. Band edges are geometric, so
     f_x / f_{B−1} = (e_B / e_0)^((x − B + 1)/B) exactly, which also defines f_x between bands
     (the gallery's t(εξ)).
+
+    Parameters
+    ----------
+    frequencies : (k,) ascending.
+    band_edges : (B+1,) Hz.
+    positions : band positions, or None.
+
+    Returns
+    -------
+    int64 of the positions' shape.
     """
     frequencies = np.maximum(np.asarray(frequencies, dtype=np.float64), 0.0)
     band_edges = np.asarray(band_edges, dtype=np.float64)
@@ -432,25 +430,61 @@ def initial_indices(frequencies, band_edges, positions=None) -> np.ndarray:
 
 
 def direct_transfer(frequencies, band_edges, positions=None) -> np.ndarray:
-    """t_ini = (ν_ini + ½)/k: low sounds drive low harmonics (thesis 6-4)."""
+    """t_ini = (ν_ini + ½)/k: low sounds drive low harmonics (thesis 6-4).
+
+    Parameters
+    ----------
+    frequencies, band_edges, positions : as for `initial_indices`.
+
+    Returns
+    -------
+    transfer values in [0, 1].
+    """
     k = len(frequencies)
     return (initial_indices(frequencies, band_edges, positions) + 0.5) / k
 
 
 def reversed_transfer(frequencies, band_edges, positions=None) -> np.ndarray:
-    """t_rev = (k − 1 − ν_ini + ½)/k: low sounds drive high harmonics."""
+    """t_rev = (k − 1 − ν_ini + ½)/k: low sounds drive high harmonics.
+
+    Parameters
+    ----------
+    frequencies, band_edges, positions : as for `initial_indices`.
+
+    Returns
+    -------
+    transfer values in [0, 1].
+    """
     k = len(frequencies)
     return (k - 1 - initial_indices(frequencies, band_edges, positions) + 0.5) / k
 
 
 def gallery_epsilons(size: int) -> np.ndarray:
-    """The ⌈S/2⌉ compressions ε of the transfers: 0, 1, 2/S, 4/S, …"""
+    """The ⌈S/2⌉ compressions ε of the transfers: 0, 1, 2/S, 4/S, …
+
+    Parameters
+    ----------
+    size : S.
+
+    Returns
+    -------
+    (⌈S/2⌉,).
+    """
     count = (size + 1) // 2
     return np.array([0.0, 1.0, *[2 * i / size for i in range(1, count - 1)]])[:count]
 
 
 def gallery_intervals(size: int) -> np.ndarray:
-    """The ⌈S/2⌉ normalised amplification intervals I_ε = [ε², (ε + 2/S)²], ε = 0, 2/S, …"""
+    """The ⌈S/2⌉ normalised amplification intervals I_ε = [ε², (ε + 2/S)²], ε = 0, 2/S, …
+
+    Parameters
+    ----------
+    size : S.
+
+    Returns
+    -------
+    (⌈S/2⌉, 2) [lower, upper].
+    """
     eps = 2 * np.arange((size + 1) // 2) / size
     return np.stack([eps ** 2, (eps + 2 / size) ** 2], axis=1)
 
@@ -463,6 +497,17 @@ def thesis_gallery(dancer: Dancer, spectrogram, size: int, amplitude: float) -> 
     I_i = [(2i/S)², ((2i+2)/S)²] of the normalised target range: target ν is in I_i when its
     cell centre (ν + ½)/k lies in [lower, upper) (the last one closed). On a mesh's harmonics
     most items never move (docs/design.md#gallery): `initial_gallery` is the one to use.
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song (its band edges), or the band edges.
+    size : S.
+    amplitude : M_a.
+
+    Returns
+    -------
+    list of S mappings.
     """
     size = check_gallery_size(size)
     edges = np.asarray(getattr(spectrogram, "band_edges", spectrogram), dtype=np.float64)

@@ -37,6 +37,10 @@ class ModeSettings:
     Every field may be None: the default rule of `eigendance.modal.motion` then decides.
     selected: indices of the modes that move; amplitudes: per selected mode, its largest body
     rotation at φ = 1, radians; phases: per selected mode, γ in radians; time_scale: s.
+
+    Parameters
+    ----------
+    selected, amplitudes, phases, time_scale : as above.
     """
 
     selected: np.ndarray | None = None
@@ -45,12 +49,29 @@ class ModeSettings:
     time_scale: float | None = None
 
     def to_json(self) -> dict:
+        """The `modes` field of a mapping document.
+
+        Returns
+        -------
+        dict; null for the fields left to the default rule.
+        """
         return {"selected": _listed(self.selected, int),
                 "amplitudes": _listed(self.amplitudes), "phases": _listed(self.phases),
                 "time_scale": None if self.time_scale is None else float(self.time_scale)}
 
     @classmethod
     def from_json(cls, data, name: str) -> ModeSettings:
+        """The `modes` field of a mapping document, checked.
+
+        Parameters
+        ----------
+        data : the field (a dict).
+        name : how messages call the mapping.
+
+        Returns
+        -------
+        ModeSettings; InputError naming the field.
+        """
         if not isinstance(data, dict):
             raise InputError(f"{name}: modes must be an object or null")
         selected = data.get("selected")
@@ -139,14 +160,33 @@ class Mapping:
 
     @property
     def bands(self) -> int:
+        """B, the transfer's length."""
         return len(self.transfer)
 
     def harmonic_indices(self, k: int) -> np.ndarray:
-        """ν(ξ) = min(k − 1, ⌊t(ξ)·k⌋) for each band, int64 (B,)."""
+        """ν(ξ) = min(k − 1, ⌊t(ξ)·k⌋) for each band, int64 (B,).
+
+        Parameters
+        ----------
+        k : the targets.
+
+        Returns
+        -------
+        (B,).
+        """
         return harmonic_indices(self.transfer, k)
 
     def amplification_for(self, k: int) -> np.ndarray:
-        """The amplification resampled to k targets, times the gain."""
+        """The amplification resampled to k targets, times the gain.
+
+        Parameters
+        ----------
+        k : the targets.
+
+        Returns
+        -------
+        (k,).
+        """
         return self.gain * resample_amplification(self.amplification, k)
 
     def filter(self, values, k: int, offset: float = 1.0) -> np.ndarray:
@@ -154,17 +194,45 @@ class Mapping:
 
         offset: 1 for harmonics (a ≡ 0 leaves a mesh still), `self.offset` for a rig's modes.
         `filters` evaluates many mappings at once.
+
+        Parameters
+        ----------
+        values : (…, B) band values in [0, 1].
+        k : the targets.
+        offset : b.
+
+        Returns
+        -------
+        (…, k).
         """
         return filters([self], values, k, offset)[0]
 
     def with_genes(self, transfer, amplification, seed: int | None, name: str) -> Mapping:
-        """A mapping with other transfer and amplification and this one's other settings."""
+        """A mapping with other transfer and amplification and this one's other settings.
+
+        Parameters
+        ----------
+        transfer : (B,).
+        amplification : (K,).
+        seed : the breeding seed, or None.
+        name : how it is called.
+
+        Returns
+        -------
+        Mapping.
+        """
         return replace(self, transfer=transfer, amplification=amplification, seed=seed,
                        name=name)
 
     # JSON (docs/design.md#mapping-file) ------------------------------------------------------
 
     def to_json(self) -> dict:
+        """The mapping document, version 2 (docs/design.md#mapping-file).
+
+        Returns
+        -------
+        dict, ready for json.dump.
+        """
         return {"format": FORMAT, "version": VERSION, "bands": self.bands,
                 "transfer": [float(x) for x in self.transfer],
                 "amplification": [float(x) for x in self.amplification],
@@ -177,7 +245,17 @@ class Mapping:
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> Mapping:
         """Validate a parsed mapping document (version 1 or 2); every problem is a one-line
-        error naming the field."""
+        error naming the field.
+
+        Parameters
+        ----------
+        data : the parsed document.
+        name : how messages call it.
+
+        Returns
+        -------
+        Mapping.
+        """
         if not isinstance(data, dict):
             raise InputError(f"{name}: a mapping must be a JSON object")
         if data.get("format") != FORMAT:
@@ -218,7 +296,12 @@ class Mapping:
                    seed, name, **settings)
 
     def save(self, path: str | os.PathLike) -> None:
-        """Write the mapping as JSON, atomically (one field per line)."""
+        """Write the mapping as JSON, atomically (one field per line).
+
+        Parameters
+        ----------
+        path : the .json to write.
+        """
         fields = [f" {json.dumps(key)}: {json.dumps(value)}" for key, value in
                   self.to_json().items()]
         text = "{\n" + ",\n".join(fields) + "\n}\n"
@@ -226,7 +309,16 @@ class Mapping:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> Mapping:
-        """Read a mapping file (any readable version)."""
+        """Read a mapping file (any readable version).
+
+        Parameters
+        ----------
+        path : a mapping file.
+
+        Returns
+        -------
+        Mapping.
+        """
         return cls.from_json(read_json(path), os.path.basename(os.fspath(path)))
 
 
@@ -281,13 +373,33 @@ def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = F
 
 
 def harmonic_indices(transfer, k: int) -> np.ndarray:
-    """ν(ξ) = min(k − 1, ⌊t(ξ)·k⌋), int64, for transfers of any shape."""
+    """ν(ξ) = min(k − 1, ⌊t(ξ)·k⌋), int64, for transfers of any shape.
+
+    Parameters
+    ----------
+    transfer : values in [0, 1], any shape.
+    k : the targets.
+
+    Returns
+    -------
+    int64 of the transfer's shape.
+    """
     transfer = np.asarray(transfer, dtype=np.float64)
     return np.minimum(k - 1, np.floor(transfer * k)).astype(np.int64)
 
 
 def resample_amplification(amplification, k: int) -> np.ndarray:
-    """a_k(ν) = a(min(K − 1, ⌊(ν + ½)·K/k⌋)) along the last axis (identity when K = k)."""
+    """a_k(ν) = a(min(K − 1, ⌊(ν + ½)·K/k⌋)) along the last axis (identity when K = k).
+
+    Parameters
+    ----------
+    amplification : (…, K).
+    k : the targets.
+
+    Returns
+    -------
+    (…, k).
+    """
     amplification = np.asarray(amplification, dtype=np.float64)
     K = amplification.shape[-1]
     if K == k:
@@ -302,6 +414,17 @@ def filters(mappings, values, k: int, offset: float = 1.0) -> np.ndarray:
     The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) (= g̃ @ P_s with the one-hot (B, k) matrix P_s of
     mapping s) is one np.bincount over (mapping, frame, harmonic) for all mappings and frames:
     no BLAS call (whose thread start-up dominated for small batches) and O(S·F·B) work.
+
+    Parameters
+    ----------
+    mappings : S mappings with the same bands.
+    values : (…, B).
+    k : the targets.
+    offset : b.
+
+    Returns
+    -------
+    (S, …, k).
     """
     values = np.asarray(values, dtype=np.float64)
     mappings = list(mappings)

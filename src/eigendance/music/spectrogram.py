@@ -47,29 +47,80 @@ MAX_SAMPLE = 1e6
 
 
 def window_length(sample_rate: float) -> int:
-    """N = the smallest power of two ≥ 0.046·sr (2048 at 44.1 kHz, 4096 at 48 kHz)."""
+    """N = the smallest power of two ≥ 0.046·sr (2048 at 44.1 kHz, 4096 at 48 kHz).
+
+    Parameters
+    ----------
+    sample_rate : Hz.
+
+    Returns
+    -------
+    int.
+    """
     return 1 << max(0, math.ceil(math.log2(0.046 * sample_rate)))
 
 
 def frame_count(sample_count: int, sample_rate: int, rate: float) -> int:
-    """Number of analysis frames: ⌊duration·rate⌋ + 1."""
+    """Number of analysis frames: ⌊duration·rate⌋ + 1.
+
+    Parameters
+    ----------
+    sample_count : samples.
+    sample_rate : Hz.
+    rate : frames per second.
+
+    Returns
+    -------
+    int.
+    """
     return int(math.floor(sample_count * rate / sample_rate)) + 1
 
 
 def frame_centres(first: int, stop: int, sample_rate: int, rate: float) -> np.ndarray:
-    """c_j = ⌊j·sr/rate + ½⌋ for j in [first, stop), as int64."""
+    """c_j = ⌊j·sr/rate + ½⌋ for j in [first, stop), as int64.
+
+    Parameters
+    ----------
+    first, stop : frame indices.
+    sample_rate : Hz.
+    rate : frames per second.
+
+    Returns
+    -------
+    (stop − first,) sample indices.
+    """
     j = np.arange(first, stop, dtype=np.float64)
     return np.floor(j * sample_rate / rate + 0.5).astype(np.int64)
 
 
 def band_edges(bands: int, sample_rate: float, fmin: float = FMIN,
                fmax: float = FMAX) -> np.ndarray:
-    """geomspace(fmin, min(fmax, sr/2), bands + 1)."""
+    """geomspace(fmin, min(fmax, sr/2), bands + 1).
+
+    Parameters
+    ----------
+    bands : B.
+    sample_rate : Hz.
+    fmin, fmax : Hz.
+
+    Returns
+    -------
+    (B+1,) Hz.
+    """
     return np.geomspace(fmin, min(fmax, sample_rate / 2), bands + 1)
 
 
 def hann(length: int) -> np.ndarray:
-    """Periodic Hann window, 0.5 − 0.5·cos(2πn/N) (= scipy.signal.get_window('hann', N))."""
+    """Periodic Hann window, 0.5 − 0.5·cos(2πn/N) (= scipy.signal.get_window('hann', N)).
+
+    Parameters
+    ----------
+    length : N.
+
+    Returns
+    -------
+    (N,).
+    """
     return 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(length) / length)
 
 
@@ -78,6 +129,16 @@ def exponential_smoothing(values: np.ndarray, memory: float, previous) -> np.nda
 
     Closed form per block: s_j = m^(j+1)·s_{−1} + (1 − m)·m^j·Σ_{i≤j} m^(−i)·v_i, in blocks
     short enough that m^(−i) stays far from overflow (all terms are positive: no cancellation).
+
+    Parameters
+    ----------
+    values : (F, B).
+    memory : m in [0, 1).
+    previous : (B,) s_{−1}.
+
+    Returns
+    -------
+    (F, B).
     """
     values = np.asarray(values, dtype=np.float64)
     out = np.empty_like(values)
@@ -221,6 +282,15 @@ class Spectrogram:
     these defaults: rate=100 frames/s, bands=64, fmin=20 Hz, fmax=16 kHz, floor_db=−80 dB,
     smoothing=0.08 s.
 
+    Parameters
+    ----------
+    times : (T,) s.
+    band_edges : (B+1,) Hz.
+    values : (T, B) in [0, 1].
+    rate : frames per second.
+    sample_rate : the audio's, Hz.
+    duration : the audio's, s.
+
     Example
     -------
     >>> sine = np.sin(2 * np.pi * 440 * np.arange(44100) / 44100)   # 1 s of A4, full scale
@@ -241,6 +311,7 @@ class Spectrogram:
 
     @property
     def bands(self) -> int:
+        """B."""
         return self.values.shape[1]
 
     @property
@@ -253,6 +324,16 @@ class Spectrogram:
         """Analyse an iterable of mono float chunks (the streaming core of the other builders).
 
         options: those of the class docstring, and name (how messages call the audio).
+
+        Parameters
+        ----------
+        chunks : iterable of (m,) float arrays.
+        sample_rate : Hz.
+        **options : rate, bands, fmin, fmax, floor_db, smoothing, name.
+
+        Returns
+        -------
+        Spectrogram.
         """
         analyser = _Analyser(sample_rate, **options)
         for chunk in chunks:
@@ -263,7 +344,18 @@ class Spectrogram:
 
     @classmethod
     def from_samples(cls, samples, sample_rate: int, **options) -> Spectrogram:
-        """From PCM samples (n,) or (n, channels) in [-1, 1]; channels are averaged."""
+        """From PCM samples (n,) or (n, channels) in [-1, 1]; channels are averaged.
+
+        Parameters
+        ----------
+        samples : (n,) or (n, channels).
+        sample_rate : Hz.
+        **options : as for `from_chunks`.
+
+        Returns
+        -------
+        Spectrogram.
+        """
         samples = mono(samples)
         chunks = (samples[i:i + CHUNK_SAMPLES] for i in range(0, len(samples), CHUNK_SAMPLES))
         return cls.from_chunks(chunks, sample_rate, **options)
@@ -286,7 +378,16 @@ class Spectrogram:
                                **options)
 
     def at(self, times) -> np.ndarray:
-        """Values at arbitrary times (…,) s → (…, B) float64, linear between frames, clamped."""
+        """Values at arbitrary times (…,) s → (…, B) float64, linear between frames, clamped.
+
+        Parameters
+        ----------
+        times : (…,) s.
+
+        Returns
+        -------
+        (…, B).
+        """
         times = np.asarray(times, dtype=np.float64)
         values = self.values
         if len(values) == 1:
@@ -304,6 +405,14 @@ class Spectrogram:
 
         s_j = m·s_{j−1} + (1 − m)·v_j, m = exp(−1/(rate·smoothing)), s_{−1} = 0 (the player's
         smoothing slider, web/src/filter.ts `smoothed`); 0 returns the spectrogram itself.
+
+        Parameters
+        ----------
+        smoothing : s ≥ 0.
+
+        Returns
+        -------
+        Spectrogram.
         """
         if not smoothing > 0:
             return self
@@ -312,7 +421,12 @@ class Spectrogram:
         return replace(self, values=values.astype(np.float32))
 
     def save(self, path: str | os.PathLike) -> None:
-        """Write the spectrogram file (docs/design.md#spectrogram-file) atomically."""
+        """Write the spectrogram file (docs/design.md#spectrogram-file) atomically.
+
+        Parameters
+        ----------
+        path : the .npz to write.
+        """
         atomic_save_npz(path, times=self.times, band_edges=self.band_edges,
                         values=self.values.astype(np.float32), rate=np.float64(self.rate),
                         sample_rate=np.int64(self.sample_rate),
@@ -322,7 +436,16 @@ class Spectrogram:
     def load(cls, path: str | os.PathLike) -> Spectrogram:
         """Read a spectrogram file, checked: InputError naming the field for anything that
         breaks docs/design.md#spectrogram-file (a missing field, a wrong type or shape, NaN,
-        values outside [0, 1], frame times that do not follow from the rate and duration)."""
+        values outside [0, 1], frame times that do not follow from the rate and duration).
+
+        Parameters
+        ----------
+        path : a spectrogram file.
+
+        Returns
+        -------
+        Spectrogram.
+        """
         path = os.fspath(path)
         data = load_npz(path, FORMAT_KEYS)
         values = checked_array(data, "values", path, shape=(None, None))
@@ -348,7 +471,17 @@ class Spectrogram:
 
 
 def frame_times(duration: float, fps: float) -> np.ndarray:
-    """Frame times 0, 1/fps, … up to `duration` (s) included: ⌊duration·fps⌋ + 1 frames."""
+    """Frame times 0, 1/fps, … up to `duration` (s) included: ⌊duration·fps⌋ + 1 frames.
+
+    Parameters
+    ----------
+    duration : s ≥ 0.
+    fps : frames per second.
+
+    Returns
+    -------
+    (⌊duration·fps⌋ + 1,) s; InputError beyond MAX_FRAMES.
+    """
     if not (np.isfinite(fps) and fps > 0):
         raise InputError(f"frames per second must be a positive number, got {fps}")
     if not (np.isfinite(duration) and duration >= 0):
@@ -364,7 +497,16 @@ PICTURE_FORMATS = ("png", "svg", "pdf", "jpg", "jpeg")
 
 
 def check_picture_path(path: str | os.PathLike) -> str:
-    """The picture format named by the suffix of `path`; InputError for one we cannot draw."""
+    """The picture format named by the suffix of `path`; InputError for one we cannot draw.
+
+    Parameters
+    ----------
+    path : the picture to write.
+
+    Returns
+    -------
+    str, "png", "svg", "pdf" or "jpg".
+    """
     suffix = os.path.splitext(os.fspath(path))[1].lstrip(".").lower()
     if suffix not in PICTURE_FORMATS:
         raise InputError(f"{os.fspath(path)}: cannot draw a picture of type '{suffix}' "
@@ -374,7 +516,14 @@ def check_picture_path(path: str | os.PathLike) -> str:
 
 def save_picture(spectrogram: Spectrogram, path: str | os.PathLike,
                  title: str | None = None) -> None:
-    """Draw a spectrogram: time across, band (labelled in Hz) up, loudness as colour."""
+    """Draw a spectrogram: time across, band (labelled in Hz) up, loudness as colour.
+
+    Parameters
+    ----------
+    spectrogram : the song.
+    path : .png, .svg, .pdf or .jpg.
+    title : drawn above, or None.
+    """
     from matplotlib.figure import Figure  # heavy (≈0.5 s): only for pictures
 
     format = check_picture_path(path)

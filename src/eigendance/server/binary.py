@@ -25,8 +25,8 @@ import struct
 
 import numpy as np
 
+from eigendance.modal.bodies import CONSTRAINED_ROWS
 from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
-from eigendance.modal.skeleton import CONSTRAINED_ROWS
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
@@ -35,7 +35,18 @@ DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.d
 
 def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) -> bytes:
     """Bundle the arrays: integers as uint32 (uint16 arrays stay uint16), floats as float32
-    (float16 arrays, and names in `half`, as float16)."""
+    (float16 arrays, and names in `half`, as float16).
+
+    Parameters
+    ----------
+    meta : the header's JSON `meta`.
+    arrays : {name: array}, in the order they are packed.
+    half : names of float arrays sent as float16.
+
+    Returns
+    -------
+    bytes of the bundle (see the module docstring).
+    """
     entries, blobs, offset = {}, [], 0
     for name, array in arrays.items():
         kind = np.asarray(array).dtype
@@ -56,6 +67,16 @@ def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) 
 
 
 def unpack(data: bytes) -> tuple[dict, dict[str, np.ndarray]]:
+    """The meta and arrays of a bundle (tests, tools): the inverse of `pack`.
+
+    Parameters
+    ----------
+    data : the bundle's bytes.
+
+    Returns
+    -------
+    (meta, {name: array}) the arrays viewing `data`; ValueError when it is no bundle.
+    """
     if data[:4] != MAGIC:
         raise ValueError("not an eigendance bundle")
     (length,) = struct.unpack("<I", data[4:8])
@@ -71,6 +92,16 @@ def unpack(data: bytes) -> tuple[dict, dict[str, np.ndarray]]:
 
 
 def packed_harmonics(eigenvectors: np.ndarray) -> np.ndarray:
+    """The eigenvectors packed four harmonics per RGBA texel, zero padded.
+
+    Parameters
+    ----------
+    eigenvectors : (n, k).
+
+    Returns
+    -------
+    (n, 4·⌈k/4⌉) float32.
+    """
     n, k = eigenvectors.shape
     width = 4 * ((k + 3) // 4)
     packed = np.zeros((n, width), dtype=np.float32)
@@ -79,9 +110,20 @@ def packed_harmonics(eigenvectors: np.ndarray) -> np.ndarray:
 
 
 def basis_bundle(basis, name: str = "mesh", half: bool = False) -> bytes:
-    """The basis for the web app; `half` sends the harmonics as float16 (half the bytes,
-    ≈ 1e-3 relative rounding of each eigenvector entry). A reduced basis sends its coarse
-    basis and interpolation (module docstring) instead of the harmonics."""
+    """The basis for the web app (docs/web.md).
+
+    Parameters
+    ----------
+    basis : the mesh's `HarmonicBasis`.
+    name : how the page calls the mesh.
+    half : send the harmonics as float16 (half the bytes, ≈ 1e-3 relative rounding of each
+        eigenvector entry); a reduced basis's coarse basis is always float32 (it is small).
+
+    Returns
+    -------
+    bytes of the bundle: vertices, faces, eigenvalues, coefficients, harmonics (a reduced
+    basis: its coarse basis and interpolation instead, module docstring).
+    """
     meta = {"kind": "basis", "name": name, "n": basis.n, "k": basis.k,
             "faces": int(len(basis.faces)), "laplacian": basis.laplacian,
             "scale": float(basis.scale), "center": [float(c) for c in basis.center],
@@ -101,6 +143,18 @@ def basis_bundle(basis, name: str = "mesh", half: bool = False) -> bytes:
 
 
 def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
+    """The spectrogram for the web app.
+
+    Parameters
+    ----------
+    spectrogram : the song's `Spectrogram`.
+    name : how the page calls the song.
+
+    Returns
+    -------
+    bytes of the bundle: times (T,) s, values (T, B), band_edges (B+1,) Hz; meta rate,
+    sample_rate, duration.
+    """
     values = np.asarray(spectrogram.values, dtype=np.float32)
     meta = {"kind": "spectrogram", "name": name, "rate": float(spectrogram.rate),
             "frames": int(values.shape[0]), "bands": int(values.shape[1]),
@@ -112,10 +166,19 @@ def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
 
 
 def packed_modes(per_mode: np.ndarray, n: int) -> np.ndarray:
-    """(nm, 3n) per-mode rows of per-vertex vectors (`ModalSkin.displacement`, `.rotation`) →
-    (n, G, 3, 4), G = ⌈nm/4⌉: texel (i, g, d) holds coordinate d of modes 4g … 4g+3 (zero
-    padded), so that a shader adds dot(c[4g:4g+4], texel) to coordinate d of vertex i (four
-    modes per RGBA texel, like the harmonics)."""
+    """Per-mode vertex vectors packed four modes per RGBA texel, like the harmonics.
+
+    Parameters
+    ----------
+    per_mode : (nm, 3n) per-mode rows of per-vertex vectors (`ModalSkin.displacement`,
+        `.rotation`).
+    n : vertices.
+
+    Returns
+    -------
+    (n, G, 3, 4) float32, G = ⌈nm/4⌉: texel (i, g, d) holds coordinate d of modes 4g … 4g+3
+    (zero padded), so that a shader adds dot(c[4g:4g+4], texel) to coordinate d of vertex i.
+    """
     nm = len(per_mode)
     groups = (nm + 3) // 4
     padded = np.zeros((4 * groups, n, 3), dtype=np.float32)
@@ -124,8 +187,18 @@ def packed_modes(per_mode: np.ndarray, n: int) -> np.ndarray:
 
 
 def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.ndarray]:
-    """The `count` largest skin weights of every vertex and their bodies, renormalised to sum
-    1 (three.js SkinnedMesh reads four): indices (n, count) and weights (n, count)."""
+    """The `count` largest skin weights of every vertex and their bodies, renormalised to sum 1
+    (three.js SkinnedMesh reads four).
+
+    Parameters
+    ----------
+    weights : (n, n_b) skin weights.
+    count : influences kept per vertex.
+
+    Returns
+    -------
+    indices (n, 4) and weights (n, 4) (padded with weight 0 when count < 4).
+    """
     weights = np.asarray(weights, dtype=float)
     count = min(count, weights.shape[1])
     order = np.argsort(-weights, axis=1, kind="stable")[:, :count]
@@ -137,17 +210,20 @@ def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.nda
     return order, top
 
 
-def rest_bone_matrices(model) -> np.ndarray:
-    """(n_b, 4, 4) world matrices of the bodies at rest: [R_b | c_b] (body frame → world)."""
-    bones = np.zeros((model.n_bodies, 4, 4))
-    bones[:, :3, :3] = model.body_rotations
-    bones[:, :3, 3] = model.body_centers
-    bones[:, 3, 3] = 1.0
-    return bones
-
-
 def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
-    """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`."""
+    """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`.
+
+    Parameters
+    ----------
+    rig : the `Rig` (its loop closures and default stiffness per joint come from it).
+    name : how the page calls it.
+    revision : how many edits made it.
+
+    Returns
+    -------
+    dict: counts, size, centre and diagonal, body names, frequencies (Hz), the joints (type,
+    rows, stiffness, default stiffness, closes_loop), the default palette.
+    """
     skeleton, model, palette = rig.skeleton, rig.model, rig.palette
     nm = model.n_modes
     low, high = skeleton.vertices.min(axis=0), skeleton.vertices.max(axis=0)
@@ -166,20 +242,31 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
                         "constrained_rows": list(CONSTRAINED_ROWS[joint.type]),
                         "stiffness": joint.stiffness.tolist(),
                         "default_stiffness": default.tolist(),
-                        "closes_loop": skeleton.joint_sides(index) is None}
-                       for index, (joint, default) in enumerate(zip(
-                           skeleton.joints, skeleton.automatic_stiffnesses(), strict=True))],
+                        "closes_loop": bool(loop)}
+                       for joint, default, loop in zip(skeleton.joints, rig.default_stiffness,
+                                                       rig.closes_loop, strict=True)],
         "palette": None if palette is None else palette.to_settings().to_json(),
         "offset": 0.0,
     }
 
 
 def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
-    """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32."""
+    """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32.
+
+    Parameters
+    ----------
+    rig : the rig (its skin, modes, rest bones).
+    name : how the page calls it.
+    revision : how many edits made it.
+
+    Returns
+    -------
+    bytes of the bundle.
+    """
     skeleton, model, skin = rig.skeleton, rig.model, rig.skin
     n, nm = len(skin.vertices), model.n_modes
     joints, weights = top_weights(skeleton.weights)
-    bones = rest_bone_matrices(model)
+    bones = rig.rest_bones
     column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
     twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
     return pack(rig_meta(rig, name, revision), {

@@ -42,7 +42,16 @@ FORM_TYPES = ("application/x-www-form-urlencoded", "multipart/form-data", "text/
 
 
 def is_loopback(host: str) -> bool:
-    """Whether `host` (a --host value) reaches only this machine."""
+    """Whether a --host value reaches only this machine.
+
+    Parameters
+    ----------
+    host : the --host value.
+
+    Returns
+    -------
+    bool.
+    """
     if host.lower() == "localhost":
         return True
     try:
@@ -52,7 +61,16 @@ def is_loopback(host: str) -> bool:
 
 
 def exposure_warning(host: str) -> str | None:
-    """The warning to print when the server listens where other machines can reach it."""
+    """The warning to print when the server listens where other machines can reach it.
+
+    Parameters
+    ----------
+    host : the --host value.
+
+    Returns
+    -------
+    str (one line naming the risk), or None for a loopback address.
+    """
     if is_loopback(host):
         return None
     where = "every address of this machine" if host in WILDCARDS else host
@@ -62,16 +80,28 @@ def exposure_warning(host: str) -> str | None:
 
 
 def bracketed(name: str) -> str:
-    """An IPv6 address as a Host header writes it ([::1]); other names as they are."""
+    """An IPv6 address as a Host header writes it ([::1]); other names as they are.
+
+    Parameters
+    ----------
+    name : a host name or address.
+
+    Returns
+    -------
+    str.
+    """
     return f"[{name}]" if ":" in name and not name.startswith("[") else name
 
 
 class Hosts:
     """The Host header values the server answers: its names with its port.
 
-    host: the --host value. Loopback names are always accepted; a non-loopback address adds
-    itself, and a wildcard (0.0.0.0, ::) adds any IP address and this machine's own names
-    (names a rebinding site cannot send). port: the listening port, or None for any.
+    Parameters
+    ----------
+    host : the --host value. Loopback names are always accepted; a non-loopback address adds
+        itself, and a wildcard (0.0.0.0, ::) adds any IP address and this machine's own names
+        (names a rebinding site cannot send).
+    port : the listening port, or None for any.
     """
 
     def __init__(self, host: str = DEFAULT_HOST, port: int | None = None):
@@ -83,6 +113,16 @@ class Hosts:
                            if name}
 
     def accepts(self, header: str) -> bool:
+        """Whether a request's Host header names this server.
+
+        Parameters
+        ----------
+        header : the Host header's value.
+
+        Returns
+        -------
+        bool.
+        """
         name, port = split_host(header)
         if name is None or (self.port is not None and port != self.port):
             return False
@@ -98,7 +138,16 @@ class Hosts:
 
 
 def split_host(header: str) -> tuple[str | None, int | None]:
-    """'Name:port' → ('name', port); port 80 when absent; (None, None) when malformed."""
+    """'Name:port' → ('name', port).
+
+    Parameters
+    ----------
+    header : a Host header's value.
+
+    Returns
+    -------
+    (name, port): port 80 when absent; (None, None) when malformed.
+    """
     header = header.strip().lower()
     if header.endswith("]") or ":" not in header:
         name, port = header, "80"
@@ -110,6 +159,17 @@ def split_host(header: str) -> tuple[str | None, int | None]:
 
 
 def header_of(scope, wanted: bytes) -> str | None:
+    """A request's header, decoded as Latin-1.
+
+    Parameters
+    ----------
+    scope : the ASGI scope.
+    wanted : the header's name, lower-case bytes.
+
+    Returns
+    -------
+    str, or None when it is absent.
+    """
     for key, value in scope.get("headers", ()):
         if key == wanted:
             return value.decode("latin-1")
@@ -117,7 +177,18 @@ def header_of(scope, wanted: bytes) -> str | None:
 
 
 def refusal(scope, hosts: Hosts) -> tuple[int, str] | None:
-    """(status, message) when the request must be refused, else None."""
+    """Why a request must be refused (docs/design.md#server: Host, Sec-Fetch-Site, Origin, content
+    type, control characters).
+
+    Parameters
+    ----------
+    scope : the ASGI scope.
+    hosts : the Host values the server answers.
+
+    Returns
+    -------
+    (status, message), or None when the request may pass.
+    """
     path = scope.get("path", "")
     if any(ord(character) < 32 or ord(character) == 127 for character in path):
         return 400, "the path holds control characters"
@@ -142,6 +213,14 @@ def refusal(scope, hosts: Hosts) -> tuple[int, str] | None:
 
 
 async def send_json(send, status: int, message: str) -> None:
+    """Send a one-line JSON error response through ASGI.
+
+    Parameters
+    ----------
+    send : the ASGI send callable.
+    status : the HTTP status.
+    message : the error.
+    """
     body = json.dumps({"error": one_line(message)}, separators=(",", ":")).encode()
     await send({"type": "http.response.start", "status": status,
                 "headers": [(b"content-type", b"application/json"),
@@ -152,7 +231,12 @@ async def send_json(send, status: int, message: str) -> None:
 class Guard:
     """ASGI middleware: `refusal` before the app, one line of JSON for any failure after.
 
-    scrub: callable(str) → str applied to failure messages (no library paths).
+    Parameters
+    ----------
+    app : the ASGI app it guards.
+    host : the --host value (`Hosts`).
+    port : the listening port (None: any).
+    scrub : callable(str) → str applied to failure messages (no library paths).
     """
 
     def __init__(self, app, host: str = DEFAULT_HOST, port: int | None = None,

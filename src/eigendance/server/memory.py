@@ -17,12 +17,25 @@ from collections import OrderedDict
 
 import numpy as np
 
+from eigendance.errors import InputError
+from eigendance.limits import size_text
+
 DEFAULT_BUDGET = 4 << 30  # bytes
 
 
 def footprint(*objects, depth: int = 6) -> int:
-    """Bytes held by numpy arrays and bytes objects reachable from `objects` through
-    dataclass fields, object attributes, dicts, lists and tuples (each counted once)."""
+    """Bytes held by numpy arrays and bytes objects reachable from `objects` through dataclass
+    fields, object attributes, dicts, lists and tuples (each counted once).
+
+    Parameters
+    ----------
+    *objects : what to measure.
+    depth : how deep to follow references.
+
+    Returns
+    -------
+    int, bytes.
+    """
     seen: set[int] = set()
 
     def size(value, level: int) -> int:
@@ -56,6 +69,10 @@ def footprint(*objects, depth: int = 6) -> int:
 class Budget:
     """Charges per key (bytes) in least-recently-used order, within `limit` bytes.
 
+    Parameters
+    ----------
+    limit : the budget, bytes.
+
     Example
     -------
     >>> budget = Budget(100)
@@ -75,18 +92,34 @@ class Budget:
 
     @property
     def used(self) -> int:
+        """Bytes charged now."""
         return sum(self.sizes.values())
 
     def touch(self, key: str) -> None:
-        """Mark `key` as the most recently used."""
+        """Mark `key` as the most recently used.
+
+        Parameters
+        ----------
+        key : a charged key (others are ignored).
+        """
         with self.lock:
             if key in self.sizes:
                 self.sizes.move_to_end(key)
 
     def charge(self, key: str, size: int, busy=lambda key: False) -> list[str] | None:
-        """Charge `key` `size` bytes (now the most recently used) and return the keys dropped so
-        that the total fits: least recently used first, never `key` itself nor a key for which
-        busy(key) is true. None, and nothing changed, when it cannot fit even so."""
+        """Charge `key` `size` bytes (now the most recently used) and drop what no longer fits.
+
+        Parameters
+        ----------
+        key : the item's key.
+        size : its bytes.
+        busy : key → whether that key is in use (never dropped).
+
+        Returns
+        -------
+        list of the keys dropped so that the total fits, least recently used first (never `key`
+        itself nor a busy one); None, and nothing changed, when it cannot fit even so.
+        """
         with self.lock:
             others = [(other, used) for other, used in self.sizes.items() if other != key]
             kept = sum(used for other, used in others if busy(other))
@@ -105,5 +138,33 @@ class Budget:
             return dropped
 
     def release(self, key: str) -> None:
+        """Forget a key's charge (an item removed).
+
+        Parameters
+        ----------
+        key : the key.
+        """
         with self.lock:
             self.sizes.pop(key, None)
+
+
+def refusal(size: int, limit: int, what: str) -> InputError:
+    """Why an item of `size` bytes cannot be charged: more than the whole budget (413), or more
+    than the bases being computed leave free (409: wait for them, or remove items).
+
+    Parameters
+    ----------
+    size : the item's bytes.
+    limit : the budget, bytes.
+    what : the item in words ("cat.obj: a basis of 150 harmonics of 7949 vertices").
+
+    Returns
+    -------
+    InputError to raise.
+    """
+    if size > limit:
+        return InputError(f"{what} would take {size_text(size)} of memory, more than the "
+                          f"library's budget of {size_text(limit)}", status=413)
+    return InputError(f"{what} would take {size_text(size)} of memory; the library's budget "
+                      f"of {size_text(limit)} is held by bases being computed (wait for them "
+                      "or remove some)", status=409)

@@ -59,9 +59,15 @@ class _Server(uvicorn.Server):
 
 
 def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
-    """Serve `app` on a socket from `listen` until interrupted; print `announce` (one line)
-    once it serves. announce: the line, or a callable(port) that makes it. on_exit: called
-    at the first Ctrl-C or SIGTERM (e.g. `Library.stop`)."""
+    """Serve `app` on a socket from `listen` until interrupted.
+
+    Parameters
+    ----------
+    app : the ASGI app (`create_app`).
+    listening : the bound socket.
+    announce : the line to print once it serves, or a callable(port) that makes it.
+    on_exit : called at the first Ctrl-C or SIGTERM (e.g. `Library.stop`).
+    """
     host, bound = listening.getsockname()[:2]
     config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
                             proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS)
@@ -86,10 +92,19 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
 
 
 def listen(host: str, port: int) -> socket.socket:
-    """A TCP socket bound to host:port (port 0: any free one); InputError naming the problem.
+    """A TCP socket bound to host:port, listening.
 
     Bound before anything else starts (uvicorn would log its own lines and exit, after the
     library had started solving), so an address in use, unknown or not allowed is one line.
+
+    Parameters
+    ----------
+    host : the address.
+    port : the port (0: any free one).
+
+    Returns
+    -------
+    socket.socket; InputError naming the problem (remedy port 0 for a port in use).
     """
     try:
         family, kind, protocol, _, address = socket.getaddrinfo(
@@ -115,7 +130,16 @@ def listen(host: str, port: int) -> socket.socket:
 def library_session(**options) -> Iterator[Library]:
     """A `Library` in a new temporary folder, for as long as the block runs; then its work is
     stopped and the folder removed, however the block ends (SIGTERM and SIGHUP end it as an
-    exception, `SystemExit(128 + signal)`). options: those of `Library`."""
+    exception, `SystemExit(128 + signal)`).
+
+    Parameters
+    ----------
+    **options : those of `Library`.
+
+    Yields
+    ------
+    Library.
+    """
     sweep_library_folders()
     folder = tempfile.mkdtemp(prefix=FOLDER_PREFIX)
     try:
@@ -132,10 +156,18 @@ def library_session(**options) -> Iterator[Library]:
 
 
 def sweep_library_folders(parent: str | None = None) -> int:
-    """Remove the library folders that killed servers left in `parent` (default: the system's
-    temporary folder); returns how many. A folder is left alone while its lock is held, when it
-    has no lock file (not ours to judge) and while it is younger than FRESH_SECONDS (its
-    server may be about to take the lock)."""
+    """Remove the library folders that killed servers left. A folder is left alone while its lock
+    is held, when it has no lock file (not ours to judge) and while it is younger than
+    FRESH_SECONDS (its server may be about to take the lock).
+
+    Parameters
+    ----------
+    parent : where to look (default: the system's temporary folder).
+
+    Returns
+    -------
+    int, how many were removed.
+    """
     parent = parent or tempfile.gettempdir()
     removed = 0
     try:
@@ -177,7 +209,12 @@ def _leave(number, frame):
 
 
 def terminal_progress(library) -> None:
-    """Show basis jobs on stderr: a tqdm bar on a terminal, and one line when each finishes."""
+    """Show basis jobs on stderr: a tqdm bar on a terminal, and one line when each finishes.
+
+    Parameters
+    ----------
+    library : the library whose jobs to show.
+    """
     bars = {}
 
     def listener(job):
@@ -209,7 +246,12 @@ def terminal_progress(library) -> None:
 
 
 def demo_paths() -> list[str]:
-    """The built-in mesh and the procedural track (written once as WAV into the cache folder)."""
+    """The built-in mesh and the procedural track (written once as WAV into the cache folder).
+
+    Returns
+    -------
+    [mesh path, song path].
+    """
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
     song = os.path.join(cache_folder(), "demo-music", "eigendance-demo-music.wav")
     os.makedirs(os.path.dirname(song), exist_ok=True)

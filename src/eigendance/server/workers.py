@@ -18,7 +18,12 @@ THREADS = max(4, os.cpu_count() or 1)
 
 
 class Workers:
-    """`threads` daemon threads, started on first use, running submitted calls in turn."""
+    """`threads` daemon threads, started on first use, running submitted calls in turn.
+
+    Parameters
+    ----------
+    threads : how many threads.
+    """
 
     def __init__(self, threads: int = THREADS):
         self.threads, self.started = threads, 0
@@ -26,6 +31,17 @@ class Workers:
         self.lock = threading.Lock()
 
     def submit(self, function, *args) -> Future:
+        """Run function(*args) in a worker thread.
+
+        Parameters
+        ----------
+        function : what to call.
+        *args : its arguments.
+
+        Returns
+        -------
+        concurrent.futures.Future of its result (or exception).
+        """
         future: Future = Future()
         self.calls.put((future, function, args))
         with self.lock:
@@ -52,5 +68,15 @@ WORKERS = Workers()
 
 
 async def in_worker(function, *args):
-    """function(*args) in a worker thread, awaited."""
+    """function(*args) in a worker thread, awaited: the event loop stays free meanwhile.
+
+    Parameters
+    ----------
+    function : what to call.
+    *args : its arguments.
+
+    Returns
+    -------
+    Its result (its exception is raised here).
+    """
     return await asyncio.wrap_future(WORKERS.submit(function, *args))

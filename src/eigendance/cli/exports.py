@@ -1,0 +1,313 @@
+"""The export commands: `export` (glTF, point cache, USD) and `render` (MP4)
+(docs/design.md#exports)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import time
+
+import numpy as np
+
+from eigendance.cli.options import (
+    HARMONICS,
+    RIG_HELP,
+    STIFFNESS,
+    add_output,
+    add_palette_options,
+    add_window_options,
+    basis_from,
+    number,
+    progress_bar,
+    say_note,
+    spectrogram_from,
+)
+from eigendance.errors import InputError
+from eigendance.export.dance import Dance, HarmonicDance, rig_dance
+from eigendance.export.files import FORMATS as EXPORT_FORMATS
+from eigendance.export.files import companion_paths, export_dance, format_of
+from eigendance.export.gltf import glb_size
+from eigendance.export.renderer import Look
+from eigendance.export.video import parse_size, render_video
+from eigendance.files import refuse_overwrite, suffix_of
+from eigendance.modal.motion import parse_modes
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
+from eigendance.music.breeding import breed
+from eigendance.music.gallery import (
+    DEFAULT_GALLERY,
+    check_gallery_size,
+    initial_gallery,
+    strongest_item,
+)
+from eigendance.music.mapping import Mapping
+
+# --- exports: files for other tools, and video (docs/design.md#exports) ----------------------
+
+def add_dance_inputs(parser, audio_help: str) -> None:
+    """The inputs of `export` and `render`: a mesh (+ mapping) or a rig, the song, the palette and
+    the part of the song.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    audio_help : what AUDIO is for this command, for --help.
+    """
+    parser.add_argument("model", help="mesh file (OBJ, PLY, OFF, STL, glTF) or basis file "
+                        "(.npz); with --rig, or a .json or built-in name: " + RIG_HELP)
+    parser.add_argument("audio", help=audio_help)
+    parser.add_argument("--mapping", help="mapping JSON (default: for a mesh, the initial-"
+                        "gallery item of 8 that moves it most; for a rig, bands in order)")
+    parser.add_argument("--rig", action="store_true",
+                        help="MODEL is a rig moved in its vibration modes (needed for a glTF "
+                             "skin; a .json or built-in rig is one anyway)")
+    parser.add_argument("-k", type=HARMONICS, default=300,
+                        help="harmonics when MODEL is a mesh file (default 300)")
+    parser.add_argument("--fps", type=number(0, 240, above=True), default=30.0,
+                        help="frames per second (default 30)")
+    add_palette_options(parser)
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
+                        help="multiply every joint stiffness of a rig (default 1)")
+    add_window_options(parser)
+
+
+def is_rig(args) -> bool:
+    """Whether MODEL is a rig (--rig, a built-in rig's name, or a skeleton JSON).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    bool.
+    """
+    return args.rig or args.model in SAMPLE_RIGS or args.model.lower().endswith(".json")
+
+
+def song_of(args) -> str | None:
+    """The song's audio file, or None when AUDIO is a spectrogram file.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    str or None.
+    """
+    return None if args.audio.lower().endswith(".npz") else args.audio
+
+
+def dance_from(args, mapping: Mapping | None) -> Dance:
+    """The dance `export` and `render` write: a mesh by its harmonics or a rig by its modes,
+    the part of the song --start and --duration ask for (`Dance.window`).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    mapping : the --mapping, or None.
+
+    Returns
+    -------
+    HarmonicDance or RigDance, windowed; its note (a clamped window) printed on stderr.
+    """
+    name = os.path.splitext(os.path.basename(args.output))[0]
+    if is_rig(args):
+        skeleton = load_rig(args.model)
+        if args.stiffness != 1.0:
+            skeleton = skeleton.with_stiffness({}, scale=args.stiffness)
+        rig = Rig(skeleton, np.float64)
+        if rig.model.n_modes == 0:
+            raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
+                             "joint); nothing to move")
+        spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
+        mapping = rig.mapping(spectrogram, mapping,
+                              selected=parse_modes(args.modes, rig.model.n_modes),
+                              amplitude=args.amplitude, time_scale=args.time_scale,
+                              offset=args.offset)
+        dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name)
+    else:
+        basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
+        mapping = mapping or strongest_item(basis, spectrogram)
+        dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
+    dance = dance.window(args.start, args.duration)
+    say_note(args.output, dance.note)
+    return dance
+
+
+def harmonic_inputs(args, bands: int):
+    """The mesh's basis (solved with a progress bar, or read) and the song's spectrogram.
+
+    Parameters
+    ----------
+    args : the parsed command line (MODEL, AUDIO, -k).
+    bands : bands of the song's spectrogram (the mapping's).
+
+    Returns
+    -------
+    (HarmonicBasis, Spectrogram).
+    """
+    bar, update = progress_bar(args.k, "eigenpairs")
+    with bar:
+        basis = basis_from(args.model, args.k, progress=update)
+    return basis, spectrogram_from(args.audio, bands)
+
+
+def add_export(parser):
+    """The options of `eigendance export`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    add_dance_inputs(parser, "the song: audio file (copied beside the export), or "
+                             "spectrogram file (.npz)")
+    parser.add_argument("--format", choices=tuple(EXPORT_FORMATS),
+                        help="glb (glTF 2.0: morph targets, or a skin), pc2 (+ the rest mesh "
+                             "as OBJ, for Blender's Mesh Cache), usd (time-sampled points); "
+                             "default: by the output's suffix")
+    add_output(parser, "file to write: .glb, .pc2 or .usd/.usdc/.usda")
+
+
+def run_export(args) -> None:
+    """`eigendance export`: write the dance as glTF, point cache or USD with its song beside it, and
+    say what was written.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    format = format_of(args.output, args.format)
+    began = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    clipped = args.start > 0 or args.duration is not None
+    for path in companion_paths(args.output, format, song_of(args), clipped).values():
+        if path is not None:  # before any work: the export would stop at the end
+            refuse_overwrite(path, args.force)
+    dance = dance_from(args, mapping)
+    bar, update = progress_bar(None, "frames", unit="frame")
+    with bar:
+        def step(done, total):
+            bar.total = total
+            update(done)
+        report = export_dance(dance, args.output, format, args.fps, args.force, step)
+    size, cache = report["bytes"], report["point_cache_bytes"]
+    compared = "" if format == "pc2" else \
+        f" (as a point cache: {cache / 1e6:.2f} MB, {cache / size:.1f}× the size)"
+    print(f"{args.output}: {report['frames']} frames of {dance.n} vertices at {args.fps:g} "
+          f"fps, {size / 1e6:.2f} MB{compared}, {time.perf_counter() - began:.1f} s")
+    if format == "glb" and getattr(getattr(dance, "basis", None), "reduced", None) is not None:
+        morphs = glb_size(dance, report["frames"])["morph targets"]
+        print(f"{args.output}: a skin on the {dance.basis.reduced.count} samples of the reduced "
+              f"basis; as morph targets it would be about {morphs / 1e6:.2f} MB")
+    if report["skinning_difference"] is not None:
+        print(f"{args.output}: the skin plays linear blend skinning; modal skinning differs "
+              f"by at most {report['skinning_difference']:.4g} "
+              f"({report['skinning_difference'] / report['diagonal']:.2%} of the diagonal)")
+    for path in report["files"][1:]:
+        print(f"{path}: written beside it")
+
+
+def add_render(parser):
+    """The options of `eigendance render`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    add_dance_inputs(parser, "the song (audio file), muxed into the video as AAC")
+    parser.add_argument("--size", type=video_size, default=(1280, 720),
+                        help="WIDTHxHEIGHT in pixels, even (default 1280x720)")
+    parser.add_argument("--gallery", type=int, metavar="N",
+                        help="render a gallery of N tiles as the page's grid: the initial "
+                             "gallery, or N children of the --breed parents")
+    parser.add_argument("--breed", nargs="+", metavar="MAPPING",
+                        help="with --gallery: breed the tiles from these mapping files")
+    parser.add_argument("--seed", type=number(0, 2**32 - 1, integer=True), default=0,
+                        help="breeding seed (default 0)")
+    add_output(parser, "video to write (.mp4)")
+
+
+def video_size(text: str) -> tuple[int, int]:
+    """--size: an argparse type for WIDTHxHEIGHT (`export.video.parse_size`).
+
+    Parameters
+    ----------
+    text : the flag's value.
+
+    Returns
+    -------
+    (width, height) in pixels; argparse.ArgumentTypeError otherwise.
+    """
+    try:
+        return parse_size(text)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+def run_render(args) -> None:
+    """`eigendance render`: draw the dance (or a gallery of dances) with its song into an MP4.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    if suffix_of(args.output) != ".mp4":
+        raise InputError(f"{args.output}: the video is an MP4; name it .mp4")
+    if song_of(args) is None:
+        raise InputError(f"{args.audio}: a video needs the song itself, not its spectrogram")
+    refuse_overwrite(args.output, args.force)
+    if args.breed and args.gallery is None:
+        raise InputError("breeding parents were given without a gallery size",
+                         remedy={"gallery": DEFAULT_GALLERY})
+    began = time.perf_counter()
+    mapping = Mapping.load(args.mapping) if args.mapping else None
+    if args.gallery is not None:
+        dances, looks = gallery_dances(args, mapping)
+    else:
+        dances = [dance_from(args, mapping)]
+        looks = [Look(mapping.shading, mapping.deformed_normal_weight) if mapping else Look()]
+    bar, update = progress_bar(None, "frames", unit="frame")
+    with bar:
+        def step(done, total):
+            bar.total = total
+            update(done)
+        report = render_video(args.output, dances, looks, args.audio, args.fps, args.size,
+                              args.force, step)
+    seconds = time.perf_counter() - began
+    print(f"{args.output}: {report['frames']} frames, {args.size[0]}x{args.size[1]} at "
+          f"{args.fps:g} fps, {report['duration']:.2f} s of video with the song, "
+          f"{len(dances)} {'tiles' if len(dances) > 1 else 'dancer'}, {seconds:.1f} s "
+          f"({report['duration'] / seconds:.2f}× real time)")
+
+
+def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
+    """The tiles of `render --gallery N`: the initial gallery, or N children of the --breed
+    parents, each windowed as --start and --duration ask.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    mapping : the --mapping (refused: a gallery makes its own), or None.
+
+    Returns
+    -------
+    (dances, looks): one HarmonicDance and one `Look` per tile.
+    """
+    size = check_gallery_size(args.gallery)
+    if is_rig(args):
+        raise InputError(f"{args.model}: a gallery breeds mappings of a mesh's harmonics; "
+                         "render a rig on its own")
+    if mapping is not None:
+        raise InputError(f"{args.mapping}: a gallery makes its own mappings; breed from it "
+                         "instead", remedy={"breed": args.mapping})
+    items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
+        if args.breed else None
+    basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
+    items = items or initial_gallery(basis, spectrogram, size)
+    name = os.path.splitext(os.path.basename(args.output))[0]
+    dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(
+        args.start, args.duration) for item in items]
+    say_note(args.output, dances[0].note)
+    return dances, [Look(item.shading, item.deformed_normal_weight) for item in items]

@@ -1,0 +1,236 @@
+"""What the commands share: argument types that check every number, the output and progress
+options, the inputs read from a file or computed (docs/design.md#cli)."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from tqdm import tqdm
+
+from eigendance import checks
+from eigendance.errors import InputError
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.modal.sample_rigs import SAMPLE_RIGS
+from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
+from eigendance.music.spectrogram import Spectrogram
+
+RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
+            + ", ".join(SAMPLE_RIGS))
+
+
+def number(low: float = -math.inf, high: float = math.inf, integer: bool = False,
+           above: bool = False):
+    """An argparse type for finite numbers in [low, high] (or (low, high] with `above`): the
+    text read as a number, then the library's one check of numbers (`checks.number`).
+
+    Parameters
+    ----------
+    low, high : the range.
+    integer : an integer is wanted.
+    above : the value must be greater than `low`.
+
+    Returns
+    -------
+    callable(text) → int or float, raising argparse.ArgumentTypeError (argparse names the
+    flag); `.bounds` is (low, high), for the tests that try every flag with absurd values.
+    """
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected {'an integer' if integer else 'a number'}, got {text!r}") from None
+        try:
+            return checks.number(value, "the value", low, high, integer, above)
+        except InputError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+    parse.bounds = (low, high)
+    return parse
+
+
+HARMONICS = number(1, 20000, integer=True)
+FPS = number(0, 1000, above=True)
+PORT = number(0, 65535, integer=True)
+
+
+def add_construction(parser) -> None:
+    """--reduced / --exact (docs/design.md#reduced-basis); args.construction None: the rule.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    construction = parser.add_mutually_exclusive_group()
+    construction.add_argument("--reduced", dest="construction", action="store_const",
+                              const="reduced", help="the reduced basis (samples and sparse "
+                              "interpolation: large meshes); default: exact when it fits the "
+                              "time and memory rule, else reduced")
+    construction.add_argument("--exact", dest="construction", action="store_const",
+                              const="exact", help="the exact basis, whatever the mesh's size")
+
+
+def add_output(parser, what: str) -> None:
+    """-o/--output and --force, as every command that writes has them.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    what : what the output is, for --help.
+    """
+    parser.add_argument("-o", "--output", required=True, help=what)
+    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+
+
+def progress_bar(total: int | None, description: str, unit: str = "pair"):
+    """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
+
+    Parameters
+    ----------
+    total : the count to reach; None when it is not known in advance (the bar shows a running
+        count).
+    description : the bar's label.
+    unit : what is counted.
+
+    Returns
+    -------
+    (bar, update): the bar (a context manager) and update(done), which moves it to `done`.
+    """
+    bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
+               disable=not sys.stderr.isatty(), leave=False)
+
+    def update(done):
+        bar.update(max(0, done - bar.n))
+
+    return bar, update
+
+
+def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
+    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache).
+
+    Parameters
+    ----------
+    path : a basis file or a mesh file.
+    k : harmonics of a mesh's basis.
+    progress : optional callable(pairs done) while solving.
+
+    Returns
+    -------
+    HarmonicBasis.
+    """
+    if path.lower().endswith(".npz"):
+        return HarmonicBasis.load(path)
+    return HarmonicBasis.from_mesh(path, k, progress=progress)
+
+
+def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:
+    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands.
+
+    Parameters
+    ----------
+    path : a spectrogram file or an audio file.
+    bands : bands of an audio file's spectrogram.
+
+    Returns
+    -------
+    Spectrogram.
+    """
+    if path.lower().endswith(".npz"):
+        return Spectrogram.load(path)
+    return Spectrogram.from_file(path, bands=bands)
+
+
+def gallery_size(text: str) -> int:
+    """The gallery size: an argparse type applying the library's one rule (`check_gallery_size`).
+
+    Parameters
+    ----------
+    text : the flag's value.
+
+    Returns
+    -------
+    int, 2 … 16; argparse.ArgumentTypeError otherwise.
+    """
+    try:
+        value = int(text)
+    except ValueError:
+        value = text
+    try:
+        return check_gallery_size(value)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+gallery_size.bounds = (MIN_GALLERY, MAX_GALLERY)  # for the tests of every numeric flag
+
+
+STIFFNESS = number(0, 1e12, above=True)
+
+
+def add_palette_options(parser) -> None:
+    """How a rig's modes play, over its mapping's palette: `animate-rig`, `export`, `render`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    group = parser.add_argument_group("rigs: the palette (default: the mapping's, else the "
+                                      "default rule that makes any rig dance)")
+    group.add_argument("--modes", help="mode indices that move, e.g. 0,2,5-8")
+    group.add_argument("--amplitude", type=number(0, math.pi), default=None,
+                       help="largest body rotation of each chosen mode at full drive, radians")
+    group.add_argument("--time-scale", type=number(0, 1000, above=True), default=None,
+                       help="multiply the natural frequencies")
+    group.add_argument("--offset", type=number(-1e6, 1e6), default=None,
+                       help="the filter's offset b: 0 keeps silence still, 1 sways idly "
+                            "(default: the mapping's, else 0)")
+    group.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
+                       help="modal (default, first-order, as live) or lbs (exact body "
+                            "transforms, linear blend: what a glTF skin plays exactly)")
+
+
+def add_rig_options(parser) -> None:
+    """The rig's joint stiffness (--stiffness, --joints), shared by `modes` and `animate-rig`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
+                        help="multiply every joint stiffness (default 1; frequencies scale "
+                             "with its square root)")
+    parser.add_argument("--joints", metavar="JSON",
+                        help="per-joint stiffness: a JSON object {joint name: number, list (one "
+                             "per free row) or \"auto\"} applied before --stiffness")
+
+
+SECONDS = number(0, 24 * 3600)
+
+
+def add_window_options(parser, duration_help: str = "default: to the song's end") -> None:
+    """--start and --duration: the part of the song a command plays (docs/design.md#window).
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    duration_help : what --duration means without a value.
+    """
+    group = parser.add_argument_group("part of the song (the clip plays from its time 0)")
+    group.add_argument("--start", type=SECONDS, default=0.0,
+                       help="where the clip starts in the song, seconds (default 0)")
+    group.add_argument("--duration", type=number(0, 24 * 3600, above=True), default=None,
+                       help=f"the clip's length, seconds ({duration_help}; a clip past the "
+                            "song's end is cut there, with a note)")
+
+
+def say_note(output: str, note: str | None) -> None:
+    """Print a window's note (what was clamped) on stderr, naming the output.
+
+    Parameters
+    ----------
+    output : the file the command writes.
+    note : the note, or None (nothing printed).
+    """
+    if note:
+        print(f"{output}: note: {note}", file=sys.stderr)

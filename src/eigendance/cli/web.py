@@ -1,0 +1,129 @@
+"""The web app's commands: `serve` and `demo` (docs/design.md#server)."""
+
+from __future__ import annotations
+
+import sys
+
+from eigendance.cli.options import HARMONICS, PORT, add_construction, number
+from eigendance.server.app import create_app
+from eigendance.server.guard import exposure_warning
+from eigendance.server.serve import (
+    DEFAULT_HOST,
+    DEFAULT_PORT,
+    DEMO_K,
+    demo_paths,
+    library_session,
+    listen,
+    run,
+    terminal_progress,
+)
+
+
+def add_server_options(parser, k: int, k_help: str) -> None:
+    """The options `serve` and `demo` share: where to listen, -k and the limits.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    k : the default number of harmonics.
+    k_help : what -k is for, for --help.
+    """
+    parser.add_argument("--host", default=DEFAULT_HOST,
+                        help=f"address to listen on (default {DEFAULT_HOST}: this machine only; "
+                             "another address lets other machines use the server, with no "
+                             "password)")
+    parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
+                        help=f"port (default {DEFAULT_PORT}; 0: any free port)")
+    parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
+    parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
+                        help="largest file a page may upload, MiB (default 64)")
+    parser.add_argument("--max-memory-mb", type=number(16, 1 << 22, integer=True), default=4096,
+                        help="memory the library's meshes, songs and rigs may keep, MiB; the "
+                             "least recently used are removed beyond it (default 4096)")
+    add_construction(parser)
+
+
+def add_serve(parser):
+    """The options of `eigendance serve`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    parser.add_argument("files", nargs="*", metavar="MESH|AUDIO|MAPPING|RIG",
+                        help="meshes (OBJ, PLY, OFF, STL, glTF), audio (WAV, MP3, Ogg, FLAC), "
+                             "mapping JSON and skeleton JSON files to put in the library (a "
+                             "glTF with a skin is a rig too; the built-in rigs are always "
+                             "there)")
+    add_server_options(parser, 150, "harmonics per mesh basis")
+
+
+def run_serve(args) -> None:
+    """`eigendance serve`: the web app with the given files in its library.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    serve(args, lambda: args.files, "eigendance: serving on {url}")
+
+
+def add_demo(parser):
+    """The options of `eigendance demo`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    add_server_options(parser, DEMO_K, "harmonics of the demo mesh")
+
+
+def run_demo(args) -> None:
+    """`eigendance demo`: the web app with the built-in cat and music.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    serve(args, demo_paths, "eigendance demo: open {url} in a browser")
+
+
+def serve(args, paths, announce: str) -> None:
+    """Listen, fill a temporary library with the files of paths() and serve it until interrupted;
+    the library's folder is removed at the end (docs/design.md#server).
+
+    Parameters
+    ----------
+    args : the parsed command line (--host, --port, -k, the limits).
+    paths : () → the files to put in the library.
+    announce : the line printed once it serves, with {url}.
+    """
+    listening = listen(args.host, args.port)
+    port = listening.getsockname()[1]
+    if warning := exposure_warning(args.host):
+        print(warning, file=sys.stderr)
+    with library_session(k=args.k, max_upload_bytes=args.max_upload_mb << 20,
+                         memory_budget=args.max_memory_mb << 20,
+                         construction=args.construction or "auto") as library:
+        terminal_progress(library)
+        for path in paths():
+            library.add_path(path)
+        run(create_app(library, args.host, port), listening, on_exit=library.stop,
+            announce=announce.format(url=url(args.host, port)))
+
+
+def url(host: str, port: int) -> str:
+    """The URL a browser opens for a server listening on host:port.
+
+    Parameters
+    ----------
+    host : the address listened on ("0.0.0.0": any, shown as 127.0.0.1).
+    port : the port.
+
+    Returns
+    -------
+    str, e.g. "http://127.0.0.1:8765/".
+    """
+    shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
+    shown = f"[{shown}]" if ":" in shown else shown
+    return f"http://{shown}:{port}/"

@@ -1,0 +1,250 @@
+"""Dancers and how much a mapping moves them on a song (docs/design.md#gallery).
+
+A gallery works on any *dancer* — the harmonics of a mesh, the vibration modes of a rig —
+through the `Dancer` protocol. The Gram matrix G_νμ = mean over the vertices of
+⟨D_ν(x), D_μ(x)⟩ (`motion_gram`) gives the RMS displacement √(wᵀ G w) of the music's share
+w = φ − b of any filter, so a gallery is measured on every frame of a song without forming a
+position: `gallery_motion` (m, the peak, the main harmonic range of each item),
+`gallery_correlations` (how alike two items move), `full_scale_motion` (the most the music can
+move an item).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+
+from eigendance.music.mapping import Mapping
+
+CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
+MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy
+
+
+class Dancer(Protocol):
+    """What a gallery needs of a model: its frequencies and the motions filters give it.
+
+    Displacements must be affine in φ: a filter moves the model by Σ_ν (φ_ν − b) D_ν,
+    D_ν (n, 3) the displacement field of target ν (harmonics: b = 1 and D_ν = u_ν X̃_νᵀ; a rig's
+    modes: b = 0). A dancer may also give `motion_gram(targets)` — (T,) → (T, T), the mean over
+    the vertices of ⟨D_ν(x), D_μ(x)⟩ — without forming positions (`HarmonicBasis` does); else
+    `motion_gram` below forms it from the displacements.
+
+    Parameters
+    ----------
+    A protocol: any object with these attributes and methods (`HarmonicBasis`, `RigDancer`).
+    """
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """(k,) ascending: √λ of a mesh's harmonics, or a rig's (ranked) modes."""
+
+    @property
+    def diagonal(self) -> float:
+        """Bounding-box diagonal of the rest shape, in the units of the displacements."""
+
+    def displacements(self, phi) -> np.ndarray:
+        """(S, k) filters → (S, n, 3) displacements of the n vertices from the rest shape.
+
+        Parameters
+        ----------
+        phi : (S, k) filters.
+
+        Returns
+        -------
+        (S, n, 3).
+        """
+
+
+def motion_gram(dancer: Dancer, targets) -> np.ndarray:
+    """G_νμ = mean over the vertices of ⟨D_ν(x), D_μ(x)⟩ for `targets` (T,) → (T, T): the
+    dancer's own when it has one, else from its displacements, D_ν = d(e_ν) − d(0).
+
+    Parameters
+    ----------
+    dancer : the model.
+    targets : (T,) target indices.
+
+    Returns
+    -------
+    (T, T) in the displacements' units squared.
+    """
+    targets = np.asarray(targets, dtype=np.int64)
+    own = getattr(dancer, "motion_gram", None)  # optional in the protocol: a fast path
+    if own is not None:
+        return own(targets)
+    filters_ = np.zeros((len(targets) + 1, len(dancer.frequencies)))
+    filters_[np.arange(1, len(targets) + 1), targets] = 1.0
+    moved = dancer.displacements(filters_)
+    fields = (moved[1:] - moved[0]).reshape(len(targets), -1)
+    return fields @ fields.T / moved.shape[1]
+
+
+def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
+    """Band values of at most CALIBRATION_FRAMES evenly spaced frames of the song (F, B),
+    smoothed once more by `smoothing` s (a mapping's setting).
+
+    Parameters
+    ----------
+    spectrogram : the song.
+    smoothing : s.
+
+    Returns
+    -------
+    (F, B) float64.
+    """
+    values = np.asarray(spectrogram.smoothed(smoothing).values, dtype=np.float64)
+    if len(values) > CALIBRATION_FRAMES:
+        values = values[np.linspace(0, len(values) - 1, CALIBRATION_FRAMES).round().astype(int)]
+    return values
+
+
+def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
+    """RMS displacement of each frame: √(wᵀ G w) for weights w (F, T) on T targets → (F,).
+
+    Parameters
+    ----------
+    w : (F, T) φ − b on the targets.
+    gram : (T, T) their Gram matrix.
+
+    Returns
+    -------
+    (F,) in the displacements' units.
+    """
+    return np.sqrt(np.maximum(((w @ gram) * w).sum(axis=1), 0.0))
+
+
+@dataclass
+class ItemMotion:
+    """How one mapping moves a model on a song: m (fraction of the diagonal), the largest frame's
+    motion (same unit) and the main harmonic range [lowest, highest] (MAIN_SHARE of its energy).
+
+    Parameters
+    ----------
+    motion : m.
+    peak : the largest frame's motion.
+    lowest, highest : the main harmonic range (−1 when the mapping moves nothing).
+    """
+
+    motion: float
+    peak: float
+    lowest: int
+    highest: int
+
+    def as_json(self) -> dict:
+        """The measures as the page shows them.
+
+        Returns
+        -------
+        {"motion", "peak", "harmonics": [lowest, highest]}.
+        """
+        return {"motion": self.motion, "peak": self.peak,
+                "harmonics": [self.lowest, self.highest]}
+
+
+def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndarray, np.ndarray]:
+    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T).
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mapping : the mapping.
+
+    Returns
+    -------
+    (targets (T,) int64, w (F, T)).
+    """
+    k = len(dancer.frequencies)
+    w = mapping.filter(song_frames(spectrogram, mapping.smoothing), k) - 1.0
+    targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
+    return targets, w[:, targets]
+
+
+def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
+    """m, the peak and the main harmonic range of each mapping on the song (any mappings: an
+    initial gallery or bred children). m = 95th percentile over the frames of the RMS vertex
+    displacement divided by the bounding-box diagonal.
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mappings : the mappings.
+
+    Returns
+    -------
+    list of ItemMotion, one per mapping.
+    """
+    results = []
+    diagonal = dancer.diagonal
+    for mapping in mappings:
+        targets, w = item_weights(dancer, spectrogram, mapping)
+        if not len(targets):
+            results.append(ItemMotion(0.0, 0.0, -1, -1))
+            continue
+        gram = motion_gram(dancer, targets)
+        rms = frame_motion(w, gram) / diagonal
+        energy = (w ** 2).mean(axis=0) * np.diag(gram)
+        share = np.cumsum(energy) / max(energy.sum(), 1e-300)
+        tail = (1 - MAIN_SHARE) / 2
+        lowest = targets[min(len(targets) - 1, np.searchsorted(share, tail, side="right"))]
+        highest = targets[min(len(targets) - 1, np.searchsorted(share, 1 - tail))]
+        results.append(ItemMotion(float(np.percentile(rms, 95)), float(rms.max()),
+                                  int(lowest), int(highest)))
+    return results
+
+
+def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
+    """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
+    of the displacements: the most the music can move it.
+
+    Parameters
+    ----------
+    dancer : the model.
+    mappings : the mappings.
+
+    Returns
+    -------
+    (S,).
+    """
+    k = len(dancer.frequencies)
+    motion = []
+    for mapping in mappings:
+        w = mapping.filter(np.ones((1, mapping.bands)), k) - 1.0
+        targets = np.flatnonzero(w[0])
+        motion.append(frame_motion(w[:, targets], motion_gram(dancer, targets))[0]
+                      if len(targets) else 0.0)
+    return np.array(motion)
+
+
+def gallery_correlations(dancer: Dancer, spectrogram, mappings) -> np.ndarray:
+    """(S, S) correlation of the items' displacement fields over the song's frames:
+    Σ_f ⟨d_s(f), d_r(f)⟩ / √(Σ_f |d_s(f)|² Σ_f |d_r(f)|²), ⟨·,·⟩ over all vertices.
+
+    Parameters
+    ----------
+    dancer : the model.
+    spectrogram : the song.
+    mappings : the S mappings.
+
+    Returns
+    -------
+    (S, S), ones on the diagonal.
+    """
+    weights = [item_weights(dancer, spectrogram, mapping) for mapping in mappings]
+    union = np.unique(np.concatenate([targets for targets, _ in weights]))
+    gram = motion_gram(dancer, union)
+    where = [np.searchsorted(union, targets) for targets, _ in weights]
+    size = len(mappings)
+    inner = np.zeros((size, size))
+    for s in range(size):
+        projected = weights[s][1] @ gram[where[s]]  # (F, |union|)
+        for r in range(s, size):
+            inner[s, r] = inner[r, s] = np.sum(projected[:, where[r]] * weights[r][1])
+    norms = np.sqrt(np.maximum(np.diag(inner), 1e-300))
+    return inner / norms[:, None] / norms[None, :]
+
+
+# ---------------------------------------------------------------------------------------------

@@ -1,0 +1,227 @@
+"""Files into the library: meshes, songs, mappings and rigs (docs/design.md#server).
+
+A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind:
+a mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a
+skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its
+skin cannot be analysed). One
+item per distinct content (`server.contents`): the same bytes again answer the item already
+there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
+names from the network never become paths.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import os
+
+from eigendance.errors import EigendanceError, InputError, one_line
+from eigendance.files import check_readable, kind_of, read_json, suffix_of
+from eigendance.harmonic.basis import choose_construction
+from eigendance.harmonic.mesh import load_mesh
+from eigendance.modal.gltf_skin import has_skin
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import load_rig
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.server import rigs
+from eigendance.server.binary import spectrogram_bundle
+from eigendance.server.contents import file_digest
+from eigendance.server.items import Job, MappingItem, MeshItem, RigItem, SongItem, new_id
+from eigendance.server.requests import mapping_from
+from eigendance.server.shelf import Shelf
+from eigendance.server.solver import BasisSolver
+
+UPLOAD_PREFIX = "upload-"
+
+
+class Intake:
+    """Turns files into items on the shelf (see the module docstring).
+
+    Parameters
+    ----------
+    shelf : where the items go, charged within its memory budget.
+    solver : the queue that computes mesh bases.
+    k : harmonics per mesh basis.
+    spectrogram_options : options of `Spectrogram.from_file`.
+    construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
+    """
+
+    def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,
+                 spectrogram_options: dict | None = None, construction: str = "auto"):
+        self.shelf, self.solver, self.k = shelf, solver, k
+        self.construction = construction
+        self.spectrogram_options = spectrogram_options or {}
+
+    def add_path(self, path: str, name: str | None = None, k: int | None = None):
+        """Register a file by its kind (suffix): meshes start a basis job, songs are decoded.
+
+        Parameters
+        ----------
+        path : the file (given to `serve`, or an upload already stored).
+        name : how the page calls it (default: the file's name).
+        k : harmonics of a mesh's basis (default the library's).
+
+        Returns
+        -------
+        The item: new, or the one already there with the same content.
+        """
+        name = name or os.path.basename(path)
+        kind = kind_of(name)
+        check_readable(path)
+        return self._add_file(path, name, kind, file_digest(path), "file", k)[0]
+
+    def add_upload(self, stored: str, name: str, kind: str, digest: str):
+        """Register an uploaded file under a name of our own; an upload that fails leaves no
+        file behind.
+
+        Parameters
+        ----------
+        stored : where it was received, inside the library folder.
+        name : the name it was uploaded under.
+        kind : "mesh", "audio" or "mapping" (by suffix; a skeleton JSON becomes a rig).
+        digest : the SHA-256 of its bytes.
+
+        Returns
+        -------
+        (item, new): new is False when the same content was there (that item is answered).
+        """
+        final = os.path.join(self.shelf.folder, f"{UPLOAD_PREFIX}{digest[:24]}{suffix_of(name)}")
+        try:
+            os.replace(stored, final)
+            item, new = self._add_file(final, name, kind, digest, "upload")
+        except BaseException as error:
+            self.shelf.discard(stored, final)
+            if isinstance(error, EigendanceError):
+                error.args = (self.shelf.public(str(error), {final: name}),)
+            raise
+        if not new:
+            self.shelf.discard(final)  # unless it is the file of the item already there
+        return item, new
+
+    def _add_file(self, path: str, name: str, kind: str, digest: str, origin: str,
+                  k: int | None = None):
+        """The item of a file (new, or the one with the same content) and whether it is new."""
+        suffix = suffix_of(name)
+        document = None
+        if kind == "mapping":  # a skeleton JSON is a rig, any other JSON a mapping
+            document = read_json(path, name)
+            if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
+                kind = "rig"
+        elif kind == "mesh" and suffix in (".glb", ".gltf") and has_skin(path):
+            kind = "rig"  # a skinned glTF is a rig (its skin the mesh the modes move)
+        key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
+        if kind == "mapping":
+            return self.add_mapping(document, name)
+        existing = self.shelf.contents.claim(key, self.shelf.touched)
+        if existing is not None:
+            return existing, False
+        try:
+            if kind == "mesh":
+                item = self.add_mesh(path, name, k, key)
+            elif kind == "audio":
+                item = self.add_song(path, name, key)
+            elif suffix in (".glb", ".gltf"):  # a skin that cannot be analysed: a mesh
+                try:
+                    item = self.add_rig(path, name, origin, key)
+                except InputError:
+                    item = self.add_mesh(path, name, k, key)
+            else:
+                item = self.add_rig(path, name, origin, key)
+        finally:
+            self.shelf.contents.release(key)
+        return item, True
+
+    def add_mesh(self, path: str, name: str, k: int | None = None,
+                 content: tuple | None = None) -> MeshItem:
+        """A mesh item, charged its planned basis, and its basis job queued.
+
+        Parameters
+        ----------
+        path : the mesh file.
+        name : its name.
+        k : harmonics (default the library's; at most the vertex count − 2).
+        content : its content key.
+
+        Returns
+        -------
+        MeshItem; EigendanceError when the mesh cannot be read, InputError when it cannot fit.
+        """
+        mesh = dataclasses.replace(load_mesh(path), name=name)
+        laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
+        k = max(2, min(k or self.k, len(mesh.vertices) - 2))
+        construction = choose_construction(mesh.n, k) if self.construction == "auto" \
+            else self.construction
+        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
+                        construction=construction)
+        item.job = Job(new_id(), "basis", k, name)
+        self.shelf.admit(item, self.shelf.meshes, f"{name}: a basis of {k} harmonics of "
+                                      f"{len(mesh.vertices)} vertices")
+        self.solver.put(item, mesh, laplacian)
+        return item
+
+    def add_song(self, path: str, name: str, content: tuple | None = None) -> SongItem:
+        """A song item: the audio decoded into its spectrogram and bundle.
+
+        Parameters
+        ----------
+        path : the audio file.
+        name : its name.
+        content : its content key.
+
+        Returns
+        -------
+        SongItem; InputError when the audio cannot be decoded or cannot fit.
+        """
+        try:
+            spectrogram = Spectrogram.from_file(path, **self.spectrogram_options)
+        except EigendanceError:
+            raise
+        except Exception as error:  # noqa: BLE001 - decoders raise many types
+            raise InputError(f"{name}: cannot decode the audio ({one_line(error)})") from None
+        item = SongItem(new_id(), name, path, spectrogram, content=content)
+        item.bundle = spectrogram_bundle(spectrogram, name)
+        self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")
+        return item
+
+    def add_mapping(self, data, name: str) -> tuple[MappingItem, bool]:
+        """A mapping item from a parsed mapping document.
+
+        Parameters
+        ----------
+        data : the document (checked by `requests.mapping_from`).
+        name : its name.
+
+        Returns
+        -------
+        (item, new): new is False when the same mapping (the same fields) was there.
+        """
+        fields = mapping_from(data, name).to_json()
+        text = json.dumps(fields, sort_keys=True).encode()
+        key = ("mapping", hashlib.sha256(text).hexdigest())
+        with self.shelf.lock:
+            existing = self.shelf.touched(self.shelf.contents.find(key) or "")
+            if existing is not None:
+                return existing, False
+            item = MappingItem(new_id(), name, fields, content=key)
+            self.shelf.admit(item, self.shelf.mappings, f"{name}: the mapping")
+            return item, True
+
+    def add_rig(self, path: str, name: str, origin: str, content: tuple | None = None) -> RigItem:
+        """A rig file (skeleton JSON or glTF skin), analysed now.
+
+        Parameters
+        ----------
+        path : the file.
+        name : its name.
+        origin : "file" or "upload".
+        content : its content key.
+
+        Returns
+        -------
+        RigItem; InputError when it is not a rig that can be analysed, or cannot fit.
+        """
+        item = RigItem(new_id(), name, origin, path, content=content)
+        rigs.analyse(item, Rig(load_rig(path, name)))
+        self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
+        return item
