@@ -27,6 +27,7 @@ The song's file name, the sample rate and what moved are in the root `extras.eig
 
 from __future__ import annotations
 
+import io
 import math
 import struct
 
@@ -140,8 +141,6 @@ class _Builder:
 
 def glb_bytes(dance: Dance, times, extras: dict) -> bytes:
     """The .glb of `dance` sampled at `times` (s) as bytes (`write_glb` streams it)."""
-    import io
-
     buffer = io.BytesIO()
     write_glb(buffer, dance, times, extras)
     return buffer.getvalue()
