@@ -150,6 +150,10 @@ def unique_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return_inverse=True) finds them (rows in lexicographic order), several times faster on
     millions of rows: one lexsort of the columns instead of a sort of row records.
 
+    Parameters
+    ----------
+    rows : (r, c) array.
+
     Returns
     -------
     first : (u,) int64, the index of each distinct row's first occurrence.

@@ -86,7 +86,15 @@ LARGE_OUTPUT = 4e9
 
 def check_output(path: str | os.PathLike, planned: float, what: str, force: bool) -> None:
     """InputError unless `planned` bytes fit on the disk and, beyond LARGE_OUTPUT, `force`
-    asks for them: the size is said before anything is written."""
+    asks for them: the size is said before anything is written.
+
+    Parameters
+    ----------
+    path : the output.
+    planned : its size, bytes.
+    what : the output in words, e.g. "dance.pc2: 5401 frames of 1151994 vertices".
+    force : write it however large.
+    """
     check_disk(path, planned, what)
     if planned > LARGE_OUTPUT and not force:
         raise InputError(f"{what} would be {size_text(planned)}, a very large file",

@@ -86,9 +86,13 @@ class SampleSkin:
     moves by translation only, D_j(t) = Σ_ν (φ_ν(t) − 1)·C_jν; vertex i moves by
     Σ_j w_ij D_j(t) (docs/design.md#exports).
 
-    joints: (m, 3) c_j, original units; indices, weights: (n, 8) each vertex's samples and
-    weights (≥ 0, summing to 1, largest first); coarse: (d, m, 3) C_jν for the d driven
-    harmonics, original units; amplitudes: (T, d) φ_ν(t_i) − 1.
+    Parameters
+    ----------
+    joints : (m, 3) c_j, original units.
+    indices, weights : (n, 8) each vertex's samples and weights (≥ 0, summing to 1, largest
+        first).
+    coarse : (d, m, 3) C_jν for the d driven harmonics, original units.
+    amplitudes : (T, d) φ_ν(t_i) − 1.
     """
 
     joints: np.ndarray
@@ -98,12 +102,26 @@ class SampleSkin:
     amplitudes: np.ndarray
 
     def translations(self, joint: int) -> np.ndarray:
-        """(T, 3) float32: joint `joint`'s position c_j + D_j(t_i) at every sample time."""
+        """Joint `joint`'s position c_j + D_j(t_i) at every sample time.
+
+        Parameters
+        ----------
+        joint : j.
+
+        Returns
+        -------
+        (T, 3) float32.
+        """
         moved = self.amplitudes @ self.coarse[:, joint, :]
         return (self.joints[joint] + moved).astype("<f4")
 
     def positions(self) -> np.ndarray:
-        """(T, n, 3) float64: what a viewer playing the skin shows (tests, short clips)."""
+        """What a viewer playing the skin shows (tests, short clips).
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
         moved = np.einsum("td,djc->tjc", self.amplitudes, self.coarse)  # (T, m, 3)
         rest = np.einsum("ij,ijc->ic", self.weights, self.joints[self.indices])
         offsets = np.einsum("ij,tijc->tic", self.weights, moved[:, self.indices])
@@ -364,7 +382,16 @@ class HarmonicDance(Dance):
         return Morphs(driven, targets, self.phi(times)[:, driven] - 1.0)
 
     def sample_skin(self, times) -> SampleSkin:
-        """The motion of a reduced basis at `times` as a skin on its samples (exact)."""
+        """The motion of a reduced basis at `times` as a skin on its samples (exact).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        SampleSkin.
+        """
         reduced = self.basis.reduced
         if reduced is None:
             raise ValueError("only a reduced basis moves as a skin on its samples")

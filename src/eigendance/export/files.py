@@ -164,7 +164,18 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
 
 
 def planned_bytes(dance: Dance, format: str, frames: int) -> int:
-    """The size of the main file of an export, known before it is written."""
+    """The size of the main file of an export, known before it is written.
+
+    Parameters
+    ----------
+    dance : the motion.
+    format : "glb", "pc2" or "usd".
+    frames : samples T.
+
+    Returns
+    -------
+    int, bytes.
+    """
     if format == "pc2":
         return pc2_size(dance.n, frames)
     if format == "usd":

@@ -140,7 +140,16 @@ class _Builder:
 
 
 def glb_bytes(dance: Dance, times, extras: dict) -> bytes:
-    """The .glb of `dance` sampled at `times` (s) as bytes (`write_glb` streams it)."""
+    """The .glb of `dance` sampled at `times` (s) as bytes (`write_glb` streams it to a file).
+
+    Parameters
+    ----------
+    dance, times, extras : as for `write_glb`.
+
+    Returns
+    -------
+    bytes.
+    """
     buffer = io.BytesIO()
     write_glb(buffer, dance, times, extras)
     return buffer.getvalue()
@@ -348,7 +357,17 @@ def glb_size(dance: Dance, frames: int) -> dict[str, int]:
     else `morph targets`) and of the other form, for `frames` samples: vertices, normals and
     faces, plus per driven harmonic n displacements and T weights (morph targets) or per
     vertex 8 joints and weights and per sample T translations (skin). The JSON is not
-    counted (≈ 0.2 kB per joint)."""
+    counted (≈ 0.2 kB per joint).
+
+    Parameters
+    ----------
+    dance : a `HarmonicDance`.
+    frames : samples T.
+
+    Returns
+    -------
+    {"morph targets": bytes, "skin": bytes (a reduced basis only)}.
+    """
     n, faces = dance.n, len(dance.faces)
     base = 24 * n + faces * 3 * (2 if n <= 65535 else 4) + 4 * frames
     driven = len(dance.driven())

@@ -59,8 +59,18 @@ EXACT_VALUES = 6e7
 
 
 def choose_construction(n: int, k: int) -> str:
-    """"exact" when the exact solve of k harmonics on n vertices fits the time rule
-    (n·k ≤ EXACT_VALUES) and the memory available now, else "reduced"."""
+    """Which basis `from_mesh` makes by default (docs/design.md#reduced-basis).
+
+    Parameters
+    ----------
+    n : vertices.
+    k : harmonics.
+
+    Returns
+    -------
+    "exact" when the exact solve fits the time rule (n·k ≤ EXACT_VALUES) and the memory
+    available now (or the mesh has too few vertices to reduce), else "reduced".
+    """
     if sample_count(n, k) >= n:  # too few vertices to reduce
         return "exact"
     fits = SOLVE_BYTES_PER_VALUE * n * k <= memory_budget()
@@ -129,7 +139,16 @@ class HarmonicBasis:
         return self.eigenvectors if self.reduced is None else self.reduced
 
     def harmonics(self, targets) -> np.ndarray:
-        """U[:, targets] (n, t), for an exact or a reduced basis (only these are formed)."""
+        """U[:, targets], for an exact or a reduced basis (only these columns are formed).
+
+        Parameters
+        ----------
+        targets : (t,) harmonic indices.
+
+        Returns
+        -------
+        (n, t).
+        """
         if self.reduced is None:
             return self.eigenvectors[:, np.asarray(targets, dtype=np.int64)]
         return self.reduced.columns(targets)

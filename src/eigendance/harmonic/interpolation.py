@@ -34,6 +34,8 @@ CHUNK = 1 << 16  # vertices per block of the weight computation (bounds its memo
 class Interpolation:
     """P (n × m) as at most MOST (index, weight) pairs per vertex.
 
+    Parameters
+    ----------
     indices : (n, MOST) int32 sample slots in 0 … m − 1 (a slot repeats where a vertex has
         fewer samples; its weight there is 0).
     weights : (n, MOST) float64, ≥ 0, multiples of QUANTUM, each row summing to exactly 1.
@@ -53,10 +55,16 @@ class Interpolation:
 
     @property
     def n(self) -> int:
+        """Vertices n."""
         return len(self.indices)
 
     def matrix(self) -> sp.csr_matrix:
-        """P as a sparse (n, m) matrix (repeated slots summed), built once."""
+        """P as a sparse matrix (repeated slots summed), built once.
+
+        Returns
+        -------
+        (n, m) CSR.
+        """
         if self._matrix is None:
             n, most = self.indices.shape
             matrix = sp.csr_matrix((self.weights.astype(np.float64).reshape(-1),  # copies:
@@ -68,11 +76,25 @@ class Interpolation:
         return self._matrix
 
     def lift(self, coarse: np.ndarray) -> np.ndarray:
-        """P · coarse: (m,) or (m, c) values at the samples → (n,) or (n, c) at the vertices."""
+        """P · coarse.
+
+        Parameters
+        ----------
+        coarse : (m,) or (m, c) values at the samples.
+
+        Returns
+        -------
+        (n,) or (n, c) values at the vertices.
+        """
         return self.matrix() @ coarse
 
     def check(self) -> str | None:
-        """What is wrong with these arrays as an interpolation, or None when they are one."""
+        """What is wrong with these arrays as an interpolation.
+
+        Returns
+        -------
+        str, or None when they are one.
+        """
         if self.indices.ndim != 2 or self.weights.shape != self.indices.shape or \
                 self.indices.shape[1] > MOST:
             return f"weights and indices must both be (n, ≤ {MOST})"
@@ -212,9 +234,17 @@ def quantised(weights: np.ndarray) -> np.ndarray:
     """Rows of non-negative weights summing to 1, rounded to multiples of QUANTUM that still
     sum to exactly 1 (largest remainders round up).
 
+    Parameters
+    ----------
+    weights : (r, c) rows of non-negative weights summing to 1.
+
+    Returns
+    -------
+    (r, c) float64 multiples of QUANTUM, each row summing to exactly 1.
+
     Example
     -------
-    >>> quantised(np.array([[1 / 3, 1 / 3, 1 / 3]])).sum()
+    >>> float(quantised(np.array([[1 / 3, 1 / 3, 1 / 3]])).sum())
     1.0
     """
     units = round(1 / QUANTUM)

@@ -47,6 +47,7 @@ class Mass:
 
     @property
     def n(self) -> int:
+        """Rows n."""
         return len(self.diagonal) if self.diagonal is not None else self.matrix.shape[0]
 
     @property
@@ -57,21 +58,54 @@ class Mass:
         return float(self.matrix.sum())
 
     def sparse(self) -> sp.csc_matrix:
-        """M as a sparse matrix."""
+        """M as a sparse matrix.
+
+        Returns
+        -------
+        (n, n) csc.
+        """
         return sp.diags(self.diagonal).tocsc() if self.diagonal is not None else self.matrix
 
     def times(self, vectors: np.ndarray) -> np.ndarray:
-        """M x for (n,) or (n, c) x."""
+        """M x.
+
+        Parameters
+        ----------
+        vectors : (n,) or (n, c) x.
+
+        Returns
+        -------
+        M x, the shape of x.
+        """
         if self.diagonal is not None:
             return self.diagonal.reshape((-1,) + (1,) * (np.ndim(vectors) - 1)) * vectors
         return self.matrix @ vectors
 
     def shifted(self, stiffness, shift: float) -> sp.csc_matrix:
-        """L − σM (the same sparsity for every σ)."""
+        """L − σM (the same sparsity for every σ).
+
+        Parameters
+        ----------
+        stiffness : L (n, n) sparse.
+        shift : σ.
+
+        Returns
+        -------
+        (n, n) csc.
+        """
         return (stiffness - shift * self.sparse()).tocsc()
 
     def norms(self, vectors: np.ndarray) -> np.ndarray:
-        """uᵀ M u of each column of (n, c) vectors."""
+        """uᵀ M u of each column.
+
+        Parameters
+        ----------
+        vectors : (n, c).
+
+        Returns
+        -------
+        (c,).
+        """
         return np.einsum("ij,ij->j", vectors, self.times(vectors))
 
     def _factors(self):
@@ -88,19 +122,46 @@ class Mass:
         return self._factor
 
     def to_y(self, vectors: np.ndarray) -> np.ndarray:
-        """y = Rᵀ u, for (n,) or (n, c) u."""
+        """y = Rᵀ u.
+
+        Parameters
+        ----------
+        vectors : (n,) or (n, c) u.
+
+        Returns
+        -------
+        y, the shape of u.
+        """
         if self.diagonal is not None:
             return self._root.reshape((-1,) + (1,) * (np.ndim(vectors) - 1)) * vectors
         return self._factors()[2] @ vectors
 
     def factor_times(self, vectors: np.ndarray) -> np.ndarray:
-        """R y, for (n,) or (n, c) y."""
+        """R y.
+
+        Parameters
+        ----------
+        vectors : (n,) or (n, c) y.
+
+        Returns
+        -------
+        R y, the shape of y.
+        """
         if self.diagonal is not None:
             return self._root.reshape((-1,) + (1,) * (np.ndim(vectors) - 1)) * vectors
         return self._factors()[1] @ vectors
 
     def from_y(self, vectors: np.ndarray) -> np.ndarray:
-        """u = R⁻ᵀ y = M⁻¹ R y, for (n,) or (n, c) y."""
+        """u = R⁻ᵀ y = M⁻¹ R y.
+
+        Parameters
+        ----------
+        vectors : (n,) or (n, c) y.
+
+        Returns
+        -------
+        u, the shape of y.
+        """
         if self.diagonal is not None:
             return vectors / self._root.reshape((-1,) + (1,) * (np.ndim(vectors) - 1))
         solver, factor, _ = self._factors()
@@ -111,5 +172,14 @@ class Mass:
 
 
 def as_mass(mass) -> Mass:
-    """`mass` as a `Mass` (a vector of areas or a sparse matrix; a `Mass` is returned as is)."""
+    """`mass` as a `Mass`.
+
+    Parameters
+    ----------
+    mass : (n,) areas, a sparse (n, n) matrix, or a `Mass` (returned as is).
+
+    Returns
+    -------
+    Mass.
+    """
     return mass if isinstance(mass, Mass) else Mass(mass)

@@ -49,14 +49,35 @@ CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE  # as for a cached exact solve (basis.
 
 
 def solve_bytes(n: int, faces: int, k: int, count: int, laplacian: str = "cotan") -> float:
-    """Bytes a reduced solve of k harmonics with `count` samples on n vertices holds at most."""
+    """Bytes a reduced solve holds at most (`limits.check_memory` plans with it).
+
+    Parameters
+    ----------
+    n, faces : vertices and triangles of the mesh.
+    k : harmonics.
+    count : samples m.
+    laplacian : "cotan" or "robust".
+
+    Returns
+    -------
+    float, bytes.
+    """
     return FIXED_BYTES + BYTES_PER_VERTEX[laplacian] * n + BYTES_PER_FACE * faces + \
         BYTES_PER_COARSE_VALUE * count * k
 
 
 def sample_count(n: int, k: int) -> int:
-    """The default number of samples m for k harmonics of n vertices: SAMPLES_PER_HARMONIC·k,
-    at least MIN_SAMPLES, at most n."""
+    """The default number of samples m: SAMPLES_PER_HARMONIC·k, at least MIN_SAMPLES, at most n.
+
+    Parameters
+    ----------
+    n : vertices.
+    k : harmonics.
+
+    Returns
+    -------
+    int, m.
+    """
     return int(min(n, max(MIN_SAMPLES, SAMPLES_PER_HARMONIC * k)))
 
 
@@ -64,6 +85,8 @@ def sample_count(n: int, k: int) -> int:
 class ReducedHarmonics:
     """U = P U_r without forming it: the samples, P and the coarse eigenvectors.
 
+    Parameters
+    ----------
     samples : (m,) vertex index of each sample.
     interpolation : P (n × m).
     coarse : (m, k) U_r, with U_rᵀ M_r U_r = I.
@@ -76,18 +99,46 @@ class ReducedHarmonics:
 
     @property
     def count(self) -> int:
+        """Samples m."""
         return len(self.samples)
 
     def lift(self, values: np.ndarray) -> np.ndarray:
-        """U · values = P (U_r · values): (k,) or (k, c) → (n,) or (n, c)."""
+        """U · values = P (U_r · values).
+
+        Parameters
+        ----------
+        values : (k,) or (k, c).
+
+        Returns
+        -------
+        (n,) or (n, c).
+        """
         return self.interpolation.lift(self.coarse @ values)
 
     def columns(self, targets) -> np.ndarray:
-        """U[:, targets] (n, t), formed for these harmonics only."""
+        """U[:, targets], formed for these harmonics only.
+
+        Parameters
+        ----------
+        targets : (t,) harmonic indices.
+
+        Returns
+        -------
+        (n, t).
+        """
         return self.interpolation.lift(self.coarse[:, np.asarray(targets, dtype=np.int64)])
 
     def gram(self, targets) -> np.ndarray:
-        """U[:, t]ᵀ U[:, t] = U_r[:, t]ᵀ (PᵀP) U_r[:, t] (t, t), without forming U."""
+        """U[:, t]ᵀ U[:, t] = U_r[:, t]ᵀ (PᵀP) U_r[:, t], without forming U (PᵀP built once).
+
+        Parameters
+        ----------
+        targets : (t,) harmonic indices.
+
+        Returns
+        -------
+        (t, t).
+        """
         if self._overlap is None:  # built once: the gallery asks for many blocks
             matrix = self.interpolation.matrix()
             self._overlap = (matrix.T @ matrix).tocsr()
@@ -95,12 +146,32 @@ class ReducedHarmonics:
         return coarse.T @ (self._overlap @ coarse)
 
     def transpose_lift(self, fine: np.ndarray) -> np.ndarray:
-        """Uᵀ · fine = U_rᵀ (Pᵀ fine): (n, c) → (k, c)."""
+        """Uᵀ · fine = U_rᵀ (Pᵀ fine).
+
+        Parameters
+        ----------
+        fine : (n, c) values at the vertices.
+
+        Returns
+        -------
+        (k, c).
+        """
         return self.coarse.T @ (self.interpolation.matrix().T @ fine)
 
 
 def restricted(stiffness, mass: np.ndarray, matrix: sp.csr_matrix):
-    """(L_r, M_r) = (PᵀLP, PᵀMP), sparse (m, m) CSC, exactly symmetric."""
+    """The operators restricted to span P.
+
+    Parameters
+    ----------
+    stiffness : L (n, n) sparse.
+    mass : (n,) vertex areas.
+    matrix : P (n, m) sparse.
+
+    Returns
+    -------
+    (L_r, M_r) = (PᵀLP, PᵀMP), sparse (m, m) CSC, exactly symmetric.
+    """
     transpose = matrix.T.tocsr()
     stiffness_r = (transpose @ (stiffness @ matrix)).tocsc()
     mass_r = (transpose @ sp.diags(mass) @ matrix).tocsc()
@@ -142,13 +213,31 @@ def reduced_harmonics(stiffness, mass: np.ndarray, vertices: np.ndarray, faces: 
 
 
 def reduced_key(exact_key: str, count: int) -> str:
-    """The cache key of a reduced solve: the exact solve's key (geometry, k, Laplacian) with
-    the construction, its version and the sample count."""
+    """The cache key of a reduced solve.
+
+    Parameters
+    ----------
+    exact_key : the exact solve's key (`basis.basis_key`: geometry, k, Laplacian).
+    count : samples m.
+
+    Returns
+    -------
+    str: the exact key with the construction, its version and the sample count.
+    """
     return f"{exact_key} construction=reduced-maxent version={REDUCED_VERSION} samples={count}"
 
 
 def reduced_arrays(reduced: ReducedHarmonics) -> dict[str, np.ndarray]:
-    """The arrays that store a reduced basis (REDUCED_KEYS)."""
+    """The arrays that store a reduced basis.
+
+    Parameters
+    ----------
+    reduced : the `ReducedHarmonics`.
+
+    Returns
+    -------
+    {name: array} of REDUCED_KEYS.
+    """
     return {"samples": reduced.samples,
             "interpolation_indices": reduced.interpolation.indices,
             "interpolation_weights": reduced.interpolation.weights,
@@ -156,7 +245,16 @@ def reduced_arrays(reduced: ReducedHarmonics) -> dict[str, np.ndarray]:
 
 
 def reduced_from_arrays(arrays: dict) -> ReducedHarmonics:
-    """A `ReducedHarmonics` from checked arrays (`reduced_arrays`, `check_reduced`)."""
+    """A `ReducedHarmonics` from stored arrays.
+
+    Parameters
+    ----------
+    arrays : REDUCED_KEYS as `reduced_arrays` writes them, checked (`check_reduced`).
+
+    Returns
+    -------
+    ReducedHarmonics.
+    """
     samples = np.asarray(arrays["samples"], dtype=np.int64)
     interpolation = Interpolation(np.asarray(arrays["interpolation_indices"], dtype=np.int32),
                                   np.asarray(arrays["interpolation_weights"], dtype=np.float64),
@@ -166,7 +264,18 @@ def reduced_from_arrays(arrays: dict) -> ReducedHarmonics:
 
 
 def check_reduced(arrays: dict, n: int, k: int) -> str | None:
-    """What is wrong with stored reduced arrays for n vertices and k harmonics, or None."""
+    """What is wrong with stored reduced arrays.
+
+    Parameters
+    ----------
+    arrays : {name: array} holding REDUCED_KEYS.
+    n : vertices.
+    k : harmonics.
+
+    Returns
+    -------
+    str, or None when they are a reduced basis of n vertices and k harmonics.
+    """
     samples, indices, weights, coarse = (arrays.get(name) for name in REDUCED_KEYS)
     if any(not isinstance(array, np.ndarray) for array in (samples, indices, weights, coarse)):
         return "missing arrays"
@@ -188,7 +297,18 @@ def check_reduced(arrays: dict, n: int, k: int) -> str | None:
 def reduced_pairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:
     """Whether a cache entry holds k reduced eigenpairs for these L, M: the same mass, a valid
     P, ascending eigenvalues, and the coarse pairs solving L_r c = λ M_r c with U_rᵀ M_r U_r = I
-    (P as stored, L_r and M_r restricted anew). O(nnz(L) + nnz(L_r)·k)."""
+    (P as stored, L_r and M_r restricted anew). O(nnz(L) + nnz(L_r)·k).
+
+    Parameters
+    ----------
+    stiffness, mass : L and the vertex areas of the mesh, built anew.
+    k : harmonics.
+    arrays : the entry: eigenvalues, mass and REDUCED_KEYS.
+
+    Returns
+    -------
+    bool.
+    """
     eigenvalues, stored_mass = arrays.get("eigenvalues"), arrays.get("mass")
     n = len(mass)
     if not (isinstance(eigenvalues, np.ndarray) and isinstance(stored_mass, np.ndarray)) or \

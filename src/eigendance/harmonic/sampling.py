@@ -24,7 +24,16 @@ ATTEMPTS = 8
 
 def operator_graph(stiffness, vertices: np.ndarray) -> sp.csr_matrix:
     """The graph of L's off-diagonal non-zeros (mesh edges, and any coupling the operator
-    adds), each edge weighted by its Euclidean length; (n, n) symmetric CSR.
+    adds), each edge weighted by its Euclidean length.
+
+    Parameters
+    ----------
+    stiffness : L (n, n) sparse.
+    vertices : (n, 3) positions.
+
+    Returns
+    -------
+    (n, n) symmetric CSR of edge lengths.
 
     Example
     -------
@@ -46,7 +55,16 @@ def operator_graph(stiffness, vertices: np.ndarray) -> sp.csr_matrix:
 
 
 def component_labels(graph: sp.csr_matrix) -> np.ndarray:
-    """(n,) the connected component of each vertex in `graph`."""
+    """The connected component of each vertex.
+
+    Parameters
+    ----------
+    graph : (n, n) sparse.
+
+    Returns
+    -------
+    (n,) int labels.
+    """
     return connected_components(graph, directed=False)[1]
 
 
@@ -97,9 +115,18 @@ def _cell_keys(vertices, lower, cell, components):
 
 
 def nearest_samples(graph: sp.csr_matrix, samples: np.ndarray) -> np.ndarray:
-    """(n,) the slot (index into `samples`) of each vertex's nearest sample along the graph.
+    """Each vertex's nearest sample along the graph (multi-source Dijkstra).
 
     Every vertex must share a component with a sample (`spread_samples` makes sure of it).
+
+    Parameters
+    ----------
+    graph : (n, n) edge lengths (`operator_graph`).
+    samples : (m,) vertex indices.
+
+    Returns
+    -------
+    (n,) int64, the slot (index into `samples`) of each vertex's nearest sample.
     """
     _, _, sources = dijkstra(graph, directed=False, indices=samples, min_only=True,
                              return_predecessors=True)
