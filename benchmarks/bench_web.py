@@ -9,15 +9,18 @@ frame:
   - deformation: the positions of every tile (GPU positions pass, or the JS CPU path), waited
     for on the GPU;
   - drawing: the surfaces of every tile (studio backdrop, shadow, model), waited for;
-  - the live page: frames it really draws per second while the music plays (counted from the
-    frames drawn over a few seconds of wall time), our code's share of each frame (issuing the
-    deformation and drawing, not waiting for the GPU), and the rest — compositing and
-    presenting the canvas, waiting for the rasteriser, the browser's other work;
+  - the live page at full resolution (`?scale=1`): frames it really draws per second while the
+    music plays (counted from the frames drawn over a few seconds of wall time), our code's
+    share of each frame (issuing the deformation and drawing, not waiting for the GPU), and the
+    rest — compositing and presenting the canvas, waiting for the rasteriser, the browser's
+    other work;
+  - the live page as a person gets it, with dynamic resolution (docs/design.md#rendering):
+    after it settles, the frames drawn per second and the resolution reached;
 beside the numpy reference for the same deformation (`HarmonicBasis.filter_positions` of S
 filters, one matrix product), measured in the same run. Not run by CI.
 
     python benchmarks/bench_web.py [--case demo|bunny|0.2M|0.5M|1M|all] [-S 8] [--frames 5]
-        [--seconds 4]
+                                   [--seconds 4] [--settle 14]
 """
 
 from __future__ import annotations
@@ -56,10 +59,13 @@ def main() -> None:
     parser.add_argument("-S", "--size", type=int, default=8)
     parser.add_argument("--frames", type=int, default=5, help="frames per timed part")
     parser.add_argument("--seconds", type=float, default=4.0, help="of live playback")
+    parser.add_argument("--settle", type=float, default=14.0,
+                        help="seconds of playback before the dynamic resolution is measured")
     parser.add_argument("--port", type=int, default=8791)
     args = parser.parse_args()
     cat, song = demo_paths()
-    print(f"S = {args.size} tiles, headless Chromium without a GPU, viewport 1280x800")
+    print(f"S = {args.size} tiles, headless Chromium without a GPU, viewport 1280x800; load "
+          f"{', '.join(f'{x:.1f}' for x in os.getloadavg())}")
     for name in (CASES if args.case == "all" else [args.case]):
         mesh, k, construction = CASES[name]
         if mesh is not None and not os.path.exists(mesh):
@@ -113,10 +119,14 @@ def run_case(name: str, mesh: str, k: int, construction: str, song: str, args) -
         print(f"  {path.upper()} path: deformation {results[path]['deformation']:8.1f} ms "
               f"({results[path]['deformation'] / numpy_ms:5.1f}× numpy), drawing "
               f"{results[path]['drawing']:8.1f} ms{mark}")
-    print(f"  live page ({chosen.upper()}): {results['fps']:.1f} frames/s drawn = "
-          f"{interval:.0f} ms a frame: our code {results['ours']:.0f} ms, compositing and the rest "
-          f"{interval - results['ours']:.0f} ms (the page says {results['readout'] or 'nothing'}"
-          f"{' and offers fewer tiles' if results['offer'] else ''})")
+    print(f"  live page at full resolution ({chosen.upper()}): {results['fps']:.1f} frames/s "
+          f"drawn = {interval:.0f} ms a frame: our code {results['ours']:.0f} ms, compositing "
+          f"and the rest {interval - results['ours']:.0f} ms")
+    dynamic = results["dynamic"]
+    print(f"  live page with dynamic resolution: {dynamic['fps']:.1f} frames/s drawn at "
+          f"{100 * dynamic['scale']:.0f}% resolution ({dynamic['fps'] / results['fps']:.1f}× "
+          f"full resolution; the page says \"{dynamic['readout']}\""
+          f"{' and offers fewer tiles' if dynamic['offer'] else ''})")
 
 
 def browser_timings(url: str, args) -> dict:
@@ -125,7 +135,7 @@ def browser_timings(url: str, args) -> dict:
                                              args=CHROMIUM_ARGS)
         page = browser.new_page(viewport={"width": 1280, "height": 800})
         start = time.perf_counter()
-        page.goto(f"{url}?test&size={args.size}")
+        page.goto(f"{url}?test&size={args.size}&scale=1")
         page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=600_000)
         page.evaluate("window.eigendance.ready")
         out = {"load": time.perf_counter() - start,
@@ -140,17 +150,31 @@ def browser_timings(url: str, args) -> dict:
             page.evaluate(f"window.eigendance.setPath('{path}')")
             out[path] = page.evaluate(f"window.eigendance.profileFrames({args.frames})")
         page.evaluate(f"window.eigendance.setPath('{out['path']}')")
-        page.click("#play")
-        page.wait_for_timeout(1000)  # past the first frames
-        first = page.evaluate("[performance.now(), window.eigendance.info().frames]")
-        page.wait_for_timeout(int(1000 * args.seconds))
-        last = page.evaluate("[performance.now(), window.eigendance.info().frames]")
-        out["fps"] = 1000 * (last[1] - first[1]) / (last[0] - first[0])
-        out["ours"] = page.evaluate("window.eigendance.info().frameMs")
-        out["readout"] = page.inner_text("#fps")
-        out["offer"] = page.is_visible("#notice")
+        out.update(live_rate(page, 1.0, args.seconds))
+        page.close()
+        page = browser.new_page(viewport={"width": 1280, "height": 800})
+        page.goto(f"{url}?test&size={args.size}&path={out['path']}")
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=600_000)
+        page.evaluate("window.eigendance.ready")
+        out["dynamic"] = live_rate(page, args.settle, args.seconds)
+        out["dynamic"]["scale"] = page.evaluate("window.eigendance.resolution().scale")
         browser.close()
     return out
+
+
+def live_rate(page, settle: float, seconds: float) -> dict:
+    """Play: after `settle` s, the frames drawn per second over `seconds` s of wall time (the
+    song restarts at its end), our code's time per frame, and what the page says."""
+    page.click("#play")
+    page.wait_for_timeout(int(1000 * settle))
+    first = page.evaluate("[performance.now(), window.eigendance.info().frames]")
+    page.wait_for_timeout(int(1000 * seconds))
+    last = page.evaluate("[performance.now(), window.eigendance.info().frames]")
+    result = {"fps": 1000 * (last[1] - first[1]) / (last[0] - first[0]),
+              "ours": page.evaluate("window.eigendance.info().frameMs"),
+              "readout": page.inner_text("#fps"), "offer": page.is_visible("#notice")}
+    page.click("#play")
+    return result
 
 
 if __name__ == "__main__":

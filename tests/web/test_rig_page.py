@@ -94,13 +94,14 @@ def test_gpu_modal_skinning_equals_python(page, rig_ids, song, name):
 
 def test_every_mode_tile_moves_and_shows_its_frequency(page, rig_ids):
     """One tile per mode (a page of 16 for the hand's 72, then 'more modes'), each labelled with
-    its time-scaled frequency, and every tile's pixels change over playback."""
+    its frequency as played (natural × time scale, the scale said), and every tile's pixels
+    change over playback."""
     info = open_rig(page, rig_ids, "hand")
     assert info["pages"] == math.ceil(info["k"] / 16)
     scale = page.evaluate("window.eigendance.rig.playerMapping()")["modes"]["time_scale"]
     labels = page.evaluate("window.eigendance.rig.labels()")
-    assert labels == [f"mode {m + 1} · {info['frequencies'][m] * scale:.2f} Hz"
-                      for m in range(16)]
+    assert labels == [f"mode {m + 1} · {info['frequencies'][m] * scale:.2f} Hz "
+                      f"(×{scale:.2f} time scale)" for m in range(16)]
     page.evaluate(f"window.eigendance.rig.page({info['pages'] - 1})")
     last = page.evaluate("window.eigendance.rig.info()")
     assert last["modes"] == list(range(16 * (info["pages"] - 1), info["k"]))

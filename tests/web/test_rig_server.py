@@ -38,7 +38,7 @@ ARRAYS = {  # name: (dtype, shape with n vertices, m faces, b bodies, j joints, 
     "body_centers": ("float32", "b,3"), "body_rotations": ("float32", "b,3,3"),
     "body_ends": ("float32", "b,2,3"), "body_radii": ("float32", "b"),
     "body_twists": ("float32", "k,b,6"), "joint_bodies": ("uint32", "j,2"),
-    "joint_positions": ("float32", "j,3")}
+    "joint_positions": ("float32", "j,3"), "joint_bend": ("float32", "j,k")}
 
 
 @pytest.fixture(scope="module")
@@ -123,7 +123,7 @@ def test_the_rig_bundle_holds_the_contract_of_web_md(client, name):
                                           for s in shape.split(",")), key
     np.testing.assert_allclose(arrays["frequencies"], rig.model.frequencies, rtol=1e-6)
     assert meta["palette"] == rig.palette.to_settings().to_json() and meta["offset"] == 0.0
-    assert meta["revision"] == 0 and meta["kind"] == "rig"
+    assert meta["revision"] == 0 and meta["kind"] == "rig" and meta["edited"] is False
 
 
 def test_gpu_modal_skinning_from_the_packed_texels_equals_python(client):
@@ -213,6 +213,7 @@ def test_pose_edits_and_reset(client):
     np.testing.assert_allclose(meta["frequencies"], ModalModel.from_skeleton(bent).frequencies,
                                rtol=1e-9)
     assert meta["revision"] == 1 and meta["frequencies"] != before["frequencies"]
+    assert meta["edited"] and client.get(f"/api/rigs/{chain}").json()["edited"]
     saved = client.get(f"/api/rigs/{chain}/skeleton.json").json()
     np.testing.assert_allclose(ModalModel.from_skeleton(Skeleton.from_dict(saved)).frequencies,
                                meta["frequencies"], rtol=1e-9)
@@ -220,7 +221,7 @@ def test_pose_edits_and_reset(client):
                                                                    "rotation": [0.1, 0, 0]}))
     assert meta["revision"] == 2
     meta, arrays = bundle(client.post(f"/api/rigs/{chain}/reset"))
-    assert meta["revision"] == 3
+    assert meta["revision"] == 3 and not meta["edited"]  # a reset is not an edit
     np.testing.assert_allclose(meta["frequencies"], before["frequencies"], rtol=1e-12)
     np.testing.assert_allclose(arrays["vertices"], sample_rig("chain").vertices, atol=1e-6)
     loop = rig_id(client, "loop8")

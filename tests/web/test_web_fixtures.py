@@ -1,10 +1,14 @@
-"""The committed Vitest fixtures (web/test/fixtures) still match the Python reference."""
+"""The committed Vitest fixtures (web/test/fixtures) still match the Python reference: the
+numbers (JSON) and the binary bundles (.bin), regenerated and compared."""
 
 import json
 import os
 
 import numpy as np
+import pytest
 from web_fixture_writer import FOLDER, build
+
+from eigendance.server.binary import unpack
 
 
 def test_committed_fixtures_match_the_python_reference():
@@ -30,3 +34,61 @@ def test_committed_rig_fixtures_match_the_python_reference():
         assert old["mapping"]["modes"] == new["mapping"]["modes"]
         for key in ("coefficients", "positions", "rotations", "centres"):
             np.testing.assert_allclose(old[key], new[key], atol=1e-6, err_msg=key)
+
+
+# Axes along which a regenerated bundle may differ by sign: an eigenvector (a harmonic, a
+# vibration mode) is defined up to its sign, and the solver's choice follows round-off.
+SIGNED = {"harmonics": -1, "coefficients": 0, "tau": None, "rho": None, "body_twists": 0}
+
+
+def same_numbers(old, new, where: str) -> None:
+    """Meta documents equal, floats to round-off (1e-9 relative)."""
+    if isinstance(old, dict):
+        assert isinstance(new, dict) and set(old) == set(new), f"{where}: keys {old} {new}"
+        for key in old:
+            same_numbers(old[key], new[key], f"{where}.{key}")
+    elif isinstance(old, list):
+        assert isinstance(new, list) and len(old) == len(new), where
+        for index, (a, b) in enumerate(zip(old, new, strict=True)):
+            same_numbers(a, b, f"{where}[{index}]")
+    elif isinstance(old, float):
+        assert new == pytest.approx(old, rel=1e-9, abs=1e-12), where
+    else:
+        assert old == new, where
+
+
+def aligned(old: np.ndarray, new: np.ndarray, name: str) -> np.ndarray:
+    """`new` with each eigenvector's sign turned to match `old` (SIGNED)."""
+    if name not in SIGNED:
+        return new
+    if SIGNED[name] is None:  # (n, G, 3, 4): mode 4g + j is [:, g, :, j]
+        signs = np.sign(np.einsum("igdj,igdj->gj", old, new))
+        return new * np.where(signs == 0, 1, signs)[None, :, None, :]
+    axis = SIGNED[name] % new.ndim
+    moved_old, moved_new = np.moveaxis(old, axis, 0), np.moveaxis(new, axis, 0)
+    signs = np.sign(np.sum(moved_old.reshape(len(moved_old), -1)
+                           * moved_new.reshape(len(moved_new), -1), axis=1))
+    shape = [1] * new.ndim
+    shape[axis] = -1
+    return new * np.where(signs == 0, 1, signs).reshape(shape)
+
+
+@pytest.mark.parametrize("name", ["basis.bin", "basis16.bin", "spectrogram.bin", "rig.bin"])
+def test_committed_bundles_are_what_python_writes_today(name):
+    """The binary bundles the Vitest tests parse, regenerated: the same arrays (names, shapes,
+    dtypes; values to float32 round-off, eigenvectors up to their sign) and the same meta. A
+    change of the bundle format or of the Python reference fails here until `python
+    tests/web/web_fixture_writer.py` rewrites them."""
+    fresh_meta, fresh = unpack(build()[name])
+    with open(os.path.join(FOLDER, name), "rb") as file:
+        meta, arrays = unpack(file.read())
+    same_numbers(meta, fresh_meta, name)
+    assert sorted(arrays) == sorted(fresh), f"{name}: arrays {sorted(arrays)} ≠ {sorted(fresh)}"
+    half = name == "basis16.bin"
+    for key, old in arrays.items():
+        new = fresh[key]
+        assert (old.dtype, old.shape) == (new.dtype, new.shape), f"{name}: {key}"
+        new = aligned(old.astype(np.float64), new.astype(np.float64), key)
+        scale = max(1.0, float(np.abs(old).max(initial=0.0)))
+        np.testing.assert_allclose(old, new, rtol=0, atol=(2e-3 if half else 1e-6) * scale,
+                                   err_msg=f"{name}: {key}")

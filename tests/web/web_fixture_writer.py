@@ -1,8 +1,10 @@
 """Reference numbers for the browser's unit tests (web/test), written by the Python reference.
 
 `python tests/web/web_fixture_writer.py` rewrites web/test/fixtures/; test_web_fixtures.py checks
-that the committed files equal what the current Python code writes, so the Vitest tests always
-compare the TypeScript filter and bundle parser with today's reference implementation.
+that the committed files (the JSON numbers and the binary bundles) equal what the current Python
+code writes, so the Vitest tests always compare the TypeScript ports — the filter, the bundle
+parser, rig motion, the palette's default rule, the gallery's grid — with today's reference
+implementation.
 """
 
 from __future__ import annotations
@@ -14,9 +16,11 @@ import sys
 import numpy as np
 import trimesh
 
+from eigendance.export.renderer import gallery_columns
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
 from eigendance.modal.motion import body_poses, default_mapping, rig_coefficients
+from eigendance.modal.palette import resolve_palette
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import open_chain
 from eigendance.music.demo_music import demo_track
@@ -51,7 +55,9 @@ def build():
                  "eigenvectors": basis.eigenvectors.ravel().tolist(),
                  "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
     rig_files = rig_reference(spectrogram, values)
+    grid = {"columns": {str(count): gallery_columns(count) for count in range(1, 17)}}
     return {**rig_files, "reference.json": json.dumps(reference, indent=0).encode(),
+            "grid.json": json.dumps(grid, indent=0).encode(),
             "basis.bin": basis_bundle(basis, "ellipsoid"),
             "basis16.bin": basis_bundle(basis, "ellipsoid", half=True),
             "spectrogram.bin": spectrogram_bundle(spectrogram, "demo-2s")}
@@ -78,7 +84,28 @@ def rig_reference(spectrogram, values):
                       "centres": centres.reshape(len(TIMES), -1).tolist()})
     reference = {"times": TIMES, "values": values.tolist(), "cases": cases}
     return {"rig.json": json.dumps(reference, indent=0).encode(),
+            "palette.json": json.dumps(palette_reference(rig), indent=0).encode(),
             "rig.bin": rig_bundle(rig, "chain3")}
+
+
+# Palettes with fields missing: the default rule fills them (`resolve_palette`); the 40° cap
+# binds for every mode of the chain, the time scale follows the selected modes.
+PALETTES = [None, {"selected": [1, 4]}, {"selected": [0, 1, 2, 3, 4, 5]}, {"selected": [5]},
+            {"selected": [3, 0]}, {"selected": [3, 0], "phases": [0.5, 1.5]},
+            {"selected": [2, 4], "amplitudes": [0.1, 0.2]}, {"time_scale": 0.7},
+            {"selected": [4, 1], "time_scale": 2.0}]
+
+
+def palette_reference(rig):
+    """Each partial palette of PALETTES and the palette Python resolves for the rig."""
+    cases = []
+    for fields in PALETTES:
+        settings = None if fields is None else ModeSettings.from_json(
+            {"selected": None, "amplitudes": None, "phases": None, "time_scale": None,
+             **fields}, "palette")
+        palette = resolve_palette(rig.model, settings)
+        cases.append({"modes": fields, "resolved": palette.to_settings().to_json()})
+    return {"cases": cases}
 
 
 def write(folder=FOLDER):

@@ -8,8 +8,11 @@ export interface Job { id: string; kind: string; state: string; done: number; to
 export interface MeshInfo { id: string; name: string; k: number; vertices: number; ready: boolean;
   job: Job | null; }
 export interface SongInfo { id: string; name: string; duration: number; }
-export interface Library { meshes: MeshInfo[]; songs: SongInfo[]; mappings: { id: string;
-  name: string }[]; rigs?: { id: string; name: string; ready: boolean; modes?: number }[]; }
+/** A mapping of the library: `origin` "file" (given to `serve`: opens in the player at start)
+ * or "upload" (added in the page). */
+export interface MappingInfo { id: string; name: string; origin?: "file" | "upload"; }
+export interface Library { meshes: MeshInfo[]; songs: SongInfo[]; mappings: MappingInfo[];
+  rigs?: { id: string; name: string; ready: boolean; modes?: number; revision?: number }[]; }
 
 /** The response, or an Error with the server's one-line message. */
 export async function checked(response: Response): Promise<Response> {

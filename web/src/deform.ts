@@ -6,6 +6,7 @@
 import * as THREE from "three";
 import { harmonicRows } from "./bundle";
 import type { Basis } from "./bundle";
+import { simplifiedFaces } from "./detail";
 import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
 import type { HarmonicsSource } from "./positions-pass";
 import { GATHER, GatherPass, gatherAttributes, reducedHarmonic, sampleGeometry } from "./reduced";
@@ -38,6 +39,8 @@ export class Deformer implements HarmonicsSource {
   /** a reduced basis: what the positions pass runs over (the samples), and the read-back gather */
   private readonly samples: HarmonicsSource | null = null;
   private gather: GatherPass | null = null;
+  /** the triangles of each detail level drawn so far (detail.ts); 1 is the mesh's own */
+  private readonly detailIndex = new Map<number, THREE.BufferAttribute>();
   useCPU = false;
 
   constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer, maxBatch = 8) {
@@ -59,6 +62,7 @@ export class Deformer implements HarmonicsSource {
     this.geometry = new THREE.BufferGeometry();
     this.geometry.setAttribute("position", new THREE.BufferAttribute(basis.vertices, 3));
     this.geometry.setIndex(new THREE.BufferAttribute(basis.faces, 1));
+    this.detailIndex.set(1, this.geometry.index!);
     this.geometry.computeVertexNormals();
     const ids = new Float32Array(basis.n).map((_, i) => i);
     this.geometry.setAttribute("vid", new THREE.BufferAttribute(ids, 1));
@@ -129,6 +133,20 @@ export class Deformer implements HarmonicsSource {
       (attribute.array as Float32Array).set(cpuPositions);
       attribute.needsUpdate = true;
     }
+  }
+
+  /** Draw about `fraction` of the triangles (the gallery's level of detail, detail.ts) over
+   * the same vertices; all of them until the simplifier is loaded. Returns the fraction drawn. */
+  useDetail(fraction: number): number {
+    let index = this.detailIndex.get(fraction);
+    if (!index) {
+      const faces = simplifiedFaces(this.basis.faces, this.basis.vertices, fraction);
+      if (!faces) return this.useDetail(1);
+      index = new THREE.BufferAttribute(faces, 1);
+      this.detailIndex.set(fraction, index);
+    }
+    if (this.geometry.index !== index) this.geometry.setIndex(index);
+    return fraction;
   }
 
   /** GPU pass 1: deformed positions of every tile into float render targets, `batch` tiles per

@@ -3,6 +3,7 @@
 // (the harmonics it drives) and its two plots.
 import * as api from "./api";
 import { $, saveJSON } from "./dom";
+import { gridColumns } from "./grid";
 import { drivenHarmonics, settingsOf } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { History } from "./history";
@@ -163,14 +164,14 @@ export class GalleryView {
       : "breed selected";
   }
 
-  /** One tile per mapping, in a grid about 1.5 times wider than tall (2 columns on a narrow
-   * screen: style.css). */
+  /** One tile per mapping, in the gallery's grid (grid.ts; 2 columns on a narrow screen:
+   * style.css). */
   private buildTiles(): void {
     const container = $("tiles");
     container.innerHTML = "";
     const mappings = this.mappings();
     container.style.setProperty("--columns",
-      String(Math.max(1, Math.ceil(Math.sqrt(mappings.length * 1.5)))));
+      String(gridColumns(mappings.length)));
     this.tiles = mappings.map((mapping, index) => {
       const tile = this.makeTile(mapping, index);
       container.appendChild(tile.element);

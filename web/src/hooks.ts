@@ -7,7 +7,7 @@ import { bodyMatrices } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { toFileUnits } from "./rig-bundle";
 import type { Skinning } from "./rig-player-view";
-import type { DeformationPath, View } from "./viewer";
+import type { DeformationPath, View, Viewer } from "./viewer";
 
 export type Hooks = ReturnType<typeof makeHooks>;
 
@@ -52,16 +52,16 @@ function makeHooks(app: App, ready: Promise<void>) {
       return Array.from(deformCPU(motion.basis!, motion.weights(prepared(tile), t)));
     },
     /** Downsampled RGB pixels of each tile's view, read from the canvas. */
-    tilePixels: (step = 4): number[][] => viewer.pixelsOf(gallery.views(), step),
+    tilePixels: (step = 4): number[][] => pixelsOf(viewer, gallery.views(), step),
     /** The same for the player's view. */
-    playerPixels: (step = 4): number[] => viewer.pixelsOf([document.getElementById(
+    playerPixels: (step = 4): number[] => pixelsOf(viewer, [document.getElementById(
       "player-area")!], step)[0],
     mappings: () => gallery.mappings(),
     /** The player's mapping as "save mapping" writes it. */
     playerMapping: () => player.saved(),
     select: (index: number) => gallery.toggle(index),
     breed: async (seed?: number): Promise<void> => {
-      await app.guard("Breeding failed", () => gallery.breed(seed));
+      await app.messages.guard("Breeding failed", () => gallery.breed(seed));
     },
     back: () => gallery.step(-1),
     /** Show generation `index` (in creation order). */
@@ -70,7 +70,7 @@ function makeHooks(app: App, ready: Promise<void>) {
     generations: () => gallery.history.entries(),
     setView: (view: View) => app.setView(view),
     open: (index: number) => app.open(gallery.mappings()[index], `tile ${index + 1}`),
-    upload: (file: File) => app.handleFiles([file]),
+    upload: (file: File) => app.files.handle([file]),
     info: () => ({
       meshId: app.library.meshId, songId: app.library.songId, n: motion.basis?.n,
       k: motion.basis?.k, path: viewer.path, batch: viewer.deformer?.batch,
@@ -79,10 +79,17 @@ function makeHooks(app: App, ready: Promise<void>) {
       frames: viewer.playedFrames,
       duration: motion.duration, selected: gallery.selection, playing: app.transport.playing,
       time: app.transport.now(), volume: app.transport.volume, muted: app.transport.muted,
-      error: document.getElementById("error")!.hidden ? null
-        : document.getElementById("error-text")!.textContent,
+      error: app.messages.shownError(), scale: viewer.resolution.scale,
+      status: document.getElementById("status")!.textContent,
+      recording: app.recorder.size,
     }),
     setPath: (path: DeformationPath) => viewer.setPath(path),
+    /** The render scale (dynamic resolution) of the harmonics' viewer. */
+    resolution: () => ({ scale: viewer.resolution.scale, atFloor: viewer.resolution.atFloor,
+      detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
+      said: viewer.resolution.describe(), pixelRatio: viewer.renderer.getPixelRatio() }),
+    /** The export panel's request for the window in its fields (what `export` would send). */
+    exportRequest: () => app.exporter.request(),
     /** Rigs (docs/web.md#rigs-in-the-page); positions are in the rig file's units. */
     rig: rigHooks(app),
     /** Time the deformation alone of every tile (ms per frame), GPU or CPU path. */
@@ -162,8 +169,8 @@ function rigHooks(app: App) {
       figure.pose(bodyMatrices(rigs.rig!, rigs.motion.coefficients(prepared("player"), t)));
       return Array.from(figure.lbsPositions());
     },
-    tilePixels: (step = 4): number[][] => rigs.viewer.pixelsOf(rigs.gallery.views(), step),
-    playerPixels: (step = 4): number[] => rigs.viewer.pixelsOf([document.getElementById(
+    tilePixels: (step = 4): number[][] => pixelsOf(rigs.viewer, rigs.gallery.views(), step),
+    playerPixels: (step = 4): number[] => pixelsOf(rigs.viewer, [document.getElementById(
       "rig-player-area")!], step)[0],
     labels: () => rigs.gallery.labels(),
     setView: (view: View) => app.setView(view),
@@ -177,7 +184,7 @@ function rigHooks(app: App) {
     },
     select: (index: number) => rigs.gallery.toggle(index),
     combine: () => rigs.combine(rigs.gallery.selection),
-    breed: (seed?: number) => app.guard("Breeding failed", () => rigs.gallery.breed(seed)),
+    breed: (seed?: number) => app.messages.guard("Breeding failed", () => rigs.gallery.breed(seed)),
     openDance: (index: number) => {
       rigs.player.show(rigs.gallery.dances()[index], `dance ${index + 1}`);
       app.setView("player");
@@ -206,10 +213,10 @@ function rigHooks(app: App) {
     },
     /** Turn joint `joint` by a rotation vector (radians), as the pose sliders do. */
     pose: (joint: number, rotation: [number, number, number]) =>
-      app.guard("Could not turn the joint", () => rigs.poseJoint(joint, rotation)),
+      app.messages.guard("Could not turn the joint", () => rigs.poseJoint(joint, rotation)),
     stiffness: (joint: number, value: number | "auto") =>
-      app.guard("Could not set the stiffness", () => rigs.stiffness(joint, value)),
-    reset: () => app.guard("Could not reset the rig", () => rigs.reset()),
+      app.messages.guard("Could not set the stiffness", () => rigs.stiffness(joint, value)),
+    reset: () => app.messages.guard("Could not reset the rig", () => rigs.reset()),
     playerMapping: () => rigs.player.saved(),
     info: () => ({
       id: rigs.rig?.id, name: rigs.rig?.name, n: rigs.rig?.n, k: rigs.rig?.k,
@@ -218,9 +225,8 @@ function rigHooks(app: App) {
       pages: rigs.gallery.pages, modes: rigs.gallery.modes, tiles: rigs.gallery.views().length,
       path: rigs.viewer.path, batch: rigs.viewer.deformer?.batch, fps: rigs.viewer.fps,
       frequencies: rigs.rig ? Array.from(rigs.rig.frequencies) : [],
-      generations: rigs.gallery.generations.length,
-      error: document.getElementById("error")!.hidden ? null
-        : document.getElementById("error-text")!.textContent,
+      generations: rigs.gallery.generations.length, error: app.messages.shownError(),
+      info: document.getElementById("rig-info")!.textContent,
     }),
     setPath: (path: DeformationPath) => rigs.viewer.setPath(path),
     /** Time one frame (modal skinning + drawing of every tile, or the player), ms. */
@@ -231,4 +237,26 @@ function rigHooks(app: App) {
       return { frame: (performance.now() - start) / count };
     },
   };
+}
+
+/** Downsampled RGB pixels of each element's area of the viewer's canvas, as drawn. */
+function pixelsOf(viewer: Viewer, elements: HTMLElement[], step: number): number[][] {
+  const gl = viewer.renderer.getContext();
+  const height = viewer.renderer.domElement.height;
+  const ratio = viewer.renderer.getPixelRatio();
+  return elements.map((element) => {
+    const r = element.getBoundingClientRect();
+    const w = Math.floor(r.width * ratio), h = Math.floor(r.height * ratio);
+    const pixels = new Uint8Array(w * h * 4);
+    gl.readPixels(Math.floor(r.left * ratio), height - Math.floor(r.bottom * ratio), w, h,
+      gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    const out: number[] = [];
+    for (let y = 0; y < h; y += step) {
+      for (let x = 0; x < w; x += step) {
+        const i = 4 * (y * w + x);
+        out.push(pixels[i], pixels[i + 1], pixels[i + 2]);
+      }
+    }
+    return out;
+  });
 }

@@ -6,6 +6,7 @@ import { filterValues, prepare } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import type { Motion } from "./motion";
 import type { ModeSettings, Rig } from "./rig-bundle";
+import { paletteOf } from "./palette";
 import { normalising } from "./rig-bundle";
 
 /** A mode mapping prepared for one rig: the filter over its k′ selected modes (`Prepared`,
@@ -25,26 +26,7 @@ export interface RigPrepared extends Prepared {
   music: boolean;
 }
 
-/** A palette with every field set (the mapping's `modes` as the page writes it). */
-export function paletteOf(rig: Rig, modes: Partial<ModeSettings> | null | undefined):
-    ModeSettings {
-  const base = rig.palette!;
-  const selected = modes?.selected ?? base.selected!;
-  const sameSelection = selected.length === base.selected!.length
-    && selected.every((v, i) => v === base.selected![i]);
-  // Amplitudes of another selection than the default palette's: each mode alone (the tile's).
-  const amplitudes = modes?.amplitudes ?? (sameSelection ? base.amplitudes!
-    : selected.map((v) => rig.amplitudes[v]));
-  const phases = modes?.phases ?? selected.map((v) => rig.phases[v]);
-  const order = selected.map((_, i) => i).sort((a, b) => selected[a] - selected[b]);
-  for (const v of selected) {
-    if (!(v >= 0 && v < rig.k)) throw new Error(`the mapping selects mode ${v}; the rig has ${rig.k}`);
-  }
-  return { selected: order.map((i) => selected[i]), amplitudes: order.map((i) => amplitudes[i]),
-    phases: order.map((i) => phases[i]), time_scale: modes?.time_scale ?? base.time_scale };
-}
-
-/** A mode mapping made ready for `rig` (its palette completed from the bundle's). */
+/** A mode mapping made ready for `rig` (its palette completed by the default rule: palette.ts). */
 export function prepareRig(rig: Rig, mapping: Mapping, music = true): RigPrepared {
   const palette = paletteOf(rig, mapping.modes as Partial<ModeSettings> | null);
   const selected = Int32Array.from(palette.selected!);

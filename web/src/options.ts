@@ -29,6 +29,15 @@ export interface Options {
   path: "gpu" | "cpu" | null;
   /** `?batch=N`: tiles per GPU positions pass. */
   batch: number;
+  /** `?scale=S`: draw at this fixed render scale (0.1 … 1) instead of dynamic resolution. */
+  scale: number | null;
+}
+
+/** The render scale `?scale=` asks for, or null (dynamic resolution) when absent or not a
+ * number in [0.1, 1]. */
+export function fixedScale(raw: string | null): number | null {
+  const value = raw === null || raw.trim() === "" ? NaN : Number(raw);
+  return Number.isFinite(value) && value >= 0.1 && value <= 1 ? value : null;
 }
 
 export function readOptions(search: string): Options {
@@ -48,6 +57,7 @@ export function readOptions(search: string): Options {
     bare: params.has("bare"),
     path: path === "gpu" || path === "cpu" ? path : null,
     batch: Number(params.get("batch") ?? 8),
+    scale: fixedScale(params.get("scale")),
   };
 }
 

@@ -32,6 +32,8 @@ export interface Rig {
   id: string;
   name: string;
   revision: number;
+  /** its pose or stiffness differs from the rig as loaded (the server keeps edits) */
+  edited: boolean;
   /** vertices, faces, bodies, joints, vibration modes, texel groups ⌈k/4⌉ */
   n: number; m: number; b: number; j: number; k: number; G: number;
   /** the skin's bounding box: centre and diagonal (file units) */
@@ -60,6 +62,8 @@ export interface Rig {
   bodyTwists: Float32Array; // k*b*6
   jointBodies: Uint32Array; // j*2
   jointPositions: Float32Array; // j*3
+  /** (j, k) row-major: each joint's bend per unit coefficient of each mode (the palette's cap) */
+  jointBend: Float32Array;
 }
 
 export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
@@ -68,7 +72,8 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
   const f = (name: string) => arrays[name].data as Float32Array;
   const u = (name: string) => arrays[name].data as Uint32Array;
   return {
-    id, name: meta.name, revision: meta.revision, n: meta.n, m: meta.faces, b: meta.bodies,
+    id, name: meta.name, revision: meta.revision, edited: Boolean(meta.edited), n: meta.n,
+    m: meta.faces, b: meta.bodies,
     j: meta.joints, k: meta.modes, G: meta.groups, center: meta.center, diagonal: meta.diagonal,
     jointList: meta.joint_list, bodyNames: meta.body_names, palette: meta.palette,
     offset: meta.offset ?? 0,
@@ -78,8 +83,30 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
     boneMatrices: f("bone_matrices"), bindMatrices: f("bind_matrices"),
     bodyCenters: f("body_centers"), bodyRotations: f("body_rotations"), bodyEnds: f("body_ends"),
     bodyTwists: f("body_twists"), jointBodies: u("joint_bodies"),
-    jointPositions: f("joint_positions"),
+    jointPositions: f("joint_positions"), jointBend: f("joint_bend"),
   };
+}
+
+/** A frequency as the page shows it, everywhere: as played, s·ν (Hz), labelled with the time
+ * scale s when it is not 1 ("2.40 Hz (×1.20 time scale)"). */
+export function playedFrequency(natural: number, timeScale: number): string {
+  const played = `${(natural * timeScale).toFixed(2)} Hz`;
+  return Math.abs(timeScale - 1) < 5e-3 ? played
+    : `${played} (×${timeScale.toFixed(2)} time scale)`;
+}
+
+/** "mode 4", "modes 1–3, 5": 0-based mode indices as the page numbers them (from 1). */
+export function modesLabel(modes: ArrayLike<number>): string {
+  const sorted = [...new Set(Array.from(modes))].sort((a, b) => a - b);
+  const runs: string[] = [];
+  for (let i = 0; i < sorted.length;) {
+    let j = i;
+    while (j + 1 < sorted.length && sorted[j + 1] === sorted[j] + 1) j++;
+    runs.push(j > i ? `${sorted[i] + 1}–${sorted[j] + 1}` : `${sorted[i] + 1}`);
+    i = j + 1;
+  }
+  if (!runs.length) return "still";
+  return `${sorted.length === 1 ? "mode" : "modes"} ${runs.join(", ")}`;
 }
 
 /** The scale σ = 2 / diagonal that brings the skin to the page's normalised units (the

@@ -5,13 +5,27 @@
 // like the harmonic gallery's (`POST api/breed`).
 import * as api from "./api";
 import { $, saveJSON } from "./dom";
+import { gridColumns } from "./grid";
+import { drivenHarmonics } from "./filter";
 import type { Mapping } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
+import { modesLabel, playedFrequency } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
 import type { Shot, Look } from "./viewer";
 
 export type RigGalleryMode = "modes" | "dances";
+
+/** What a dance drives: the modes its bands reach with a non-zero amplification, and its time
+ * scale ("modes 1–2 · ×1.15 time scale"; one mode: its frequency as played). */
+export function danceLabel(rig: Rig, prepared: RigPrepared): string {
+  const driven = drivenHarmonics(prepared).map((target) => prepared.selected[target]);
+  if (driven.length === 1) {
+    return `${modesLabel(driven)} · ${playedFrequency(rig.frequencies[driven[0]],
+      prepared.timeScale)}`;
+  }
+  return `${modesLabel(driven)} · ×${prepared.timeScale.toFixed(2)} time scale`;
+}
 
 /** Rigs are shaded by the normals of their deformed faces (thesis §6.3). */
 export const RIG_LOOK: Look = { shading: "smooth", deformedNormalWeight: 1 };
@@ -168,7 +182,7 @@ export class RigGalleryView {
       ? `modes ${modes[0] + 1}–${modes[modes.length - 1] + 1} of ${this.rig.k}` : "";
   }
 
-  /** One tile per mode of the page, or per dance, in a grid about 1.5 times wider than tall. */
+  /** One tile per mode of the page, or per dance, in the gallery's grid (grid.ts). */
   private build(): void {
     const rig = this.rig;
     const container = $("rig-tiles");
@@ -183,7 +197,7 @@ export class RigGalleryView {
         this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
       }
       container.style.setProperty("--columns",
-        String(Math.max(1, Math.ceil(Math.sqrt(this.prepared.length * 1.5)))));
+        String(gridColumns(this.prepared.length)));
       this.tiles = this.prepared.map((prepared, index) => {
         const tile = this.makeTile(index, prepared);
         container.appendChild(tile.element);
@@ -203,13 +217,14 @@ export class RigGalleryView {
     if (this.mode === "modes") {
       const mode = prepared.selected[0];
       const natural = rig.frequencies[mode];
-      label.textContent = `mode ${mode + 1} · ${(natural * prepared.timeScale).toFixed(2)} Hz`;
-      label.title = `natural frequency ${natural.toFixed(3)} Hz × time scale `
+      label.textContent = `mode ${mode + 1} · ${playedFrequency(natural, prepared.timeScale)}`;
+      label.title = `as played: natural frequency ${natural.toFixed(3)} Hz × time scale `
         + `${prepared.timeScale.toFixed(2)}; click to select, then combine`;
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
-      const modes = [...prepared.selected].map((m) => m + 1);
-      label.textContent = `#${index + 1} · modes ${modes[0]}–${modes[modes.length - 1]}`;
+      label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`;
+      label.title = "the modes this dance's mapping drives (a band reaches them with a non-zero "
+        + "amplification), at its time scale";
       element.classList.toggle("selected", this.selectedDances.has(index));
       const actions = document.createElement("div");
       actions.className = "actions";

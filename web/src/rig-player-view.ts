@@ -5,8 +5,10 @@
 // per-joint stiffness. *save mapping* writes a version-2 mapping with `modes` and `offset`.
 import { $, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
-import { paletteOf, prepareRig } from "./modal-skin";
+import { prepareRig } from "./modal-skin";
+import { paletteOf } from "./palette";
 import type { RigPrepared } from "./modal-skin";
+import { playedFrequency } from "./rig-bundle";
 import type { ModeSettings, Rig } from "./rig-bundle";
 import { RIG_LOOK } from "./rig-gallery-view";
 import type { Shot } from "./viewer";
@@ -51,6 +53,7 @@ export class RigPlayerView {
     range("rig-scale", (v) => `${v.toFixed(2)}×`, (v) => {
       if (!this.palette) return;
       this.palette.time_scale = v;
+      this.buildPalette(); // the frequencies shown are as played
       this.update();
       this.events.timeScaleChanged();
     });
@@ -134,6 +137,7 @@ export class RigPlayerView {
     this.source = source;
     this.palette = this.rig ? paletteOf(this.rig, mapping.modes as Partial<ModeSettings>) : null;
     this.buildPalette();
+    this.refreshInfo();
     this.update();
   }
 
@@ -151,9 +155,20 @@ export class RigPlayerView {
     this.pick(this.joint < rig.j ? this.joint : -1, !fresh);
     this.buildPalette();
     this.update();
-    $("rig-info").textContent = `${rig.name}: ${rig.b} bodies, ${rig.j} joints, ${rig.k} modes, `
-      + `${rig.n} vertices · lowest ${rig.frequencies[0]?.toFixed(3) ?? "–"} Hz`
-      + (rig.revision ? ` · edit ${rig.revision}` : "");
+    this.refreshInfo();
+  }
+
+  /** The line about the rig: its size, its lowest mode as played, and whether it was edited
+   * (the server keeps pose and stiffness edits until "reset pose", a reload too). */
+  refreshInfo(): void {
+    const rig = this.rig;
+    if (!rig) return;
+    const s = this.palette?.time_scale ?? rig.palette?.time_scale ?? 1;
+    const count = (n: number, one: string, many: string) => `${n} ${n === 1 ? one : many}`;
+    $("rig-info").textContent = `${rig.name}: ${count(rig.b, "body", "bodies")}, `
+      + `${count(rig.j, "joint", "joints")}, ${count(rig.k, "mode", "modes")}, `
+      + `${count(rig.n, "vertex", "vertices")} · lowest mode ${rig.k ? playedFrequency(rig.frequencies[0], s) : "–"}`
+      + (rig.edited ? " · pose or stiffness edited (kept by the server until reset pose)" : "");
   }
 
   /** Pick joint j for the pose editor and the stiffness field (−1: none). */
@@ -212,8 +227,9 @@ export class RigPlayerView {
       const row = document.createElement("div");
       row.className = "rig-mode-row";
       const amplitude = palette.amplitudes![v] / DEGREES, phase = palette.phases![v] / DEGREES;
-      row.innerHTML = `<span class="name" title="natural frequency">mode ${mode + 1} · ${
-        rig.frequencies[mode].toFixed(2)} Hz</span>
+      row.innerHTML = `<span class="name" title="as played: natural frequency ${
+        rig.frequencies[mode].toFixed(3)} Hz × the time scale">mode ${mode + 1} · ${
+        playedFrequency(rig.frequencies[mode], palette.time_scale!)}</span>
         <label title="reach at φ = 1: the largest body rotation, degrees">amplitude
         <input type="range" class="amplitude" min="0" max="${Math.max(90, Math.ceil(2 * amplitude))}" step="0.5" value="${amplitude}">
         <output>${amplitude.toFixed(1)}°</output></label>

@@ -37,13 +37,13 @@ export class RigStage {
 
   constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
               private readonly path: DeformationPath | null, private readonly batch: number,
-              live: boolean) {
+              live: boolean, scale: number | null = null) {
     this.motion = new RigMotion(music);
     // The page's own loop handles the end of the song (rewind, the seek bar); this one follows.
     const follower: Clock = { get playing() { return clock.playing; }, now: () => clock.now(),
       ended: () => false, rewind: () => {} };
     this.viewer = new Viewer($<HTMLCanvasElement>("rig-gl"), $("rig-player-area"), this.motion,
-      follower, () => this.stage(), antialias);
+      follower, () => this.stage(), antialias, scale);
     this.viewer.onFrame = (t) => this.beforeFrame(t);
     const requestDraw = () => this.viewer.requestDraw();
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
@@ -75,7 +75,11 @@ export class RigStage {
       this.gallery.setMode("modes");
       this.enter();
       this.viewer.choosePath(this.path);
-      this.events.status(`${rig.name}: ${rig.k} vibration modes`);
+      // The server keeps a rig's edits until "reset pose": a reload shows them, and says so.
+      const modes = `${rig.k} vibration mode${rig.k === 1 ? "" : "s"}`;
+      this.events.status(`${rig.name}: ${modes}` + (rig.edited ? " · its pose or stiffness was "
+        + "edited earlier (the server keeps edits; reset pose goes back to the rig as loaded)"
+        : ""));
     } finally {
       this.events.loading(null);
     }

@@ -1,13 +1,15 @@
 // The Viewer owns the WebGL canvas: renderer, cameras, the render loop, drawing the gallery's
 // tiles or the player into their viewports, the studio around each model, the page's real frame
-// rate, and the choice of deformation path (docs/design.md#rendering). What to draw comes from
-// the views through `Stage`; time from a `Clock`.
+// rate and the render scale and detail that hold it (resolution.ts), and the choice of
+// deformation path (docs/design.md#rendering). What to draw comes from the views through
+// `Stage`; time from a `Clock`.
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Basis } from "./bundle";
 import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
 import type { Prepared, Shading } from "./filter";
+import { ResolutionGovernor } from "./resolution";
 import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
 import type { Silhouette } from "./studio";
 import type { Clock } from "./transport";
@@ -83,7 +85,10 @@ export class Viewer {
   /** Called before every frame is drawn, with its time: what changes the page's layout (the
    * seek bar, the clock, readouts), so the frame is drawn where the views are. */
   onFrame: (t: number) => void = () => {};
-
+  /** Called after every frame is drawn (the recorder copies its view then). */
+  onDrawn: () => void = () => {};
+  /** the render scale that holds the target frame rate (resolution.ts) */
+  readonly resolution = new ResolutionGovernor();
 
   private readonly tileCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
@@ -104,10 +109,13 @@ export class Viewer {
 
   constructor(canvas: HTMLCanvasElement, playerArea: HTMLElement,
               private readonly motion: MotionSource, private readonly clock: Clock,
-              private readonly stage: () => Stage, antialias: boolean) {
+              private readonly stage: () => Stage, antialias: boolean,
+              /** a fixed render scale (`?scale=`), or null: dynamic resolution */
+              private readonly fixedScale: number | null = null) {
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias,
       preserveDrawingBuffer: true, powerPreference: "high-performance" });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    if (fixedScale !== null) this.resolution.scale = fixedScale;
+    this.applyScale();
     this.renderer.autoClear = false;
     this.controls = new OrbitControls(this.playerCamera, playerArea);
     this.controls.enableDamping = false;
@@ -195,6 +203,7 @@ export class Viewer {
     });
     renderer.setScissorTest(false);
     if (profile) this.finish();
+    this.onDrawn();
     const end = performance.now();
     this.frameMs = this.frameMs ? 0.9 * this.frameMs + 0.1 * (end - start) : end - start;
     return { deformation: deformed - start, drawing: end - deformed };
@@ -217,7 +226,8 @@ export class Viewer {
     } else {
       const gpu = this.timeFrames(false), cpu = this.timeFrames(true);
       deformer.useCPU = cpu < gpu;
-      console.info(`eigendance: GPU ${gpu.toFixed(1)} ms, CPU ${cpu.toFixed(1)} ms per frame`);
+      console.info(`eigendance: deformation ${gpu.toFixed(1)} ms on the GPU, ${cpu.toFixed(1)} ms `
+        + "on the CPU per frame");
     }
     this.path = deformer.useCPU ? "cpu" : "gpu";
     this.frameMs = 0;
@@ -237,26 +247,12 @@ export class Viewer {
     return this.cpuBuffers[i];
   }
 
-  /** Downsampled RGB pixels of each element's area of the canvas, as drawn. */
-  pixelsOf(elements: HTMLElement[], step: number): number[][] {
-    const gl = this.renderer.getContext();
-    const height = this.renderer.domElement.height;
+  /** Where `element` lies in the drawing buffer (pixels, origin top left), as drawn. */
+  bufferRect(element: HTMLElement): { x: number; y: number; width: number; height: number } {
+    const r = element.getBoundingClientRect();
     const ratio = this.renderer.getPixelRatio();
-    return elements.map((element) => {
-      const r = element.getBoundingClientRect();
-      const w = Math.floor(r.width * ratio), h = Math.floor(r.height * ratio);
-      const pixels = new Uint8Array(w * h * 4);
-      gl.readPixels(Math.floor(r.left * ratio), height - Math.floor(r.bottom * ratio), w, h,
-        gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      const out: number[] = [];
-      for (let y = 0; y < h; y += step) {
-        for (let x = 0; x < w; x += step) {
-          const i = 4 * (y * w + x);
-          out.push(pixels[i], pixels[i + 1], pixels[i + 2]);
-        }
-      }
-      return out;
-    });
+    return { x: Math.floor(r.left * ratio), y: Math.floor(r.top * ratio),
+      width: Math.floor(r.width * ratio), height: Math.floor(r.height * ratio) };
   }
 
   /** Frame the player's model again (after the window changed shape, or on request). */
@@ -267,7 +263,11 @@ export class Viewer {
   private countFrame(drawn: boolean): void {
     const now = performance.now();
     if (!drawn) {
-      if (!this.clock.playing) { this.frameTimes = []; this.fps = 0; }
+      if (!this.clock.playing) {
+        this.frameTimes = [];
+        this.fps = 0;
+        this.resolution.update(0, now, false);
+      }
       return;
     }
     this.playedFrames++;
@@ -278,15 +278,32 @@ export class Viewer {
     }
     const span = now - this.frameTimes[0];
     this.fps = this.frameTimes.length > 1 ? (1000 * (this.frameTimes.length - 1)) / span : 0;
+    if (this.fixedScale === null && this.resolution.update(this.fps, now, true)) {
+      this.applyScale();
+    }
   }
 
-  /** Mean time (ms) of a drawn frame on one path, after a warm-up (shader compile, uploads). */
+  /** Whether the render scale follows the frame rate (not with `?scale=`). */
+  get dynamic(): boolean { return this.fixedScale === null; }
+
+  /** Draw into a buffer of the render scale's size (the browser scales it up to the page). */
+  private applyScale(): void {
+    const ratio = Math.min(window.devicePixelRatio, 2) * this.resolution.scale;
+    if (Math.abs(this.renderer.getPixelRatio() - ratio) > 1e-6) {
+      this.renderer.setPixelRatio(ratio);
+      this.requestDraw();
+    }
+  }
+
+  /** Mean time (ms) of the deformation of a frame on one path (waited for on the GPU), after
+   * a warm-up (shader compile, uploads): drawing costs the same on both paths, and measured
+   * with it the choice followed the rasteriser's noise. */
   private timeFrames(useCPU: boolean): number {
     this.deformer!.useCPU = useCPU;
-    this.draw(1); this.finish();
-    const start = performance.now();
-    for (let i = 0; i < 2; i++) { this.draw(1.5 + i); this.finish(); }
-    return (performance.now() - start) / 2;
+    this.draw(1, true);
+    let total = 0;
+    for (let i = 0; i < 3; i++) total += this.draw(1.5 + i, true)?.deformation ?? 0;
+    return total / 3;
   }
 
   /** Draw one model into its element's rectangle of the canvas (skipped when off screen). */
@@ -305,6 +322,7 @@ export class Viewer {
     this.studio.setAspect(rect.width / rect.height);
     const { look } = shot;
     const player = stage.view === "player";
+    deformer.useDetail(player ? 1 : this.resolution.detail); // one model: all its triangles
     deformer.setTile(weights, cpu, {
       color: CLAY,
       wireframe: look.shading === "wireframe",

@@ -320,9 +320,33 @@ def shadow_model(rest: np.ndarray, scale: float) -> np.ndarray:
     return model
 
 
+def gallery_columns(count: int) -> int:
+    """Columns of the gallery's grid of `count` tiles, the page's rule (web/src/grid.ts):
+    ⌈√(1.5·S)⌉ (at most S), a grid about 1.5 times wider than tall, then fewer while the last
+    row would be less than half full, so no tile is left alone on a row.
+
+    Parameters
+    ----------
+    count : tiles S, ≥ 1.
+
+    Returns
+    -------
+    int, the number of columns.
+
+    Example
+    -------
+    >>> [gallery_columns(count) for count in (4, 8, 9, 16)]    # 2×2, 4×2, 3×3, 4×4
+    [2, 4, 3, 4]
+    """
+    columns = max(1, min(count, math.ceil(math.sqrt(count * 1.5))))
+    while columns > 1 and 2 * (count - (math.ceil(count / columns) - 1) * columns) < columns:
+        columns -= 1
+    return columns
+
+
 def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, int, int]]:
-    """Viewports (x, y from the bottom, w, h) of `count` tiles in the page's grid: ⌈√(1.5·S)⌉
-    columns, rows as needed, row-major from the top left.
+    """Viewports (x, y from the bottom, w, h) of `count` tiles in the page's grid
+    (`gallery_columns`), rows as needed, row-major from the top left.
 
     Parameters
     ----------
@@ -333,7 +357,7 @@ def gallery_cells(count: int, width: int, height: int) -> list[tuple[int, int, i
     -------
     list of (x, y, w, h).
     """
-    columns = math.ceil(math.sqrt(count * 1.5))
+    columns = gallery_columns(count)
     rows = math.ceil(count / columns)
     cell_w = (width - 2 * GALLERY_PADDING - (columns - 1) * GALLERY_GAP) / columns
     cell_h = (height - 2 * GALLERY_PADDING - (rows - 1) * GALLERY_GAP) / rows

@@ -8,7 +8,8 @@ Routes:
 - ``GET /api/library`` — meshes (with basis state), songs and mappings.
 - ``GET /api/meshes/{id}/basis.bin`` — the basis as a binary bundle (`binary.basis_bundle`).
 - ``GET /api/songs/{id}/spectrogram.bin``, ``GET /api/songs/{id}/audio``.
-- ``GET /api/jobs/{id}`` and ``/api/jobs/{id}/events`` (server-sent events) — basis progress.
+- ``GET /api/jobs/{id}`` and ``/api/jobs/{id}/events`` (server-sent events) — the progress of a
+  basis solve or an export.
 - ``POST /api/upload?name=FILE`` — raw body; mesh, audio or mapping JSON by suffix and content.
 - ``POST /api/gallery`` ``{mesh, song, size}`` and ``POST /api/breed`` ``{parents, size, seed}``
   — mappings from `eigendance.music` (the one implementation).
@@ -18,5 +19,8 @@ Routes:
 - ``GET /api/rigs/{id}`` (description), ``/rig.bin`` (`binary.rig_bundle`), ``/skeleton.json``;
   ``POST /api/rigs/{id}/stiffness``, ``/pose``, ``/reset`` (edits answering a new bundle);
   ``POST /api/rig-gallery`` ``{rig, song, size}`` — the initial gallery of mode mappings.
+- ``POST /api/export`` ``{mesh | rig, song, mapping, format, start, duration, size?, fps?}`` —
+  part of a song as MP4 or glb, rendered in a job (`export_route`); ``GET /api/exports/{id}``
+  downloads it.
 - ``/`` — the built front end (package folder ``static/``, built from ``web/`` by ``make``).
 """

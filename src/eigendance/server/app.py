@@ -24,6 +24,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from eigendance.errors import InputError, one_line
+from eigendance.server.export_route import download_export, export_clip
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library
 from eigendance.server.lookup import library_of
@@ -169,6 +170,8 @@ API_ROUTES = [
     Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),
     Route("/api/rigs/{id}/reset", rig_reset, methods=["POST"]),
     Route("/api/rig-gallery", rig_gallery_route, methods=["POST"]),
+    Route("/api/export", export_clip, methods=["POST"]),
+    Route("/api/exports/{id}", download_export),
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
 ]
 

@@ -26,7 +26,12 @@ import struct
 import numpy as np
 
 from eigendance.modal.bodies import CONSTRAINED_ROWS
-from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
+from eigendance.modal.palette import (
+    default_phases,
+    joint_bend,
+    mode_reach,
+    single_mode_amplitudes,
+)
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
@@ -210,7 +215,7 @@ def top_weights(weights: np.ndarray, count: int = 4) -> tuple[np.ndarray, np.nda
     return order, top
 
 
-def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
+def rig_meta(rig, name: str = "rig", revision: int = 0, edited: bool = False) -> dict:
     """The rig bundle's JSON header `meta` (docs/web.md#rig-bundle), also `GET /api/rigs/{id}`.
 
     Parameters
@@ -218,17 +223,18 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
     rig : the `Rig` (its loop closures and default stiffness per joint come from it).
     name : how the page calls it.
     revision : how many edits made it.
+    edited : whether its pose or stiffness differs from the rig as loaded.
 
     Returns
     -------
     dict: counts, size, centre and diagonal, body names, frequencies (Hz), the joints (type,
-    rows, stiffness, default stiffness, closes_loop), the default palette.
+    rows, stiffness, default stiffness, closes_loop), the default palette, `edited`.
     """
     skeleton, model, palette = rig.skeleton, rig.model, rig.palette
     nm = model.n_modes
     low, high = skeleton.vertices.min(axis=0), skeleton.vertices.max(axis=0)
     return {
-        "kind": "rig", "name": name, "revision": int(revision),
+        "kind": "rig", "name": name, "revision": int(revision), "edited": bool(edited),
         "n": int(len(skeleton.vertices)),
         "faces": int(len(skeleton.faces)), "bodies": model.n_bodies,
         "joints": len(skeleton.joints), "modes": int(nm), "groups": (nm + 3) // 4,
@@ -250,7 +256,7 @@ def rig_meta(rig, name: str = "rig", revision: int = 0) -> dict:
     }
 
 
-def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
+def rig_bundle(rig, name: str = "rig", revision: int = 0, edited: bool = False) -> bytes:
     """A `eigendance.modal.rig.Rig` for the web app (docs/web.md#rig-bundle), all float32.
 
     Parameters
@@ -258,6 +264,7 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
     rig : the rig (its skin, modes, rest bones).
     name : how the page calls it.
     revision : how many edits made it.
+    edited : whether its pose or stiffness differs from the rig as loaded.
 
     Returns
     -------
@@ -269,7 +276,7 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
     bones = rig.rest_bones
     column_major = np.swapaxes  # three.js Matrix4.fromArray reads columns first
     twists = model.modes.reshape(model.n_bodies, 6, nm).transpose(2, 0, 1)
-    return pack(rig_meta(rig, name, revision), {
+    return pack(rig_meta(rig, name, revision, edited), {
         "vertices": skin.vertices, "faces": skeleton.faces.astype(np.uint32),
         "tau": packed_modes(skin.displacement, n), "rho": packed_modes(skin.rotation, n),
         "frequencies": model.frequencies,
@@ -284,4 +291,5 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0) -> bytes:
         "body_twists": twists,
         "joint_bodies": model.joint_bodies.astype(np.uint32),
         "joint_positions": model.joint_positions,
+        "joint_bend": joint_bend(model),  # (j, k): the page's palette caps the bend with it
     })

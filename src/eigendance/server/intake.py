@@ -112,7 +112,7 @@ class Intake:
             kind = "rig"  # a skinned glTF is a rig (its skin the mesh the modes move)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
-            return self.add_mapping(document, name)
+            return self.add_mapping(document, name, origin)
         existing = self.shelf.contents.claim(key, self.shelf.touched)
         if existing is not None:
             return existing, False
@@ -184,13 +184,14 @@ class Intake:
         self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")
         return item
 
-    def add_mapping(self, data, name: str) -> tuple[MappingItem, bool]:
+    def add_mapping(self, data, name: str, origin: str = "upload") -> tuple[MappingItem, bool]:
         """A mapping item from a parsed mapping document.
 
         Parameters
         ----------
         data : the document (checked by `requests.mapping_from`).
         name : its name.
+        origin : "file" (given to `serve`: the page opens it at start) or "upload".
 
         Returns
         -------
@@ -203,7 +204,7 @@ class Intake:
             existing = self.shelf.touched(self.shelf.contents.find(key) or "")
             if existing is not None:
                 return existing, False
-            item = MappingItem(new_id(), name, fields, content=key)
+            item = MappingItem(new_id(), name, fields, content=key, origin=origin)
             self.shelf.admit(item, self.shelf.mappings, f"{name}: the mapping")
             return item, True
 

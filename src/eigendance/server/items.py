@@ -207,12 +207,14 @@ class MappingItem:
     id, name : its id and name.
     data : its document (`Mapping.to_json`).
     content : its content key (the SHA-256 of its fields).
+    origin : "file" (given to `serve`: the page opens it at start) or "upload".
     """
 
     id: str
     name: str
     data: dict
     content: tuple | None = None
+    origin: str = "upload"
     busy = False
 
     def as_json(self) -> dict:
@@ -220,9 +222,9 @@ class MappingItem:
 
         Returns
         -------
-        {"id", "name"}.
+        {"id", "name", "origin"}.
         """
-        return {"id": self.id, "name": self.name}
+        return {"id": self.id, "name": self.name, "origin": self.origin}
 
     def held(self) -> int:
         """Bytes kept: its document.
@@ -247,6 +249,8 @@ class RigItem:
     rig : the current `Rig` (edits included), once analysed.
     bundle : the rig bundle of the current rig (`server.binary.rig_bundle`).
     revision : how many edits made the current rig.
+    edited : whether its pose or stiffness differs from the rig as loaded (a reset is not an
+        edit).
     error : why a file could not be analysed ("" when it was).
     content : its content key.
     lock : held while it is analysed or edited.
@@ -260,6 +264,7 @@ class RigItem:
     rig: Rig | None = None
     bundle: bytes | None = None
     revision: int = 0
+    edited: bool = False
     error: str = ""
     content: tuple | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
@@ -274,12 +279,12 @@ class RigItem:
 
         Returns
         -------
-        {"id", "name", "origin", "ready", "revision", "error"}, and once analysed "bodies",
-        "joints", "vertices", "modes".
+        {"id", "name", "origin", "ready", "revision", "edited", "error"}, and once analysed
+        "bodies", "joints", "vertices", "modes".
         """
         info = {"id": self.id, "name": self.name, "origin": self.origin,
                 "ready": self.rig is not None, "revision": self.revision,
-                "error": self.error or None}
+                "edited": self.edited, "error": self.error or None}
         if self.rig is not None:
             info.update(bodies=self.rig.skeleton.n_bodies, joints=len(self.rig.skeleton.joints),
                         vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes)

@@ -41,7 +41,7 @@ async def get_rig(request: Request):
     """
     item = await ready_rig(request)
     return await answer(lambda: {**item.as_json(), **rig_meta(item.rig, item.name,
-                                                              item.revision)})
+                                                              item.revision, item.edited)})
 
 
 async def get_rig_bundle(request: Request):

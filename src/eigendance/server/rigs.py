@@ -29,10 +29,11 @@ def analyse(item: RigItem, rig: Rig, original: Skeleton | None = None) -> None:
     rig : the rig (loaded, or edited).
     original : the skeleton as loaded (None: the rig's own).
     """
-    bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None))
+    edited = original is not None and rig.skeleton is not original  # a reset is not an edit
+    bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None), edited)
     item.original = original or rig.skeleton
     item.revision += item.rig is not None
-    item.rig, item.bundle = rig, bundle
+    item.rig, item.bundle, item.edited = rig, bundle, edited
 
 
 def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
@@ -85,4 +86,4 @@ def forget(item: RigItem) -> None:
     item : a built-in rig item.
     """
     item.original = item.rig = item.bundle = None
-    item.revision, item.error = 0, ""
+    item.revision, item.error, item.edited = 0, "", False

@@ -1,0 +1,98 @@
+// The header's controls: the library menus and their ✕ (remove), play / pause and the position,
+// volume and mute, the gallery / player tabs and the *tiles* menu; and the keys, which do what
+// these controls do.
+import * as api from "./api";
+import type { App } from "./app";
+import { $ } from "./dom";
+import type { Mapping } from "./filter";
+import { wireKeys } from "./keys";
+
+export function wireHeader(app: App): void {
+  const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
+  const { messages, transport, viewer, library } = app;
+  $("mesh").addEventListener("change", (e) => {
+    const meshId = valueOf(e);
+    if (meshId.startsWith("rig:")) { void app.openRig(meshId.slice(4)); return; }
+    void messages.guard("Could not show this model", async () => {
+      if (!(await app.showMesh(meshId))) messages.status("");
+    });
+  });
+  $("song").addEventListener("change", (e) => {
+    const songId = valueOf(e);
+    void messages.guard("Could not play this song", () => app.changeSong(songId));
+  });
+  $("mapping-menu").addEventListener("change", (e) => {
+    const id = valueOf(e);
+    const name = library.mappings.find((m) => m.id === id)?.name ?? "mapping";
+    void messages.guard(`Could not open ${name}`, async () => {
+      app.open(await api.getJSON<Mapping>(`api/mappings/${id}`), name);
+    });
+  });
+  for (const kind of ["mesh", "song", "mapping"] as const) {
+    $(`remove-${kind}`).addEventListener("click", () => void remove(app, kind));
+  }
+  $("play").addEventListener("click", () => app.togglePlay());
+  $("seek").addEventListener("input", (e) => {
+    transport.seek(Number(valueOf(e)));
+    viewer.requestDraw();
+  });
+  const volume = $<HTMLInputElement>("volume");
+  volume.addEventListener("input", () => {
+    transport.volume = Number(volume.value);
+    if (transport.muted) toggleMute(app);
+  });
+  $("mute").addEventListener("click", () => toggleMute(app));
+  $("tab-gallery").addEventListener("click", () => app.setView("gallery"));
+  $("tab-player").addEventListener("click", () => app.setView("player"));
+  const sizes = $<HTMLSelectElement>("size");
+  sizes.addEventListener("change", () => void app.newGallery(Number(sizes.value)));
+  window.addEventListener("resize", () => {
+    viewer.resetPlayerCamera();
+    viewer.requestDraw();
+  });
+  // A banner or a wrapped header moves the views: draw again where they are now.
+  new ResizeObserver(() => viewer.requestDraw()).observe($("tiles"));
+  new ResizeObserver(() => viewer.requestDraw()).observe($("player-area"));
+  wireKeys({
+    " ": () => app.togglePlay(),
+    g: () => app.setView("gallery"),
+    p: () => app.setView("player"),
+    b: () => {
+      void messages.guard("Breeding failed",
+        () => (app.rigs.active ? app.rigs.gallery.breed() : app.gallery.breed()));
+    },
+    "[": () => app.gallery.step(-1),
+    "]": () => app.gallery.step(1),
+    m: () => toggleMute(app),
+    "?": () => messages.help($("help").hidden),
+    h: () => messages.help($("help").hidden),
+    Escape: () => { messages.help(false); messages.clearError(); },
+    Home: () => { transport.seek(0); viewer.requestDraw(); },
+  });
+}
+
+function toggleMute(app: App): void {
+  app.transport.muted = !app.transport.muted;
+  $("mute").classList.toggle("muted", app.transport.muted);
+}
+
+/** Remove the item chosen in `kind`'s menu from the server's library (not from the disk);
+ * a removed model or song on screen gives way to the first one left. */
+async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void> {
+  const menu = $<HTMLSelectElement>(kind === "mapping" ? "mapping-menu" : kind);
+  const rig = kind === "mesh" && menu.value.startsWith("rig:"); // the model menu lists rigs too
+  const id = rig ? menu.value.slice(4) : menu.value;
+  const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
+  await app.messages.guard(`Could not remove ${name}`, async () => {
+    await api.remove(rig ? "rig" : kind, id);
+    const library = await app.library.refresh();
+    if (rig || (kind === "mesh" && id === app.library.meshId)) {
+      const next = library.meshes.find((m) => m.id === app.library.meshId) ?? library.meshes[0];
+      if (next) await app.showMesh(next.id); // leaves the rig's views
+    } else if (kind === "song" && id === app.library.songId && library.songs.length) {
+      app.transport.pause();
+      await app.changeSong(library.songs[0].id);
+    }
+    app.messages.status(`${name} removed from the library`);
+  });
+}
