@@ -265,14 +265,18 @@ def exports() -> None:
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("parts", nargs="*", default=["accuracy", "speed", "bad", "exports"],
-                        choices=["accuracy", "speed", "bad", "exports"])
+    parts = ["accuracy", "speed", "bad", "exports"]
+    parser.add_argument("parts", nargs="*", metavar="PART",
+                        help=f"any of {', '.join(parts)} (default: all of them)")
     parser.add_argument("--meshes", nargs="+", default=list(ACCURACY_MESHES))
     parser.add_argument("--sensitivity", action="store_true",
                         help="also the exact basis of another noise draw (one more exact solve)")
     parser.add_argument("--skip-exact-speed", action="store_true",
                         help="skip the exact solve at 692k vertices (minutes, ~5 GB)")
     args = parser.parse_args()
+    if unknown := set(args.parts) - set(parts):  # (not argparse's choices: Python 3.12 checks
+        parser.error(f"unknown parts: {', '.join(sorted(unknown))}")  # the empty list too)
+    args.parts = args.parts or parts
     if "accuracy" in args.parts:
         accuracy(args.meshes, args.sensitivity)
     if "speed" in args.parts:

@@ -21,6 +21,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.errors import InputError
 from eigendance.files import refuse_overwrite
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
@@ -68,6 +69,9 @@ def run_basis(args) -> None:
     ----------
     args : the parsed command line.
     """
+    if args.construction == "exact" and args.samples is not None:
+        raise InputError("--samples sets the samples of a reduced basis; it has no meaning "
+                         "with --exact")
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     mesh = load_mesh(args.mesh)

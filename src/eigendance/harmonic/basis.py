@@ -58,20 +58,21 @@ CONSTRUCTIONS = ("auto", "exact", "reduced")
 EXACT_VALUES = 6e7
 
 
-def choose_construction(n: int, k: int) -> str:
+def choose_construction(n: int, k: int, samples: int | None = None) -> str:
     """Which basis `from_mesh` makes by default (docs/design.md#reduced-basis).
 
     Parameters
     ----------
     n : vertices.
     k : harmonics.
+    samples : the samples a reduced basis would have (default `reduced.sample_count`).
 
     Returns
     -------
     "exact" when the exact solve fits the time rule (n·k ≤ EXACT_VALUES) and the memory
     available now (or the mesh has too few vertices to reduce), else "reduced".
     """
-    if sample_count(n, k) >= n:  # too few vertices to reduce
+    if (sample_count(n, k) if samples is None else samples) >= n:  # too few vertices to reduce
         return "exact"
     fits = SOLVE_BYTES_PER_VALUE * n * k <= memory_budget()
     return "exact" if fits and n * k <= EXACT_VALUES else "reduced"
@@ -221,7 +222,7 @@ class HarmonicBasis:
                              "triangles); the cotangent Laplacian needs a manifold mesh",
                              remedy={"laplacian": "robust"})
         if construction == "auto":
-            construction = choose_construction(mesh.n, k)
+            construction = choose_construction(mesh.n, k, samples)
         if construction == "reduced":
             return cls._reduced(mesh, k, laplacian, cache, progress, samples)
         per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
