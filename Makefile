@@ -14,6 +14,7 @@ $(VENV)/.installed: pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
 	$(BIN)/pip install -q -c constraints.txt -e '.[dev]'
+	$(BIN)/python -c 'from eigendance.music.spectrogram import warm_up; warm_up()'  # numba's JIT, once
 	touch $@
 
 # The front end (web/, TypeScript + three.js + Vite) is built into src/eigendance/static/.

@@ -10,7 +10,8 @@ import ast
 import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src")
-LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy"}
+LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy",
+        "librosa"}
 TOP = "eigendance.cli"  # the command line: imports everything, imported by nothing
 
 

@@ -64,15 +64,15 @@ def songs():
 
 def direct_motion(basis, song, mapping):
     """RMS displacement / diagonal of every frame, from the positions themselves (T,)."""
-    phi = mapping.filter(song.values.astype(np.float64), basis.k)
+    phi = mapping.play(song, song.times, basis.k)  # envelope and pulse included
     moved = basis.displacements(phi)
     return np.sqrt((moved ** 2).sum(axis=2).mean(axis=1)) / basis.diagonal
 
 
 def direct_correlations(basis, song, gallery):
     """Correlations of the displacement fields over the song, from the positions themselves."""
-    fields = np.array([basis.displacements(item.filter(song.values.astype(np.float64),
-                                                       basis.k)).ravel() for item in gallery])
+    fields = np.array([basis.displacements(item.play(song, song.times, basis.k)).ravel()
+                       for item in gallery])
     norms = np.linalg.norm(fields, axis=1)
     return fields @ fields.T / np.outer(norms, norms)
 
@@ -151,7 +151,8 @@ def test_initial_items_span_what_breeding_needs(meshes, songs):
         assert (amplification[:, others] == 0).all()
         own = [measured.motion for measured in gallery_motion(basis, song, gallery)]
         for i, item in enumerate(gallery):
-            crossed = [Mapping(item.transfer, other.amplification) for other in gallery]
+            crossed = [item.with_genes(item.transfer, other.amplification, None, "crossed")
+                       for other in gallery]
             np.testing.assert_allclose([m.motion for m in gallery_motion(basis, song, crossed)],
                                        own[i], rtol=1e-9)
 

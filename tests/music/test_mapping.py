@@ -102,7 +102,7 @@ def test_json_round_trip(tmp_path, rng):
     np.testing.assert_array_equal(loaded.amplification, mapping.amplification)
     assert loaded.seed == 42
     data = json.loads((tmp_path / "m.json").read_text())
-    assert data["format"] == "eigendance.mapping" and data["version"] == 2
+    assert data["format"] == "eigendance.mapping" and data["version"] == 3
     assert data["bands"] == 8
     assert Mapping.from_json({**data, "seed": None}).seed is None
 
@@ -114,7 +114,7 @@ def valid():
 
 @pytest.mark.parametrize("change, message", [
     ({"format": "other"}, "format must be"),
-    ({"version": 3}, "version must be one of"),
+    ({"version": 4}, "version must be one of"),
     ({"version": True}, "version must be one of"),
     ({"bands": 0}, "bands must be a positive integer"),
     ({"bands": 3}, "transfer has 2 values; bands says 3"),
@@ -161,7 +161,7 @@ def test_version_2_carries_what_the_player_applies(tmp_path):
     mapping.save(tmp_path / "m.json")
     again = Mapping.load(tmp_path / "m.json")
     assert again.to_json() == mapping.to_json()
-    assert again.to_json()["version"] == 2 and again.modes.selected.tolist() == [0, 2]
+    assert again.to_json()["version"] == 3 and again.modes.selected.tolist() == [0, 2]
     assert (again.gain, again.smoothing, again.offset, again.shading) == (1.5, 0.25, 1.0, "flat")
 
 
@@ -192,7 +192,7 @@ def test_gain_scales_the_amplification_of_the_filter(rng):
     ({"modes": {"selected": [0, 0]}}, "lists a mode twice"),
     ({"modes": {"selected": [0, 1], "phases": [0.0]}}, "modes.phases has 1 values for 2"),
     ({"modes": {"time_scale": 0}}, "time_scale must be positive"),
-    ({"version": 3}, "version must be one of"),
+    ({"version": 4}, "version must be one of"),
 ])
 def test_version_2_fields_are_checked(changes, message):
     data = {"format": "eigendance.mapping", "version": 2, "bands": 2, "transfer": [0.1, 0.9],

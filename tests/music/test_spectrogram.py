@@ -9,6 +9,7 @@ from eigendance.cli import main
 from eigendance.errors import EigendanceError
 from eigendance.music.decode import read_audio
 from eigendance.music.demo_music import demo_track, write_demo_wav
+from eigendance.music.rhythm import FILE_KEYS
 from eigendance.music.spectrogram import Spectrogram, window_length
 from helpers import fixture_path
 
@@ -153,7 +154,7 @@ def test_save_load_round_trip(tmp_path):
     np.testing.assert_array_equal(loaded.band_edges, spectrogram.band_edges)
     assert (loaded.rate, loaded.sample_rate, loaded.duration) == (50.0, SR, spectrogram.duration)
     with np.load(tmp_path / "s.npz") as data:
-        assert set(data.files) == set(audio.FORMAT_KEYS)
+        assert set(data.files) == {*audio.FORMAT_KEYS, "version", *FILE_KEYS}
         assert data["values"].dtype == np.float32
 
 

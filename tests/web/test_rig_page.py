@@ -193,20 +193,31 @@ def test_linear_blend_skinning_differs_only_to_second_order(page, rig_ids, song)
 
 def test_combined_modes_save_a_mapping_python_plays_the_same_and_dances_breed(page, rig_ids,
                                                                               song):
-    """Modes 1 and 3 combined: the saved mapping (version 2, `modes` and `offset`) gives
-    `rig_coefficients` the page's coefficients; the dances breed a new generation."""
+    """Modes 1 and 3 combined: the saved mapping (version 3, `modes` and `offset`) gives
+    `rig_coefficients` the page's coefficients, locked to the beats and, switched off,
+    free-running; the dances breed a new generation."""
     info = open_rig(page, rig_ids, "loop8")
     page.evaluate("window.eigendance.rig.setMusic(true)")  # an earlier test turned it off
     page.evaluate("window.eigendance.rig.select(0); window.eigendance.rig.select(2); "
                   "window.eigendance.rig.combine()")
     saved = page.evaluate("window.eigendance.rig.playerMapping()")
-    assert saved["version"] == 2 and saved["offset"] == 0 and saved["modes"]["selected"] == [0, 2]
+    assert saved["version"] == 3 and saved["offset"] == 0 and saved["modes"]["selected"] == [0, 2]
     mapping = Mapping.from_json(saved)
     model = Rig.from_skeleton(sample_rig("loop8"), dtype=np.float64).model
     expected = rig_coefficients(model, song, mapping, TIMES)
     shown = [page.evaluate(f"window.eigendance.rig.coefficients('player', {t})") for t in TIMES]
     np.testing.assert_allclose(shown, expected, atol=1e-5 * np.abs(expected).max())
     assert np.abs(expected[:, [1, 3, 4]]).max() == 0 and np.abs(expected).max() > 0
+    # The palette's "on the beat" switch off: the thesis's free-running motion, saved as such.
+    assert song.rhythm.has_beats and saved["modes"].get("tempo") is None
+    page.evaluate("const box = document.getElementById('rig-beat'); box.checked = false; "
+                  "box.dispatchEvent(new Event('change'))")
+    free = page.evaluate("window.eigendance.rig.playerMapping()")
+    assert free["modes"]["tempo"] == "free"
+    expected_free = rig_coefficients(model, song, Mapping.from_json(free), TIMES)
+    shown = [page.evaluate(f"window.eigendance.rig.coefficients('player', {t})") for t in TIMES]
+    np.testing.assert_allclose(shown, expected_free, atol=1e-5 * np.abs(expected_free).max())
+    assert np.abs(expected_free - expected).max() > 1e-3  # the lock changed the motion
     page.evaluate("window.eigendance.rig.setView('gallery'); "
                   "window.eigendance.rig.setMode('dances')")
     count = page.evaluate("window.eigendance.rig.info().tiles")

@@ -251,7 +251,7 @@ def test_what_the_player_shows_is_what_animate_writes(page, reference, tmp_path,
     diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
     page.evaluate("window.eigendance.open(2)")
     saved = page.evaluate("window.eigendance.playerMapping()")
-    assert saved["version"] == 2 and saved["look"]["deformed_normal_weight"] == 0.4  # Fig. 6.4(d)
+    assert saved["version"] == 3 and saved["look"]["deformed_normal_weight"] == 0.4  # Fig. 6.4(d)
     for selector, value in (("#gain", "1.7"), ("#smoothing", "0.2"), ("#facets", "0.7")):
         page.eval_on_selector(selector, "(e, v) => { e.value = v; "
                                         "e.dispatchEvent(new Event('input')); }", value)

@@ -1,14 +1,22 @@
 """The committed Vitest fixtures (web/test/fixtures) still match the Python reference: the
 numbers (JSON) and the binary bundles (.bin), regenerated and compared."""
 
+import functools
 import json
 import os
 
 import numpy as np
 import pytest
-from web_fixture_writer import FOLDER, build
+from web_fixture_writer import FOLDER
+from web_fixture_writer import build as build_all
 
 from eigendance.server.binary import unpack
+
+
+@functools.cache
+def build():
+    """The fixtures as the Python reference writes them today (built once for all tests)."""
+    return build_all()
 
 
 def test_committed_fixtures_match_the_python_reference():
@@ -34,6 +42,22 @@ def test_committed_rig_fixtures_match_the_python_reference():
         assert old["mapping"]["modes"] == new["mapping"]["modes"]
         for key in ("coefficients", "positions", "rotations", "centres"):
             np.testing.assert_allclose(old[key], new[key], atol=1e-6, err_msg=key)
+
+
+def test_committed_rhythm_fixtures_match_the_python_reference():
+    fresh = json.loads(build()["rhythm.json"])
+    with open(os.path.join(FOLDER, "rhythm.json")) as file:
+        committed = json.load(file)
+    assert committed["times"] == fresh["times"]
+    np.testing.assert_allclose(committed["beats"], fresh["beats"])
+    for old, new in zip(committed["cases"] + committed["rig_cases"],
+                        fresh["cases"] + fresh["rig_cases"], strict=True):
+        assert old["mapping"]["envelope"] == new["mapping"]["envelope"]
+        assert old["mapping"]["pulse"] == new["mapping"]["pulse"]
+        for key in ("phi", "shaped", "coefficients"):
+            if key in old:
+                np.testing.assert_allclose(old[key], new[key], rtol=1e-5, atol=1e-6,
+                                           err_msg=key)
 
 
 # Axes along which a regenerated bundle may differ by sign: an eigenvector (a harmonic, a
@@ -73,7 +97,8 @@ def aligned(old: np.ndarray, new: np.ndarray, name: str) -> np.ndarray:
     return new * np.where(signs == 0, 1, signs).reshape(shape)
 
 
-@pytest.mark.parametrize("name", ["basis.bin", "basis16.bin", "spectrogram.bin", "rig.bin"])
+@pytest.mark.parametrize("name", ["basis.bin", "basis16.bin", "spectrogram.bin", "rig.bin",
+                                  "rhythm.bin"])
 def test_committed_bundles_are_what_python_writes_today(name):
     """The binary bundles the Vitest tests parse, regenerated: the same arrays (names, shapes,
     dtypes; values to float32 round-off, eigenvectors up to their sign) and the same meta. A

@@ -3,8 +3,8 @@
 `python tests/web/web_fixture_writer.py` rewrites web/test/fixtures/; test_web_fixtures.py checks
 that the committed files (the JSON numbers and the binary bundles) equal what the current Python
 code writes, so the Vitest tests always compare the TypeScript ports — the filter, the bundle
-parser, rig motion, the palette's default rule, the gallery's grid — with today's reference
-implementation.
+parser, rig motion, the palette's default rule, the gallery's grid, the rhythm (envelopes, the
+pulse, the tempo lock) — with today's reference implementation.
 """
 
 from __future__ import annotations
@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from dataclasses import replace
 
 import numpy as np
 import trimesh
@@ -19,11 +20,12 @@ import trimesh
 from eigendance.export.renderer import gallery_columns
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
-from eigendance.modal.motion import body_poses, default_mapping, rig_coefficients
+from eigendance.modal.motion import body_poses, default_mapping, rig_coefficients, rig_mapping
 from eigendance.modal.palette import resolve_palette
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import open_chain
 from eigendance.music.demo_music import demo_track
+from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
@@ -56,7 +58,8 @@ def build():
                  "coefficients": basis.coefficients.ravel().tolist(), "cases": cases}
     rig_files = rig_reference(spectrogram, values)
     grid = {"columns": {str(count): gallery_columns(count) for count in range(1, 17)}}
-    return {**rig_files, "reference.json": json.dumps(reference, indent=0).encode(),
+    return {**rig_files, **rhythm_reference(basis),
+            "reference.json": json.dumps(reference, indent=0).encode(),
             "grid.json": json.dumps(grid, indent=0).encode(),
             "basis.bin": basis_bundle(basis, "ellipsoid"),
             "basis16.bin": basis_bundle(basis, "ellipsoid", half=True),
@@ -106,6 +109,54 @@ def palette_reference(rig):
         palette = resolve_palette(rig.model, settings)
         cases.append({"modes": fields, "resolved": palette.to_settings().to_json()})
     return {"cases": cases}
+
+
+RHYTHM_TIMES = [0.0, 0.137, 0.5, 0.51, 0.63, 1.2345, 2.0, 2.004, 3.3, 5.1, 5.99]
+
+
+def click_song(seconds: float = 6.0, rate: int = 22050) -> np.ndarray:
+    """Clicks at 120 BPM (from 0.25 s) over a quiet 220 Hz tone: a song with known beats."""
+    t = np.arange(int(seconds * rate)) / rate
+    samples = 0.05 * np.sin(2 * np.pi * 220 * t)
+    for start in np.arange(0.25, seconds, 0.5):
+        i = int(start * rate)
+        burst = np.random.default_rng(int(start * 100)).normal(0, 0.5, 300) * np.exp(
+            -np.arange(300) / 60)
+        samples[i:i + 300] += burst
+    return samples
+
+
+def rhythm_reference(basis):
+    """A click song's rhythm and the version-3 mapping fields played by Python: shaped values
+    (envelopes, auto-range), φ with the pulse on beats and on onsets, and a rig's coefficients
+    locked to the beats and free-running (docs/design.md#rhythm, #mapping, #tempo-lock)."""
+    rate = 22050
+    song = Spectrogram.from_samples(click_song(6.0, rate), rate, bands=16)
+    bands = song.bands
+    envelope = Envelope(np.linspace(0.0, 0.2, bands), np.linspace(0.3, 0.0, bands),
+                        np.linspace(0.0, 0.4, bands), True)
+    gallery = initial_gallery(basis, song, size=4)
+    times = np.array(RHYTHM_TIMES)
+    mappings = [replace(gallery[1], envelope=envelope, smoothing=0.05,
+                        pulse=Pulse(3.0, 0.2, 0.2, 0.6, "beats")),
+                replace(gallery[2], pulse=Pulse(1.5, 0.1, 0.0, 1.0, "onsets"),
+                        envelope=Envelope([0.05], [0.25], [0.1], False)),
+                gallery[3]]
+    cases = [{"mapping": m.to_json(), "phi": m.play(song, times, basis.k).tolist(),
+              "shaped": m.shaped(song).values[::37].tolist()} for m in mappings]
+    rig = Rig.from_skeleton(open_chain(3, "spherical"))
+    rig_cases = []
+    for tempo in (None, "free"):
+        mapping = rig_mapping(rig.model, song)
+        mapping = replace(mapping, pulse=Pulse(0.5, 0.15, 0.0, 1.0, "beats"),
+                          modes=replace(mapping.modes, tempo=tempo))
+        rig_cases.append({"mapping": mapping.to_json(), "coefficients": rig_coefficients(
+            rig.model, song, mapping, times).tolist()})
+    reference = {"times": RHYTHM_TIMES, "frames_step": 37, "beats": song.rhythm.beats.tolist(),
+                 "phase": song.rhythm.beat_phase(times).tolist(), "tempo": song.rhythm.tempo,
+                 "cases": cases, "rig_cases": rig_cases}
+    return {"rhythm.json": json.dumps(reference, indent=0).encode(),
+            "rhythm.bin": spectrogram_bundle(song, "clicks-6s")}
 
 
 def write(folder=FOLDER):

@@ -17,7 +17,7 @@ import { Motion } from "./motion";
 import { galleryRule, gallerySize, sizeChoices } from "./options";
 import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
-import { drawSpectrum } from "./plots";
+import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
@@ -60,6 +60,7 @@ export class App {
       if (this.rigs?.active) this.rigs.viewer.requestDraw(); // a seek or a rewind moves rigs too
       this.showFrame(t);
       drawSpectrum($("spectrum"), this.motion.bandValuesAt(t));
+      drawBeat($("spectrum"), this.motion.spectrum, t);
     };
     const requestDraw = () => this.viewer.requestDraw();
     const status = (text: string) => messages.status(text);

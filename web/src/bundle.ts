@@ -111,6 +111,11 @@ export interface Spectrum {
   times: Float32Array;
   values: Float32Array; // frames*bands in [0,1]
   bandEdges: Float32Array;
+  /** the song's beats and onsets, s (docs/design.md#rhythm; empty without them) */
+  beats: Float32Array;
+  onsets: Float32Array;
+  /** beats per minute, 0: no beat */
+  tempo: number;
 }
 
 export function spectrumFromBundle(bundle: Bundle): Spectrum {
@@ -120,5 +125,8 @@ export function spectrumFromBundle(bundle: Bundle): Spectrum {
     bands: a.values.shape[1], duration: bundle.meta.duration,
     times: a.times.data as Float32Array, values: a.values.data as Float32Array,
     bandEdges: a.band_edges.data as Float32Array,
+    beats: (a.beats?.data as Float32Array) ?? new Float32Array(0),
+    onsets: (a.onsets?.data as Float32Array) ?? new Float32Array(0),
+    tempo: bundle.meta.tempo ?? 0,
   };
 }

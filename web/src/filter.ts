@@ -5,7 +5,24 @@ import { deformReducedCPU } from "./reduced";
 
 export type Shading = "smooth" | "flat" | "wireframe";
 
-/** A mapping file (docs/design.md#mapping-file), version 1 or 2 as read; the page writes 2. */
+/** Per-band envelope of a version-3 mapping (docs/design.md#mapping): one number for every
+ * band or one per band. */
+export interface EnvelopeJSON {
+  attack?: number | number[];
+  release?: number | number[];
+  threshold?: number | number[];
+  auto_range?: boolean;
+}
+
+/** The pulse of a version-3 mapping: kicks on the beats (or onsets) on a range of targets. */
+export interface PulseJSON {
+  source?: "beats" | "onsets";
+  amount?: number;
+  decay?: number;
+  range?: [number, number];
+}
+
+/** A mapping file (docs/design.md#mapping-file), version 1, 2 or 3 as read; the page writes 3. */
 export interface Mapping {
   format: "eigendance.mapping";
   version: number;
@@ -18,6 +35,8 @@ export interface Mapping {
   offset?: number;
   modes?: unknown;
   look?: { deformed_normal_weight?: number; shading?: Shading };
+  envelope?: EnvelopeJSON | null;
+  pulse?: PulseJSON | null;
 }
 
 /** What the player applies besides transfer and amplification: all of it is in the mapping. */
@@ -46,10 +65,10 @@ export function settingsOf(mapping: Mapping): Settings {
   };
 }
 
-/** The mapping with these settings, as a version-2 file (other fields kept). */
+/** The mapping with these settings, as a version-3 file (other fields kept). */
 export function withSettings(mapping: Mapping, settings: Settings): Mapping {
   return {
-    ...mapping, version: 2, gain: settings.gain, smoothing: settings.smoothing,
+    ...mapping, version: 3, gain: settings.gain, smoothing: settings.smoothing,
     offset: mapping.offset ?? 0, modes: mapping.modes ?? null,
     look: { ...mapping.look, deformed_normal_weight: settings.deformedNormalWeight,
       shading: settings.shading },
@@ -87,6 +106,133 @@ export function smoothed(spectrum: Spectrum, tau: number): Float32Array {
   return out;
 }
 
+/** An envelope with one value per band (eigendance.music.envelope.Envelope.for_bands). */
+export interface Envelope {
+  attack: Float64Array;
+  release: Float64Array;
+  threshold: Float64Array;
+  autoRange: boolean;
+  /** all defaults: the values pass unchanged */
+  identity: boolean;
+  /** names the envelope (and the smoothing) for caches of shaped spectrograms */
+  key: string;
+}
+
+export function envelopeOf(mapping: Mapping, bands: number): Envelope {
+  const e = mapping.envelope ?? {};
+  const perBand = (value: number | number[] | undefined) => {
+    const list = value === undefined ? [0] : Array.isArray(value) ? value : [value];
+    return Float64Array.from({ length: bands }, (_, b) => list.length === 1 ? list[0] : list[b]);
+  };
+  const attack = perBand(e.attack), release = perBand(e.release), threshold = perBand(e.threshold);
+  const autoRange = e.auto_range ?? false;
+  const identity = !autoRange && [attack, release, threshold].every((a) => a.every((x) => x === 0));
+  const smoothing = mapping.smoothing ?? 0;
+  const key = identity ? `${smoothing}` : `${smoothing}|${autoRange}|${attack}|${release}|${threshold}`;
+  return { attack, release, threshold, autoRange, identity, key };
+}
+
+/** p-th percentile (linear interpolation, numpy's default) of sorted values. */
+function percentile(sorted: Float64Array, p: number): number {
+  const position = (p / 100) * (sorted.length - 1);
+  const low = Math.floor(position), high = Math.min(low + 1, sorted.length - 1);
+  return sorted[low] + (position - low) * (sorted[high] - sorted[low]);
+}
+
+/** The envelope applied to frames × bands values at `rate` frames/s (auto-range, threshold,
+ * attack/release follower: eigendance.music.envelope.shape_values), as float32. */
+export function shapeValues(values: Float32Array, frames: number, bands: number, rate: number,
+                            envelope: Envelope): Float32Array {
+  if (envelope.identity) return values;
+  const v = Float64Array.from(values);
+  if (envelope.autoRange) {
+    const column = new Float64Array(frames);
+    for (let b = 0; b < bands; b++) {
+      for (let j = 0; j < frames; j++) column[j] = v[j * bands + b];
+      const sorted = column.slice().sort();
+      const low = percentile(sorted, 5), high = percentile(sorted, 95), span = high - low;
+      for (let j = 0; j < frames; j++) {
+        v[j * bands + b] = span <= 1e-6 ? 0
+          : Math.min(1, Math.max(0, (column[j] - low) / span));
+      }
+    }
+  }
+  const memory = (tau: number) => (tau > 0 ? Math.exp(-1 / (rate * tau)) : 0);
+  const rise = Array.from(envelope.attack, memory), fall = Array.from(envelope.release, memory);
+  const out = new Float32Array(values.length);
+  const state = new Float64Array(bands);
+  for (let j = 0; j < frames; j++) {
+    for (let b = 0; b < bands; b++) {
+      let x = v[j * bands + b];
+      if (x < envelope.threshold[b]) x = 0;
+      const m = x > state[b] ? rise[b] : fall[b];
+      state[b] = x + m * (state[b] - x);
+      out[j * bands + b] = state[b];
+    }
+  }
+  return out;
+}
+
+/** A pulse ready for k targets: kicks on `source` events, decay (s), amount, and 1 for the
+ * targets in its range. */
+export interface Pulse {
+  amount: number;
+  decay: number;
+  source: "beats" | "onsets";
+  routed: Float64Array;
+  /** the targets in the range (where routed is 1) */
+  targets: Int32Array;
+}
+
+export function pulseOf(mapping: Mapping, k: number): Pulse {
+  const p = mapping.pulse ?? {};
+  const [low, high] = p.range ?? [0, 1];
+  const routed = Float64Array.from({ length: k }, (_, v) => {
+    const centre = (v + 0.5) / k;
+    return centre >= low && centre <= high ? 1 : 0;
+  });
+  const targets = Int32Array.from([...routed.keys()].filter((v) => routed[v] === 1));
+  return { amount: p.amount ?? 0, decay: p.decay ?? 0.15, source: p.source ?? "beats", routed,
+    targets };
+}
+
+/** The events a pulse kicks on: the song's beats (none without a beat) or onsets. */
+export function pulseEvents(spectrum: Spectrum, pulse: Pulse): Float32Array {
+  if (!(pulse.amount > 0)) return new Float32Array(0);
+  if (pulse.source === "onsets") return spectrum.onsets;
+  return hasBeats(spectrum) ? spectrum.beats : new Float32Array(0);
+}
+
+/** Whether a song has a beat the dances can follow (Rhythm.has_beats: ≥ 4 beats, a tempo). */
+export function hasBeats(spectrum: Spectrum): boolean {
+  return spectrum.beats.length >= 4 && spectrum.tempo > 0;
+}
+
+/** amount·p(t), p(t) = exp(−(t − e)/decay) after the last event e ≤ t, else 0. */
+export function kickAt(pulse: Pulse, events: ArrayLike<number>, t: number): number {
+  if (!(pulse.amount > 0) || events.length === 0 || t < events[0]) return 0;
+  let low = 0, high = events.length - 1; // the last event ≤ t
+  while (low < high) {
+    const middle = (low + high + 1) >> 1;
+    if (events[middle] <= t) low = middle; else high = middle - 1;
+  }
+  return pulse.amount * Math.exp(-Math.max(0, t - events[low]) / pulse.decay);
+}
+
+/** B(t): beats counted continuously, B(b_i) = i, linear between beats and extrapolated with
+ * the first and last intervals (eigendance.music.rhythm.beat_phase). */
+export function beatPhase(beats: ArrayLike<number>, t: number): number {
+  const n = beats.length;
+  if (t < beats[0]) return (t - beats[0]) / (beats[1] - beats[0]);
+  if (t >= beats[n - 1]) return n - 1 + (t - beats[n - 1]) / (beats[n - 1] - beats[n - 2]);
+  let low = 0, high = n - 1;
+  while (high - low > 1) {
+    const middle = (low + high) >> 1;
+    if (beats[middle] <= t) low = middle; else high = middle;
+  }
+  return low + (t - beats[low]) / (beats[low + 1] - beats[low]);
+}
+
 /** Amplification resampled to k entries by normalised index (docs/design.md#mapping). */
 export function resampleAmplification(amplification: number[], k: number): Float64Array {
   const K = amplification.length;
@@ -106,6 +252,10 @@ export interface Prepared {
   amplification: Float64Array;
   gain: number;
   smoothing: number;
+  /** the envelope over the mapping's bands (version 3; identity by default) */
+  envelope: Envelope;
+  /** the pulse (amount 0: none) */
+  pulse: Pulse;
 }
 
 export function prepare(mapping: Mapping, k: number): Prepared {
@@ -115,7 +265,8 @@ export function prepare(mapping: Mapping, k: number): Prepared {
   });
   const { gain, smoothing } = settingsOf(mapping);
   return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k),
-    gain, smoothing };
+    gain, smoothing, envelope: envelopeOf(mapping, mapping.transfer.length),
+    pulse: pulseOf(mapping, k) };
 }
 
 /** The harmonics a mapping moves: reached by a band and amplified (ascending). */
@@ -125,13 +276,18 @@ export function drivenHarmonics(prepared: Prepared): number[] {
   return [...driven].sort((a, b) => a - b);
 }
 
-/** φ(ν) = gain · a(ν) · Σ_{ξ: ν(ξ)=ν} g̃(ξ) + 1, the gain the mapping's unless given. */
+/** φ(ν) = gain · a(ν) · (Σ_{ξ: ν(ξ)=ν} e(ξ) + kick·[ν in the pulse's range]) + 1, the gain
+ * the mapping's unless given; kick = amount·p(t) (`kickAt`). */
 export function filterValues(prepared: Prepared, bandValues: ArrayLike<number>,
-                             gain = prepared.gain, out?: Float64Array): Float64Array {
+                             gain = prepared.gain, out?: Float64Array, kick = 0): Float64Array {
   const phi = out ?? new Float64Array(prepared.k);
   const sums = new Float64Array(prepared.k);
   const B = prepared.harmonicOfBand.length;
   for (let b = 0; b < B; b++) sums[prepared.harmonicOfBand[b]] += bandValues[b];
+  if (kick !== 0) {
+    const targets = prepared.pulse.targets;
+    for (let i = 0; i < targets.length; i++) sums[targets[i]] += kick;
+  }
   for (let v = 0; v < prepared.k; v++) phi[v] = gain * prepared.amplification[v] * sums[v] + 1;
   return phi;
 }

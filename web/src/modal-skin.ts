@@ -2,11 +2,11 @@
 // the mode coefficients c(t) of `eigendance.modal.motion.rig_coefficients`, the shader weights
 // that turn the harmonics' positions pass into GPU modal skinning (thesis §6.5), and the body
 // poses that move bones and three.js linear blend skinning. Same numbers as the Python.
-import { filterValues, prepare } from "./filter";
+import { beatPhase, filterValues, hasBeats, prepare } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import type { Motion } from "./motion";
 import type { ModeSettings, Rig } from "./rig-bundle";
-import { paletteOf } from "./palette";
+import { lockedPhase, lockRatio, paletteOf } from "./palette";
 import { normalising } from "./rig-bundle";
 
 /** A mode mapping prepared for one rig: the filter over its k′ selected modes (`Prepared`,
@@ -24,6 +24,11 @@ export interface RigPrepared extends Prepared {
   offset: number;
   /** false: φ ≡ 1 (music off; the mode gallery's tiles) */
   music: boolean;
+  /** the palette's tempo mode ("free": never locks; "beat" or null: locks to a song with
+   * beats) */
+  tempo: "beat" | "free" | null;
+  /** false: never locks (the mode gallery's tiles, as `rig_coefficients` without a song) */
+  lock: boolean;
 }
 
 /** A mode mapping made ready for `rig` (its palette completed by the default rule: palette.ts). */
@@ -32,37 +37,45 @@ export function prepareRig(rig: Rig, mapping: Mapping, music = true): RigPrepare
   const selected = Int32Array.from(palette.selected!);
   return { ...prepare(mapping, selected.length), selected,
     amplitudes: Float64Array.from(palette.amplitudes!), phases: Float64Array.from(palette.phases!),
-    timeScale: palette.time_scale!, offset: mapping.offset ?? 0, music };
+    timeScale: palette.time_scale!, offset: mapping.offset ?? 0, music,
+    tempo: palette.tempo ?? null, lock: true };
 }
 
 /** Mode κ alone, as its tile of the mode gallery plays it: φ ≡ 1, the bundle's amplitude and
  * phase, time scale s. */
 export function modeTile(rig: Rig, mode: number, timeScale: number): RigPrepared {
-  return { k: 1, harmonicOfBand: new Int32Array(0), amplification: new Float64Array(1), gain: 0,
-    smoothing: 0, selected: Int32Array.of(mode), amplitudes: Float64Array.of(rig.amplitudes[mode]),
-    phases: Float64Array.of(rig.phases[mode]), timeScale, offset: 0, music: false };
+  const silent = prepare({ format: "eigendance.mapping", version: 3, bands: 0, transfer: [],
+    amplification: [0], seed: null }, 1);
+  return { ...silent, gain: 0, selected: Int32Array.of(mode),
+    amplitudes: Float64Array.of(rig.amplitudes[mode]), phases: Float64Array.of(rig.phases[mode]),
+    timeScale, offset: 0, music: false, tempo: "free", lock: false };
 }
 
 /** φ_ν = gain·a(ν)·Σ g̃ + b over the selected modes (band values after the mapping's
  * smoothing); null band values (no song) or music off: φ ≡ 1. */
-export function modeDrive(prepared: RigPrepared, bandValues: ArrayLike<number> | null):
-    Float64Array {
+export function modeDrive(prepared: RigPrepared, bandValues: ArrayLike<number> | null,
+                          kick = 0): Float64Array {
   if (!prepared.music || bandValues === null) return new Float64Array(prepared.k).fill(1);
-  const phi = filterValues(prepared, bandValues); // + 1
+  const phi = filterValues(prepared, bandValues, prepared.gain, undefined, kick); // + 1
   for (let v = 0; v < phi.length; v++) phi[v] += prepared.offset - 1;
   return phi;
 }
 
 /** c (k) at time t: c_{κ_ν} = φ_ν·(A_ν / reach_{κ_ν})·sin(2π ν_{κ_ν} s t + γ_ν), 0 elsewhere
- * (`rig_coefficients`). */
+ * (`rig_coefficients`); locked to the beats (`beat`: B(t) and the tempo), the angle is
+ * 2π r_ν B(t) + γ′_ν instead (docs/design.md#tempo-lock). */
 export function rigCoefficients(rig: Rig, prepared: RigPrepared, phi: ArrayLike<number>, t: number,
-                                out?: Float64Array): Float64Array {
+                                out?: Float64Array, beat?: { phase: number; tempo: number }):
+    Float64Array {
   const c = out ?? new Float64Array(rig.k);
   c.fill(0);
   prepared.selected.forEach((mode, v) => {
     const mu = prepared.amplitudes[v] / rig.reach[mode];
-    c[mode] = phi[v] * mu
-      * Math.sin(2 * Math.PI * rig.frequencies[mode] * prepared.timeScale * t + prepared.phases[v]);
+    const angle = beat
+      ? 2 * Math.PI * lockRatio(rig.frequencies[mode], prepared.timeScale, beat.tempo) * beat.phase
+        + lockedPhase(prepared.phases[v])
+      : 2 * Math.PI * rig.frequencies[mode] * prepared.timeScale * t + prepared.phases[v];
+    c[mode] = phi[v] * mu * Math.sin(angle);
   });
   return c;
 }
@@ -141,14 +154,24 @@ export class RigMotion {
   coefficients(prepared: RigPrepared, t: number): Float64Array {
     const rig = this.rig!;
     if (this.coefficientsBuffer.length !== rig.k) this.coefficientsBuffer = new Float64Array(rig.k);
-    return rigCoefficients(rig, prepared, this.drive(prepared, t), t, this.coefficientsBuffer);
+    return rigCoefficients(rig, prepared, this.drive(prepared, t), t, this.coefficientsBuffer,
+      this.beat(prepared, t));
+  }
+
+  /** B(t) and the tempo when `prepared` locks to the song's beats, else undefined. */
+  beat(prepared: RigPrepared, t: number): { phase: number; tempo: number } | undefined {
+    const spectrum = this.music.spectrum;
+    if (!prepared.lock || prepared.tempo === "free" || !spectrum || !hasBeats(spectrum)) {
+      return undefined;
+    }
+    return { phase: beatPhase(spectrum.beats, t), tempo: spectrum.tempo };
   }
 
   /** φ over the selected modes at time t. */
   drive(prepared: RigPrepared, t: number): Float64Array {
-    const bands = prepared.music && this.music.spectrum
-      ? this.music.bandValuesAt(t, prepared.smoothing) : null;
-    return modeDrive(prepared, bands);
+    const music = prepared.music && this.music.spectrum;
+    const bands = music ? this.music.bandValuesAt(t, prepared) : null;
+    return modeDrive(prepared, bands, music ? this.music.kick(prepared, t) : 0);
   }
 
   weights(prepared: Prepared, t: number): Float32Array {

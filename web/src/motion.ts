@@ -3,19 +3,32 @@
 // that changes the motion (gain, extra smoothing) belongs to the mapping (`Prepared`), so what a
 // tile or the player shows is what its saved mapping gives `eigendance animate`.
 import type { Basis, Spectrum } from "./bundle";
-import { filterValues, prepare, shaderWeights, smoothed, spectrumAt } from "./filter";
-import type { Mapping, Prepared } from "./filter";
+import {
+  filterValues, kickAt, prepare, pulseEvents, shapeValues, shaderWeights, smoothed, spectrumAt,
+} from "./filter";
+import type { Envelope, Mapping, Prepared } from "./filter";
 
 /** Smoothed spectrograms kept (each is frames × bands floats): the slider visits many τ. */
 const SMOOTHED_KEPT = 4;
 
+interface Heard {
+  spectrum: Spectrum;
+  values: Float32Array;
+  buffer: Float32Array;
+  events: Float32Array;
+}
+
 export class Motion {
   basis: Basis | null = null;
   spectrum: Spectrum | null = null;
-  /** the spectrogram after extra smoothing τ (s), most recently used last */
-  private smoothedValues = new Map<number, Float32Array>();
-  /** reused every frame: band values at the time being drawn, one buffer per τ */
-  private buffers = new Map<number, Float32Array>();
+  /** the spectrogram as mappings hear it (smoothing τ, envelope), by `Envelope.key`, most
+   * recently used last */
+  private smoothedValues = new Map<string, Float32Array>();
+  /** reused every frame: the raw band values at the time being drawn */
+  private buffer = new Float32Array(0);
+  /** per prepared mapping (one lookup a frame): the values it hears, its band-values buffer
+   * and the events its pulse kicks on */
+  private heard = new WeakMap<Prepared, Heard>();
   private loudest: { spectrum: Spectrum; count: number; times: number[] } | null = null;
 
   /** Whether there is something to draw. */
@@ -28,19 +41,33 @@ export class Motion {
     this.smoothedValues.clear();
   }
 
-  /** Band values at time t after extra smoothing τ (s; 0: none); the array is reused by the
-   * next call with the same τ. */
-  bandValuesAt(t: number, smoothing = 0): Float32Array {
+  /** Band values at time t as a mapping hears them (its smoothing and envelope; none: the
+   * spectrogram itself); the array is reused by the next call with the same shaping. */
+  bandValuesAt(t: number, prepared?: Prepared): Float32Array {
     const spectrum = this.spectrum!;
-    let buffer = this.buffers.get(smoothing);
-    if (!buffer || buffer.length !== spectrum.bands) {
-      buffer = new Float32Array(spectrum.bands);
-      this.buffers.set(smoothing, buffer);
-      if (this.buffers.size > SMOOTHED_KEPT + 1) {
-        this.buffers.delete(this.buffers.keys().next().value!);
-      }
+    if (prepared) {
+      const heard = this.heardBy(prepared);
+      return spectrumAt(spectrum, t, heard.buffer, heard.values);
     }
-    return spectrumAt(spectrum, t, buffer, this.valuesFor(smoothing));
+    if (this.buffer.length !== spectrum.bands) this.buffer = new Float32Array(spectrum.bands);
+    return spectrumAt(spectrum, t, this.buffer, spectrum.values);
+  }
+
+  /** amount·p(t) of a mapping's pulse on the song's beats or onsets (0 without). */
+  kick(prepared: Prepared, t: number): number {
+    if (!(prepared.pulse.amount > 0) || !this.spectrum) return 0;
+    return kickAt(prepared.pulse, this.heardBy(prepared).events, t);
+  }
+
+  private heardBy(prepared: Prepared): Heard {
+    const spectrum = this.spectrum!;
+    let heard = this.heard.get(prepared);
+    if (!heard || heard.spectrum !== spectrum) {
+      heard = { spectrum, values: this.valuesFor(prepared),
+        buffer: new Float32Array(spectrum.bands), events: pulseEvents(spectrum, prepared.pulse) };
+      this.heard.set(prepared, heard);
+    }
+    return heard;
   }
 
   /** The times (s) of the song's `count` loudest frames (sum over the bands), at least a
@@ -70,23 +97,26 @@ export class Motion {
 
   /** The deformation shader's weights (φ − 1) ⊙ X̃ of one mapping at time t. */
   weights(prepared: Prepared, t: number): Float32Array {
-    const phi = filterValues(prepared, this.bandValuesAt(t, prepared.smoothing));
+    const phi = filterValues(prepared, this.bandValuesAt(t, prepared), prepared.gain, undefined,
+      this.kick(prepared, t));
     return shaderWeights(this.basis!, phi);
   }
 
-  private valuesFor(smoothing: number): Float32Array {
+  private valuesFor(prepared: Prepared): Float32Array {
     const spectrum = this.spectrum!;
-    if (!(smoothing > 0)) return spectrum.values;
-    let values = this.smoothedValues.get(smoothing);
+    const envelope: Envelope = prepared.envelope;
+    if (!(prepared.smoothing > 0) && envelope.identity) return spectrum.values;
+    let values = this.smoothedValues.get(envelope.key);
     if (values) {
-      this.smoothedValues.delete(smoothing); // most recently used goes last
+      this.smoothedValues.delete(envelope.key); // most recently used goes last
     } else {
-      values = smoothed(spectrum, smoothing);
+      values = shapeValues(smoothed(spectrum, prepared.smoothing), spectrum.frames,
+        spectrum.bands, spectrum.rate, envelope);
       if (this.smoothedValues.size >= SMOOTHED_KEPT) {
         this.smoothedValues.delete(this.smoothedValues.keys().next().value!);
       }
     }
-    this.smoothedValues.set(smoothing, values);
+    this.smoothedValues.set(envelope.key, values);
     return values;
   }
 }

@@ -4,8 +4,10 @@
 // (each mode alone bending its most bent joint by 25°, the bundle's `amplitudes`; then all
 // scaled down together if the selected modes in phase would bend a joint beyond 40°), the
 // phases (κ·g, the bundle's `phases`) and the time scale (the s closest to 1 that puts the
-// selected modes' frequencies in [0.8, 3.5] Hz). Vitest checks it against numbers Python writes
-// (web/test/fixtures/palette.json).
+// selected modes' frequencies in [0.8, 3.5] Hz), and the tempo mode (`modes.tempo`, null: locked
+// to the beats of a song that has them). Vitest checks it against numbers Python writes
+// (web/test/fixtures/palette.json). The tempo lock's ratios and phases are `lock_ratios` and
+// `locked_phases` of the same module (docs/design.md#tempo-lock).
 import type { ModeSettings, Rig } from "./rig-bundle";
 
 /** Hz: where the default time scale puts the selected modes (`palette.TEMPO_BAND`). */
@@ -58,5 +60,27 @@ export function paletteOf(rig: Rig, modes: Partial<ModeSettings> | null | undefi
     : sorted.map((mode) => rig.phases[mode]);
   const timeScale = modes?.time_scale
     ?? defaultTimeScale(sorted.map((mode) => rig.frequencies[mode]));
-  return { selected: sorted, amplitudes, phases, time_scale: timeScale };
+  return { selected: sorted, amplitudes, phases, time_scale: timeScale,
+    tempo: modes?.tempo ?? null };
 }
+
+/** The cycles per beat in {½, 1, 2} nearest (in log frequency) to a mode's time-scaled natural
+ * frequency (eigendance.modal.palette.lock_ratios). */
+export function lockRatio(frequency: number, timeScale: number, tempo: number): number {
+  let best = 0.5, distance = Infinity;
+  for (const r of [0.5, 1, 2]) {
+    const d = Math.abs(Math.log(Math.max(frequency * timeScale, 1e-12) / (r * tempo / 60)));
+    if (d < distance) { best = r; distance = d; }
+  }
+  return best;
+}
+
+/** γ snapped to the nearest π/2 + nπ (eigendance.modal.palette.locked_phases; numpy rounds
+ * halves to even). */
+export function lockedPhase(phase: number): number {
+  const x = (phase - Math.PI / 2) / Math.PI;
+  let n = Math.round(x);
+  if (Math.abs(x % 1) === 0.5 && n % 2 !== 0) n -= 1; // round half to even, as numpy
+  return Math.PI / 2 + Math.PI * n;
+}
+

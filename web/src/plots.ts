@@ -1,6 +1,27 @@
 // The small 2D plots: the live spectrum strip, and under each tile its transfer (which harmonic
 // each sound band drives) and its amplification (how strongly each harmonic moves the model).
+import type { Spectrum } from "./bundle";
+import { hasBeats, kickAt } from "./filter";
 import type { Prepared } from "./filter";
+
+/** How long a beat tick on the spectrum strip takes to fade, s. */
+const TICK_DECAY = 0.12;
+const TICK = { amount: 1, decay: TICK_DECAY, source: "beats" as const,
+  routed: new Float64Array(0), targets: new Int32Array(0) };
+
+/** The beat tick of the spectrum strip: its top edge lights up on each of the song's beats and
+ * fades in TICK_DECAY (CSS variable --beat, the opacity of #spectrum::after); the strip's title
+ * says the tempo. */
+export function drawBeat(strip: HTMLElement, spectrum: Spectrum | null, t: number): void {
+  const beats = spectrum && hasBeats(spectrum) ? spectrum.beats : null;
+  strip.style.setProperty("--beat", beats ? kickAt(TICK, beats, t).toFixed(3) : "0");
+  const tempo = beats ? `${spectrum!.tempo.toFixed(0)} BPM: the top edge ticks on each beat`
+    : "no beat detected: the dance follows the loudness";
+  if (strip.dataset.tempo !== tempo) {
+    strip.dataset.tempo = tempo;
+    strip.title = `the song's loudness per band now: bass on the left, treble on the right; ${tempo}`;
+  }
+}
 
 const DRIVEN = "#ffb347";
 const IDLE = "#5a6070";

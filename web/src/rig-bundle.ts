@@ -12,6 +12,9 @@ export interface ModeSettings {
   amplitudes: number[] | null;
   phases: number[] | null;
   time_scale: number | null;
+  /** "beat": locked to the song's beats; "free": the thesis's free-running motion; null (or
+   * absent): "beat" when the song has beats (docs/design.md#tempo-lock) */
+  tempo?: "beat" | "free" | null;
 }
 
 export interface JointInfo {

@@ -63,6 +63,11 @@ export class RigPlayerView {
     range("rig-offset", (v) => v.toFixed(2), (v) => {
       if (this.mapping) { this.mapping.offset = v; this.update(); }
     });
+    $<HTMLInputElement>("rig-beat").addEventListener("change", (e) => {
+      if (!this.palette) return;
+      this.palette.tempo = (e.target as HTMLInputElement).checked ? "beat" : "free";
+      this.update();
+    });
     $<HTMLInputElement>("rig-music").addEventListener("change", (e) => {
       this.music = (e.target as HTMLInputElement).checked;
       this.update();
@@ -117,11 +122,11 @@ export class RigPlayerView {
     });
   }
 
-  /** The player's mapping as *save mapping* writes it: version 2 with its palette and offset.
+  /** The player's mapping as *save mapping* writes it: version 3 with its palette and offset.
    * Music off (φ ≡ 1) is saved as gain 0 and offset 1: the same motion in every player. */
   saved(): Mapping | null {
     if (!this.mapping || !this.palette) return null;
-    return { ...this.mapping, version: 2, gain: this.music ? this.mapping.gain ?? 1 : 0,
+    return { ...this.mapping, version: 3, gain: this.music ? this.mapping.gain ?? 1 : 0,
       smoothing: this.mapping.smoothing ?? 0, offset: this.music ? this.mapping.offset ?? 0 : 1,
       modes: { ...this.palette } };
   }
@@ -221,6 +226,7 @@ export class RigPlayerView {
       $(`${id}-out`).textContent = text;
     };
     setRange("rig-scale", palette.time_scale!, `${palette.time_scale!.toFixed(2)}×`);
+    $<HTMLInputElement>("rig-beat").checked = palette.tempo !== "free";
     setRange("rig-gain", mapping.gain ?? 1, `${(mapping.gain ?? 1).toFixed(2)}×`);
     setRange("rig-offset", mapping.offset ?? 0, (mapping.offset ?? 0).toFixed(2));
     palette.selected!.forEach((mode, v) => {

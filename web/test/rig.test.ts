@@ -6,7 +6,9 @@ import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
-import { deformCPU, spectrumAt } from "../src/filter";
+import {
+  beatPhase, deformCPU, hasBeats, shapeValues, smoothed, spectrumAt,
+} from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { bodyMatrices, modalWeights, modeDrive, prepareRig, rigCoefficients } from "../src/modal-skin";
 import { rigBasis, rigFromBundle, toFileUnits } from "../src/rig-bundle";
@@ -39,10 +41,14 @@ describe("rig motion", () => {
     const mapping = item.mapping as Mapping;
     const prepared = prepareRig(rig, mapping);
     const basis = rigBasis(rig);
+    const shaped = shapeValues(smoothed(spectrum, prepared.smoothing), spectrum.frames,
+      spectrum.bands, spectrum.rate, prepared.envelope); // the default mapping's swell
     reference.times.forEach((t: number, i: number) => {
       it(`case ${index}, t = ${t}: coefficients, modal skinning, body poses`, () => {
-        const bands = spectrumAt(spectrum, t);
-        const c = rigCoefficients(rig, prepared, modeDrive(prepared, bands), t);
+        const bands = spectrumAt(spectrum, t, undefined, shaped);
+        const beat = prepared.tempo !== "free" && hasBeats(spectrum)
+          ? { phase: beatPhase(spectrum.beats, t), tempo: spectrum.tempo } : undefined;
+        const c = rigCoefficients(rig, prepared, modeDrive(prepared, bands), t, undefined, beat);
         const scale = Math.max(...item.coefficients.flat().map(Math.abs));
         expect(worst(c, item.coefficients[i])).toBeLessThan(2e-5 * scale);
         const positions = toFileUnits(rig, deformCPU(basis, modalWeights(rig, c)));

@@ -20,7 +20,7 @@ describe("mapping settings", () => {
     const settings = { gain: 1.7, smoothing: 0.25, deformedNormalWeight: 0.8,
       shading: "flat" as const };
     const saved = withSettings(v1, settings);
-    expect(saved).toMatchObject({ version: 2, gain: 1.7, smoothing: 0.25, offset: 0,
+    expect(saved).toMatchObject({ version: 3, gain: 1.7, smoothing: 0.25, offset: 0,
       look: { deformed_normal_weight: 0.8, shading: "flat" } });
     expect(settingsOf(saved)).toEqual(settings);
     expect(saved.transfer).toEqual(v1.transfer);

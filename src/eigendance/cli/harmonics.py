@@ -127,6 +127,7 @@ def run_spectrum(args) -> None:
     print(f"{args.output}: {len(spectrogram.times)} frames × {spectrogram.bands} bands, "
           f"{spectrogram.duration:.2f} s at {spectrogram.sample_rate} Hz, "
           f"{time.perf_counter() - start:.1f} s")
+    print(f"{args.output}: {spectrogram.rhythm.summary()}")
 
 
 def add_gallery(parser):

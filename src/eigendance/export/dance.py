@@ -311,8 +311,8 @@ class HarmonicDance(Dance):
         self.appearance = basis.appearance
 
     def phi(self, times) -> np.ndarray:
-        """φ(t) (T, k): the mapping's filter of the (smoothed) spectrogram at the dance's times
-        (the song's times start + t).
+        """φ(t) (T, k): the mapping's filter on the song (`Mapping.play`: smoothing, envelope,
+        pulse) at the dance's times (the song's times start + t).
 
         Parameters
         ----------
@@ -322,9 +322,8 @@ class HarmonicDance(Dance):
         -------
         (T, k).
         """
-        values = self.spectrogram.smoothed(self.mapping.smoothing).at(
-            self.start + np.asarray(times, dtype=np.float64))
-        return self.mapping.filter(values, self.basis.k)
+        times = self.start + np.asarray(times, dtype=np.float64)
+        return self.mapping.play(self.spectrogram, times, self.basis.k)
 
     def loudest_times(self, count: int) -> np.ndarray:
         """The dance's `count` loudest moments (largest sum over bands of a spectrogram frame),

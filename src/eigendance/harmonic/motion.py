@@ -1,7 +1,7 @@
 """Harmonic motion: vertex positions over time for a basis, a spectrogram and a mapping
 (docs/design.md#harmonic-motion).
 
-At time t the filter is φ(t) = mapping.filter(spectrogram.at(t), k) and the positions are
+At time t the filter is φ(t) = mapping.play(spectrogram, t, k) and the positions are
 X_φ = X + U((φ − 1) ⊙ X̃), returned in the mesh file's coordinates (after clean-up):
 X_φ·scale + center.
 
@@ -57,7 +57,7 @@ def positions_at(basis: HarmonicBasis, spectrogram: Spectrogram, mapping: Mappin
     >>> positions.shape, bool(np.allclose(positions[1], sphere.vertices))
     ((2, 162, 3), True)
     """
-    phi = mapping.filter(spectrogram.smoothed(mapping.smoothing).at(times), basis.k)
+    phi = mapping.play(spectrogram, times, basis.k)
     return basis.to_original(basis.filter_positions(phi))
 
 
@@ -92,14 +92,14 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
     (first frame index, (C, n, 3)).
     """
     times = np.asarray(times, dtype=np.float64)
-    spectrogram = spectrogram.smoothed(mapping.smoothing)
+    play = mapping.player(spectrogram)
     deform = basis.deformer(original=True)
     per_chunk = chunk_frames(basis.n)
     buffers = [np.empty((min(per_chunk, len(times)), basis.n, 3), dtype=dtype)
                for _ in range(2)]
     for number, first in enumerate(range(0, len(times), per_chunk)):
         chunk = times[first:first + per_chunk]
-        phi = mapping.filter(spectrogram.at(chunk), basis.k)
+        phi = play(chunk, basis.k)
         yield first, deform(phi, buffers[number % 2][:len(chunk)])
 
 

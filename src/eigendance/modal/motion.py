@@ -25,17 +25,23 @@ from eigendance.files import atomic_save_npz
 from eigendance.modal.model import ModalModel
 from eigendance.modal.palette import (
     Palette,
+    lock_ratios,
+    locked_phases,
     mode_reach,
     resolve_palette,
     single_mode_amplitudes,
 )
 from eigendance.modal.rotations import rotation_exp
+from eigendance.music.envelope import Envelope
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 
+DRIVE_ATTACK, DRIVE_RELEASE = 0.15, 0.8  # s: the default mapping's envelope (a slow swell)
+
 
 def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
-                      time_scale: float = 1.0, drive=None, modes=None) -> np.ndarray:
+                      time_scale: float = 1.0, drive=None, modes=None,
+                      beat=None) -> np.ndarray:
     """c_κ(t) = φ_κ(t)·μ_κ·sin(2πν_κ s t + γ_κ): the kernel of the motion.
 
     Parameters
@@ -48,6 +54,9 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
     time_scale : s.
     drive : φ, (T, nm) (or (T, len(modes)) when `modes` is given); default 1.
     modes : indices of the modes that move (others get c = 0); default all.
+    beat : None (free-running), or (B(t) (T,) the beat phase in beats, tempo in beats per
+        minute): the tempo lock, where the angle is 2π r_κ B(t) + γ′_κ with r_κ =
+        `lock_ratios` and γ′ = `locked_phases` (docs/design.md#tempo-lock).
 
     Returns
     -------
@@ -64,8 +73,14 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
     phases = np.zeros(count) if phases is None else \
         np.broadcast_to(np.asarray(phases, dtype=float), (count,))
     result = np.zeros((times.size, count))
-    argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
-        + phases[selected]
+    if beat is None:
+        argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
+            + phases[selected]
+    else:
+        phase, tempo = beat
+        ratios = lock_ratios(model.frequencies[selected], time_scale, tempo)
+        argument = 2 * math.pi * ratios * np.asarray(phase, dtype=float).reshape(-1, 1) \
+            + locked_phases(phases[selected])
     values = amplitudes[selected] * np.sin(argument)
     if drive is not None:
         drive = np.asarray(drive, dtype=float)
@@ -119,6 +134,9 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
     >>> c = rig_coefficients(model, None, None, np.linspace(0, 1, 5))
     >>> c.shape, bool(np.all(c[0] == 0))          # sin(γ) with γ_0 = 0 … and the others not 0
     ((5, 5), False)
+
+    With a song whose spectrogram holds beats, the default palette (or `modes.tempo` "beat")
+    locks to them (`tempo_lock`); `modes.tempo` "free" keeps the free-running sinusoids.
     """
     times = np.asarray(times, dtype=float).reshape(-1)
     palette = mapping_palette(model, mapping)
@@ -133,7 +151,32 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
     amplitudes[palette.selected] = palette.coefficient_amplitudes(model)
     phases[palette.selected] = palette.phases
     return mode_coefficients(model, times, amplitudes, phases, palette.time_scale, drive,
-                             palette.selected)
+                             palette.selected, tempo_lock(spectrogram, mapping, times))
+
+
+def tempo_lock(spectrogram: Spectrogram | None, mapping: Mapping | None, times):
+    """The tempo lock of a dance (docs/design.md#tempo-lock), or None (free-running).
+
+    It locks when the palette's `tempo` is "beat" or unset and the song has beats
+    (`Rhythm.has_beats`: a spectrogram file of version 2 with at least 4 beats).
+
+    Parameters
+    ----------
+    spectrogram : the song, or None (no song: free-running).
+    mapping : the mapping played (its `modes.tempo`), or None.
+    times : (T,) s of the song.
+
+    Returns
+    -------
+    (B(t) (T,) beats counted continuously, tempo in beats per minute), or None.
+    """
+    rhythm = getattr(spectrogram, "rhythm", None)
+    settings = mapping.modes if mapping is not None else None
+    if settings is not None and settings.tempo == "free":
+        return None
+    if rhythm is None or not rhythm.has_beats:
+        return None
+    return rhythm.beat_phase(times), rhythm.tempo
 
 
 def twists(model: ModalModel, coefficients) -> np.ndarray:
@@ -201,7 +244,9 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
 
     Band ξ drives the mode ⌊(ξ + ½)·nm/B⌋ (low sounds drive low modes), each with the
     amplification nm/B, so that a full-scale spectrum gives φ ≈ 1 on every mode that a band
-    reaches.
+    reaches. The loudness swells (attack DRIVE_ATTACK, release DRIVE_RELEASE): the sway's
+    amplitude follows the music while its turning points stay the sinusoids' (on the beats,
+    docs/design.md#tempo-lock), not every drum hit's.
 
     Parameters
     ----------
@@ -213,7 +258,8 @@ def band_mapping(bands: int, n_modes: int) -> Mapping:
     Mapping named "bands in order".
     """
     transfer = (np.arange(bands) + 0.5) / bands
-    return Mapping(transfer, np.array([n_modes / bands]), name="bands in order")
+    return Mapping(transfer, np.array([n_modes / bands]), name="bands in order",
+                   envelope=Envelope([DRIVE_ATTACK], [DRIVE_RELEASE], [0.0]))
 
 
 def song_calibrated(mapping: Mapping, spectrogram: Spectrogram, n_modes: int) -> Mapping:
@@ -283,7 +329,7 @@ def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
         else ModeSettings()
     if selected is not None:
         settings = ModeSettings(np.asarray(selected, dtype=np.int64), None, None,
-                                settings.time_scale)
+                                settings.time_scale, settings.tempo)
     if amplitude is not None:
         count = len(resolve_palette(model, settings).selected)
         settings = replace(settings, amplitudes=np.full(count, float(amplitude)))
@@ -293,7 +339,7 @@ def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
     if mapping is None:
         mapping = band_mapping(bands, len(palette.selected)) if spectrogram is None else \
             default_mapping(spectrogram, len(palette.selected))
-    return replace(mapping, modes=palette.to_settings(),
+    return replace(mapping, modes=replace(palette.to_settings(), tempo=settings.tempo),
                    offset=mapping.offset if offset is None else float(offset))
 
 
@@ -301,7 +347,8 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
                offset: float | None = None) -> np.ndarray:
     """φ (T, n_modes) = gain·a·Σ g̃ + b: the mapping's filter over the modes at `times`.
 
-    b = `offset`, else the mapping's own offset; the mapping's smoothing applies first.
+    b = `offset`, else the mapping's own offset; the song goes through `Mapping.play`
+    (smoothing, envelope, pulse).
 
     Parameters
     ----------
@@ -319,8 +366,7 @@ def mode_drive(mapping: Mapping, spectrogram: Spectrogram, times, n_modes: int,
         raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands, the song's "
                          f"spectrogram {spectrogram.bands}; analyse the song into "
                          f"{mapping.bands} bands")
-    values = spectrogram.smoothed(mapping.smoothing).at(np.asarray(times, dtype=float))
-    return mapping.filter(values, n_modes, mapping.offset if offset is None else offset)
+    return mapping.play(spectrogram, times, n_modes, mapping.offset if offset is None else offset)
 
 
 def parse_modes(text: str | None, n_modes: int) -> np.ndarray | None:

@@ -302,3 +302,52 @@ def _matched(values, selected, key: str) -> np.ndarray:
         raise InputError(f"modes.{key} has {values.size} values for {len(selected)} selected "
                          "modes")
     return values
+
+
+# ---------------------------------------------------------------------------------------------
+# Tempo lock (docs/design.md#tempo-lock)
+
+LOCK_RATIOS = (0.5, 1.0, 2.0)  # cycles per beat a locked mode may make: half, the beat, double
+
+
+def lock_ratios(frequencies, time_scale: float, tempo: float) -> np.ndarray:
+    """r_κ: the cycles per beat in LOCK_RATIOS nearest (in log frequency) to each mode's
+    time-scaled natural frequency s·ν_κ, for a song at `tempo` beats per minute
+    (docs/design.md#tempo-lock).
+
+    Parameters
+    ----------
+    frequencies : (k,) ν_κ, Hz.
+    time_scale : s.
+    tempo : beats per minute (> 0).
+
+    Returns
+    -------
+    (k,) cycles per beat, each ½, 1 or 2.
+
+    Example
+    -------
+    >>> lock_ratios([0.9, 1.8, 5.0], 1.0, 120.0).tolist()    # 2 beats per second
+    [0.5, 1.0, 2.0]
+    """
+    frequencies = np.asarray(frequencies, dtype=float) * time_scale
+    ratios = np.asarray(LOCK_RATIOS)
+    beat = tempo / 60.0
+    distance = np.abs(np.log(np.maximum(frequencies[:, None], 1e-12) / (ratios[None] * beat)))
+    return ratios[np.argmin(distance, axis=1)]
+
+
+def locked_phases(phases) -> np.ndarray:
+    """γ snapped to the nearest π/2 + nπ: sin(2π r B + γ) then turns on the beats (r = ½: every
+    beat; r = 1: every beat and half-beat; r = 2: every quarter-beat).
+
+    Parameters
+    ----------
+    phases : (k,) γ, radians.
+
+    Returns
+    -------
+    (k,) γ′, radians (halves rounded to even, as numpy rounds).
+    """
+    phases = np.asarray(phases, dtype=float)
+    return math.pi / 2 + math.pi * np.round((phases - math.pi / 2) / math.pi)

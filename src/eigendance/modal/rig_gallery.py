@@ -23,6 +23,8 @@ from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 
 QUADRATURE = math.pi / 2  # phase between gallery items next to each other in tempo
+# The dances of a rig gallery run free at their own tempo and phase (`rig_gallery`).
+GALLERY_TEMPO = "free"
 
 
 class RigDancer:
@@ -100,7 +102,10 @@ def rig_gallery(dancer: RigDancer, spectrogram: Spectrogram,
     motion's level (docs/design.md#modal-motion). A few modes give few different transfers
     (one mode: every item the same), so the items also play at their own tempo and phase
     (`varied_palettes`): item 0 the dancer's palette, the others its time scale and phases
-    varied.
+    varied. They run free (`modes.tempo` "free", GALLERY_TEMPO): the tempo lock
+    (docs/design.md#tempo-lock) would round every time scale to ½, 1 or 2 cycles per beat and
+    every phase to π/2 + nπ, and a one-mode rig's dances would be one dance again; the default
+    dance (`Rig.mapping`) locks, and the player's "on the beat" switch locks any of them.
 
     Parameters
     ----------
@@ -121,7 +126,7 @@ def rig_gallery(dancer: RigDancer, spectrogram: Spectrogram,
             sign = -1.0 if item.amplification.min() < 0 else 1.0
             item = item.with_genes(item.transfer, np.full(k, sign), item.seed, item.name)
         playing.append(replace(song_calibrated(item, spectrogram, k),
-                               modes=palette.to_settings()))
+                               modes=replace(palette.to_settings(), tempo=GALLERY_TEMPO)))
     return playing
 
 

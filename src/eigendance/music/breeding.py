@@ -8,10 +8,12 @@ in Python and in the browser (tests/js/breed_reference.mjs).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.mapping import Mapping, resample_amplification
 
 
@@ -138,6 +140,12 @@ def breed(parents, size: int = 8, seed: int = 0,
       3. amplification: the same as 2 with the amplifications (an independent coin).
     Amplifications of other lengths than parent 0's are first resampled to its length K; child
     transfers are clipped to [0, 1] (a convex combination can overshoot 1 by one rounding).
+    The rhythm genes (version 3) come from a second stream, Mulberry32(seed + RHYTHM_STREAM),
+    so the draws above are those of earlier versions; per child, after the same parent pair:
+      4. envelope: the same as 2 with the vector [attack, release, threshold] (3B values);
+         auto-range is parent i's;
+      5. pulse: the same as 2 with [amount, decay, low, high] (low and high sorted after);
+         the source is parent i's.
     Children carry `seed` in their JSON, and parent i's other settings (gain, smoothing,
     offset, palette, look).
 
@@ -166,6 +174,7 @@ def breed(parents, size: int = 8, seed: int = 0,
     transfers = [p.transfer for p in parents]
     amplifications = [resample_amplification(p.amplification, K) for p in parents]
     random = Mulberry32(seed)
+    rhythm_random = Mulberry32(int(seed) + RHYTHM_STREAM)
     children = []
     for c in range(size):
         if len(parents) == 1:
@@ -182,5 +191,50 @@ def breed(parents, size: int = 8, seed: int = 0,
                 genes.append(vectors[i].copy() if random.uniform() < 0.5 else vectors[j].copy())
         transfer = np.clip(genes[0], 0.0, 1.0)
         # Settings besides the genes (gain, smoothing, offset, palette, look): parent i's.
-        children.append(parents[i].with_genes(transfer, genes[1], int(seed), f"child {c}"))
+        child = parents[i].with_genes(transfer, genes[1], int(seed), f"child {c}")
+        children.append(with_rhythm_genes(child, parents[i], parents[j], rhythm_random,
+                                          mean_segment))
     return children
+
+
+RHYTHM_STREAM = 0x9E3779B9  # the rhythm genes' generator starts from seed + this
+
+
+def with_rhythm_genes(child: Mapping, first: Mapping, second: Mapping, random: Mulberry32,
+                      mean_segment) -> Mapping:
+    """The child with envelope and pulse genes of its parents (`breed`, steps 4 and 5).
+
+    Parameters
+    ----------
+    child : the child with its transfer and amplification genes.
+    first, second : its parents i and j (the first gives auto-range and the pulse's source).
+    random : the rhythm genes' generator (Mulberry32(seed + RHYTHM_STREAM)).
+    mean_segment : the crossing's mean segment length, as for the other genes.
+
+    Returns
+    -------
+    Mapping.
+    """
+
+    def gene(a, b):
+        if random.uniform() < 0.5:
+            return cross(a, b, random, mean_segment)
+        return np.array(a if random.uniform() < 0.5 else b, dtype=np.float64)
+
+    def envelope_vector(m):
+        e = m.envelope
+        return np.concatenate([e.attack, e.release, e.threshold])
+
+    def pulse_vector(m):
+        p = m.pulse
+        return np.array([p.amount, p.decay, p.low, p.high])
+
+    bands = child.bands
+    shape = gene(envelope_vector(first), envelope_vector(second))
+    amount, decay, low, high = gene(pulse_vector(first), pulse_vector(second))
+    low, high = sorted((float(np.clip(low, 0, 1)), float(np.clip(high, 0, 1))))
+    envelope = Envelope(shape[:bands], shape[bands:2 * bands], np.clip(shape[2 * bands:], 0, 1),
+                        first.envelope.auto_range)
+    pulse = Pulse(max(0.0, float(amount)), max(1e-3, float(decay)), low, high,
+                  first.pulse.source)
+    return replace(child, envelope=envelope, pulse=pulse)

@@ -16,7 +16,7 @@ from typing import Protocol
 
 import numpy as np
 
-from eigendance.music.mapping import Mapping
+from eigendance.music.mapping import Mapping, filters
 
 CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
 MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy
@@ -81,23 +81,21 @@ def motion_gram(dancer: Dancer, targets) -> np.ndarray:
     return fields @ fields.T / moved.shape[1]
 
 
-def song_frames(spectrogram, smoothing: float = 0.0) -> np.ndarray:
-    """Band values of at most CALIBRATION_FRAMES evenly spaced frames of the song (F, B),
-    smoothed once more by `smoothing` s (a mapping's setting).
+def song_times(spectrogram) -> np.ndarray:
+    """The times of at most CALIBRATION_FRAMES evenly spaced frames of the song.
 
     Parameters
     ----------
     spectrogram : the song.
-    smoothing : s.
 
     Returns
     -------
-    (F, B) float64.
+    (F,) s, ascending.
     """
-    values = np.asarray(spectrogram.smoothed(smoothing).values, dtype=np.float64)
-    if len(values) > CALIBRATION_FRAMES:
-        values = values[np.linspace(0, len(values) - 1, CALIBRATION_FRAMES).round().astype(int)]
-    return values
+    count = len(spectrogram.values)
+    frames = np.arange(count) if count <= CALIBRATION_FRAMES else \
+        np.linspace(0, count - 1, CALIBRATION_FRAMES).round().astype(int)
+    return frames / spectrogram.rate
 
 
 def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
@@ -144,7 +142,8 @@ class ItemMotion:
 
 
 def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndarray, np.ndarray]:
-    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T).
+    """The targets a mapping moves on the song, and φ − 1 on them at the song's frames (F, T)
+    (`Mapping.play`: its smoothing, envelope and pulse).
 
     Parameters
     ----------
@@ -157,7 +156,7 @@ def item_weights(dancer: Dancer, spectrogram, mapping: Mapping) -> tuple[np.ndar
     (targets (T,) int64, w (F, T)).
     """
     k = len(dancer.frequencies)
-    w = mapping.filter(song_frames(spectrogram, mapping.smoothing), k) - 1.0
+    w = mapping.play(spectrogram, song_times(spectrogram), k) - 1.0
     targets = np.flatnonzero(np.abs(w).max(axis=0) > 0)
     return targets, w[:, targets]
 
@@ -198,7 +197,7 @@ def gallery_motion(dancer: Dancer, spectrogram, mappings) -> list[ItemMotion]:
 
 def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
     """RMS vertex displacement of each mapping at full-scale input g̃ ≡ 1 (S,), in the units
-    of the displacements: the most the music can move it.
+    of the displacements: the most the music can move it (a pulse, if any, at its full kick).
 
     Parameters
     ----------
@@ -212,7 +211,8 @@ def full_scale_motion(dancer: Dancer, mappings) -> np.ndarray:
     k = len(dancer.frequencies)
     motion = []
     for mapping in mappings:
-        w = mapping.filter(np.ones((1, mapping.bands)), k) - 1.0
+        w = filters([mapping], np.ones((1, mapping.bands)), k, 1.0,
+                    np.full((1, 1), mapping.pulse.amount))[0] - 1.0
         targets = np.flatnonzero(w[0])
         motion.append(frame_motion(w[:, targets], motion_gram(dancer, targets))[0]
                       if len(targets) else 0.0)

@@ -27,8 +27,9 @@ from eigendance.music.dancer import (
     full_scale_motion,
     gallery_motion,
     motion_gram,
-    song_frames,
+    song_times,
 )
+from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.mapping import Mapping
 
 MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
@@ -42,6 +43,9 @@ ZERO_FREQUENCY = 1e-6  # ω_ν ≤ this · ω_max: eigenvalue 0, a translation o
 # arithmetic (1e-15) or of the file's coordinates (6 to 7 significant digits in OBJ, PLY, STL).
 CONTENT_FLOOR = 1e-6
 GRAM_CHUNK = 64  # harmonics per block when only the diagonal of the Gram matrix is needed
+# Items that pulse on the beat (`beat_shaping`): the loudness's attack and release (s), the
+# kick's decay (s) and its size against the loud frames' band sum.
+PULSE_ATTACK, PULSE_RELEASE, PULSE_DECAY, PULSE_SHARE = 0.1, 0.5, 0.18, 1.0
 
 
 def check_gallery_size(size) -> int:
@@ -257,6 +261,8 @@ def part_transfer(part: Part, bands: int, k: int) -> np.ndarray:
             index = width - 1 - index
     return (part.harmonics[index] + 0.5) / k
 
+
+# ---------------------------------------------------------------------------------------------
 # The gallery
 
 
@@ -275,9 +281,10 @@ def motion_targets(size: int) -> np.ndarray:
                                                                 max(1, size - 1))
 
 
-def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
+def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
               target: float, diagonal: float) -> float:
-    """α such that α·unit moves the model by m = target on these frames (F, B).
+    """α such that α·(the mapping's amplification) moves the model by m = target on the song
+    at these times (F,) (its envelope and pulse included).
 
     m is linear in α: α = target·diagonal / (95th percentile of the unit motion), lowered so
     that no frame moves more than PEAK_MOTION; a silent song is calibrated at full-scale input
@@ -286,9 +293,9 @@ def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
     Parameters
     ----------
     dancer : the model.
-    values : (F, B) the song's frames.
-    transfer : (B,).
-    unit_amplification : (k,).
+    spectrogram : the song.
+    times : (F,) s, the song's frames measured (`song_times`).
+    mapping : the item with its unit amplification (its transfer, envelope and pulse).
     target : m, a fraction of the diagonal.
     diagonal : the model's diagonal.
 
@@ -297,10 +304,9 @@ def calibrate(dancer: Dancer, values: np.ndarray, transfer, unit_amplification,
     float α.
     """
     k = len(dancer.frequencies)
-    mapping = Mapping(transfer, unit_amplification)
-    targets = np.flatnonzero(unit_amplification)
+    targets = np.flatnonzero(mapping.amplification)
     gram = motion_gram(dancer, targets)
-    rms = frame_motion(mapping.filter(values, k)[:, targets] - 1.0, gram)
+    rms = frame_motion(mapping.play(spectrogram, times, k)[:, targets] - 1.0, gram)
     typical, peak = np.percentile(rms, 95), rms.max()
     if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
         return target * diagonal / full_scale_motion(dancer, [mapping])[0]
@@ -356,14 +362,18 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
     drivable = drivable_harmonics(dancer, content)
     parts = ranged_parts(drivable, size) if len(drivable) >= size else \
         combined_parts(drivable, content, size)
-    values = song_frames(spectrogram)
+    times = song_times(spectrogram)
     diagonal = dancer.diagonal
     transfers = [part_transfer(part, bands, k) for part in parts]
+    shapings = [beat_shaping(part, spectrogram, k) if s % 2 else (Envelope(), Pulse())
+                for s, part in enumerate(parts)]
     scales = []
-    for part, transfer, target in zip(parts, transfers, motion_targets(size), strict=True):
+    for part, transfer, target, (envelope, pulse) in zip(parts, transfers, motion_targets(size),
+                                                         shapings, strict=True):
         unit = np.zeros(k)
         unit[part.harmonics] = part.unit
-        scales.append(calibrate(dancer, values, transfer, unit, target, diagonal))
+        mapping = Mapping(transfer, unit, envelope=envelope, pulse=pulse)
+        scales.append(calibrate(dancer, spectrogram, times, mapping, target, diagonal))
     dormant = np.zeros(k)  # |amplification| every item has on each harmonic outside its part
     for part, scale in zip(parts, scales, strict=True):
         dormant[part.home] = scale * part.profile
@@ -371,8 +381,40 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
     for s, (part, transfer, scale) in enumerate(zip(parts, transfers, scales, strict=True)):
         amplification = (1.0 if s % 2 == 0 else -1.0) * dormant
         amplification[part.harmonics] = scale * part.unit
-        items.append(Mapping(transfer, amplification, None, f"gallery item {s + 1}"))
+        envelope, pulse = shapings[s]
+        items.append(Mapping(transfer, amplification, None, f"gallery item {s + 1}",
+                             envelope=envelope, pulse=pulse))
     return items
+
+
+def beat_shaping(part: Part, spectrogram, k: int) -> tuple[Envelope, Pulse]:
+    """The envelope and pulse of an item that pulses on the beat (the odd items).
+
+    The loudness swells slowly (attack PULSE_ATTACK, release PULSE_RELEASE: its own peaks are
+    few and broad) and each beat kicks the item's own harmonics, decaying in PULSE_DECAY, by
+    PULSE_SHARE times what the song's loud frames give them (the band sum of the B/w bands
+    each of its w harmonics receives at the 95th percentile of the mean loudness): the peaks of
+    the motion land on the beats. A song without beats plays the swell alone.
+
+    Parameters
+    ----------
+    part : the item's part of the harmonics.
+    spectrogram : the song.
+    k : the model's harmonics.
+
+    Returns
+    -------
+    (Envelope, Pulse).
+    """
+    bands = spectrogram.bands
+    width = len(part.harmonics)
+    level = float(np.percentile(np.asarray(spectrogram.values, dtype=np.float64).mean(axis=1),
+                                95)) if len(spectrogram.values) else 0.0
+    amount = PULSE_SHARE * bands / width * max(level, 0.05)
+    low = float(part.harmonics.min()) / k
+    high = float(part.harmonics.max() + 1) / k
+    return (Envelope([PULSE_ATTACK], [PULSE_RELEASE], [0.0]),
+            Pulse(amount, PULSE_DECAY, low, high, "beats"))
 
 
 def strongest_item(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY) -> Mapping:

@@ -8,7 +8,13 @@ amplification a (K,). For k targets (the harmonics of a mesh, or the vibration m
 where a_k is a resampled to length k by normalised index: a_k(ν) = a(min(K − 1, ⌊(ν + ½)·K/k⌋))
 (each target takes the amplification of the cell its centre falls in; a_k = a when K = k), and
 the offset b is 1 for harmonics (thesis 6-1: a ≡ 0 leaves the mesh still) and the mapping's
-own for modes.
+own for modes. Version 3 shapes g̃ first (envelopes, auto-range: `eigendance.music.envelope`)
+and adds a pulse on the beats to a range of targets:
+
+    φ(ν) = gain·a_k(ν)·(Σ_{ξ: ν(ξ)=ν} e(ξ, t) + amount·p(t)·[ν in the pulse's range]) + b.
+
+`Mapping.play` is the one path from a song to φ that every caller takes (animate, export,
+render, the rig motion, the gallery).
 """
 
 from __future__ import annotations
@@ -21,10 +27,12 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import atomic_write, finite_number, read_json
+from eigendance.music.envelope import Envelope, Pulse, shape_values
 
 FORMAT = "eigendance.mapping"
-VERSION = 2  # written; version 1 (transfer, amplification, seed) is still read
-READABLE_VERSIONS = (1, 2)
+VERSION = 3  # written; versions 1 (transfer, amplification, seed) and 2 are still read
+READABLE_VERSIONS = (1, 2, 3)
+TEMPO_MODES = ("beat", "free")  # a rig's palette: locked to the song's beats, or free-running
 
 
 SHADINGS = ("smooth", "flat", "wireframe")
@@ -36,17 +44,20 @@ class ModeSettings:
 
     Every field may be None: the default rule of `eigendance.modal.motion` then decides.
     selected: indices of the modes that move; amplitudes: per selected mode, its largest body
-    rotation at φ = 1, radians; phases: per selected mode, γ in radians; time_scale: s.
+    rotation at φ = 1, radians; phases: per selected mode, γ in radians; time_scale: s;
+    tempo: "beat" (locked to the song's beats, docs/design.md#tempo-lock) or "free" (the
+    thesis's free-running sinusoids); None: "beat" when the song has beats.
 
     Parameters
     ----------
-    selected, amplitudes, phases, time_scale : as above.
+    selected, amplitudes, phases, time_scale, tempo : as above.
     """
 
     selected: np.ndarray | None = None
     amplitudes: np.ndarray | None = None
     phases: np.ndarray | None = None
     time_scale: float | None = None
+    tempo: str | None = None
 
     def to_json(self) -> dict:
         """The `modes` field of a mapping document.
@@ -57,7 +68,8 @@ class ModeSettings:
         """
         return {"selected": _listed(self.selected, int),
                 "amplitudes": _listed(self.amplitudes), "phases": _listed(self.phases),
-                "time_scale": None if self.time_scale is None else float(self.time_scale)}
+                "time_scale": None if self.time_scale is None else float(self.time_scale),
+                "tempo": self.tempo}
 
     @classmethod
     def from_json(cls, data, name: str) -> ModeSettings:
@@ -98,8 +110,12 @@ class ModeSettings:
         time_scale = _number(data.get("time_scale"), "modes.time_scale", name, optional=True)
         if time_scale is not None and not time_scale > 0:
             raise InputError(f"{name}: modes.time_scale must be positive")
+        tempo = data.get("tempo")
+        if tempo is not None and tempo not in TEMPO_MODES:
+            raise InputError(f"{name}: modes.tempo must be one of {', '.join(TEMPO_MODES)} or "
+                             f"null, got {_shown(tempo)}")
         return cls(None if selected is None else np.array(selected, dtype=np.int64),
-                   vectors["amplitudes"], vectors["phases"], time_scale)
+                   vectors["amplitudes"], vectors["phases"], time_scale, tempo)
 
 
 @dataclass
@@ -120,6 +136,8 @@ class Mapping:
     deformed_normal_weight : weight of the deformed triangle's flat normal against the original
         vertex normal, in [0, 1] (thesis Fig. 6.4(d): 0.4).
     shading : "smooth", "flat" or "wireframe".
+    envelope : per-band attack, release, threshold and auto-range (`Envelope`; version 3).
+    pulse : kicks on the beats routed to a range of targets (`Pulse`; version 3).
 
     Example
     -------
@@ -140,6 +158,8 @@ class Mapping:
     modes: ModeSettings | None = None
     deformed_normal_weight: float = 0.4
     shading: str = "smooth"
+    envelope: Envelope = field(default_factory=Envelope)
+    pulse: Pulse = field(default_factory=Pulse)
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
@@ -157,6 +177,7 @@ class Mapping:
         if self.shading not in SHADINGS:
             raise InputError(f"{self.name}: shading must be one of {', '.join(SHADINGS)}, got "
                              f"{self.shading!r}")
+        self.envelope = self.envelope.for_bands(self.bands, self.name)
 
     @property
     def bands(self) -> int:
@@ -207,6 +228,52 @@ class Mapping:
         """
         return filters([self], values, k, offset)[0]
 
+    def play(self, spectrogram, times, k: int, offset: float = 1.0) -> np.ndarray:
+        """φ of this mapping on a song: the one path from a song to the filter (module
+        docstring). The spectrogram is smoothed by `smoothing`, shaped by the envelope
+        (`shaped`), interpolated at the times, and the pulse (the song's rhythm) added.
+
+        Parameters
+        ----------
+        spectrogram : the song (`Spectrogram`, its `rhythm` for the pulse).
+        times : (T,) s of the song.
+        k : the targets.
+        offset : b.
+
+        Returns
+        -------
+        (T, k).
+
+        Example
+        -------
+        >>> from eigendance.music.spectrogram import Spectrogram
+        >>> song = Spectrogram([0.0, 0.5], [20.0, 200.0, 2000.0], np.float32([[0, 1], [1, 1]]),
+        ...                    2.0, 8000, 1.0)
+        >>> Mapping([0.0, 0.9], [1.0]).play(song, [0.0, 0.25], 2).tolist()
+        [[1.0, 2.0], [1.5, 2.0]]
+        """
+        return self.player(spectrogram)(times, k, offset)
+
+    def player(self, spectrogram):
+        """`play` with the song shaped once, for callers that ask for many chunks of times.
+
+        Parameters
+        ----------
+        spectrogram : the song.
+
+        Returns
+        -------
+        function (times (T,) s, k, offset=1.0) → φ (T, k).
+        """
+        shaped = self.shaped(spectrogram)
+
+        def phi(times, k: int, offset: float = 1.0) -> np.ndarray:
+            times = np.asarray(times, dtype=np.float64)
+            return filters([self], shaped.at(times), k, offset,
+                           self.kicks(spectrogram, times)[None])[0]
+
+        return phi
+
     def with_genes(self, transfer, amplification, seed: int | None, name: str) -> Mapping:
         """A mapping with other transfer and amplification and this one's other settings.
 
@@ -224,10 +291,46 @@ class Mapping:
         return replace(self, transfer=transfer, amplification=amplification, seed=seed,
                        name=name)
 
+    def shaped(self, spectrogram):
+        """The spectrogram as this mapping hears it: smoothed by `smoothing`, then shaped by
+        the envelope (values cast to float32, as stored and as the page holds them).
+
+        Parameters
+        ----------
+        spectrogram : the song.
+
+        Returns
+        -------
+        Spectrogram (the smoothed one itself when the envelope is the identity).
+        """
+        smoothed = spectrogram.smoothed(self.smoothing)
+        if self.envelope.is_identity:
+            return smoothed
+        values = shape_values(smoothed.values, smoothed.rate, self.envelope)
+        return replace(smoothed, values=values.astype(np.float32))
+
+    def kicks(self, spectrogram, times) -> np.ndarray:
+        """amount·p(t): the pulse at `times` (0 without a pulse or beats).
+
+        Parameters
+        ----------
+        spectrogram : the song (its `rhythm`).
+        times : (T,) s.
+
+        Returns
+        -------
+        (T,) in band-loudness units.
+        """
+        times = np.asarray(times, dtype=np.float64)
+        if not self.pulse.amount > 0:
+            return np.zeros(times.shape)
+        rhythm = getattr(spectrogram, "rhythm", None)
+        return self.pulse.amount * self.pulse.signal(rhythm, times)
+
     # JSON (docs/design.md#mapping-file) ------------------------------------------------------
 
     def to_json(self) -> dict:
-        """The mapping document, version 2 (docs/design.md#mapping-file).
+        """The mapping document, version 3 (docs/design.md#mapping-file).
 
         Returns
         -------
@@ -240,11 +343,12 @@ class Mapping:
                 "gain": self.gain, "smoothing": self.smoothing, "offset": self.offset,
                 "modes": None if self.modes is None else self.modes.to_json(),
                 "look": {"deformed_normal_weight": self.deformed_normal_weight,
-                         "shading": self.shading}}
+                         "shading": self.shading},
+                "envelope": self.envelope.to_json(), "pulse": self.pulse.to_json()}
 
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> Mapping:
-        """Validate a parsed mapping document (version 1 or 2); every problem is a one-line
+        """Validate a parsed mapping document (version 1, 2 or 3); every problem is a one-line
         error naming the field.
 
         Parameters
@@ -292,6 +396,11 @@ class Mapping:
                     look["deformed_normal_weight"], "look.deformed_normal_weight", name)
             if "shading" in look:
                 settings["shading"] = look["shading"]
+        if version >= 3:
+            if data.get("envelope") is not None:
+                settings["envelope"] = Envelope.from_json(data["envelope"], name)
+            if data.get("pulse") is not None:
+                settings["pulse"] = Pulse.from_json(data["pulse"], name)
         return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
                    seed, name, **settings)
 
@@ -408,8 +517,9 @@ def resample_amplification(amplification, k: int) -> np.ndarray:
     return amplification[..., index]
 
 
-def filters(mappings, values, k: int, offset: float = 1.0) -> np.ndarray:
-    """φ = a·Σ g̃ + offset for S mappings and band values (…, B) in one call → (S, …, k).
+def filters(mappings, values, k: int, offset: float = 1.0, kicks=None) -> np.ndarray:
+    """φ = a·(Σ g̃ + kick) + offset for S mappings and band values (…, B) in one call →
+    (S, …, k). kicks: (S, …) amount·p(t) of each mapping's pulse, added on its range (None: 0).
 
     The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) (= g̃ @ P_s with the one-hot (B, k) matrix P_s of
     mapping s) is one np.bincount over (mapping, frame, harmonic) for all mappings and frames:
@@ -421,6 +531,7 @@ def filters(mappings, values, k: int, offset: float = 1.0) -> np.ndarray:
     values : (…, B).
     k : the targets.
     offset : b.
+    kicks : (S, …) or broadcastable, amount·p(t) of each mapping's pulse; None: no pulse.
 
     Returns
     -------
@@ -445,6 +556,11 @@ def filters(mappings, values, k: int, offset: float = 1.0) -> np.ndarray:
     target = rows[:, :, None] + indices[:, None, :]  # (S, F, B)
     sums = np.bincount(target.ravel(), weights=np.broadcast_to(flat, target.shape).ravel(),
                        minlength=count * frames * k).reshape(count, frames, k)
+    if kicks is not None:
+        routed = np.stack([m.pulse.routed(k) for m in mappings])  # (S, k)
+        kicks = np.broadcast_to(np.asarray(kicks, dtype=np.float64),
+                                (count, *values.shape[:-1])).reshape(count, frames)
+        sums += kicks[:, :, None] * routed[:, None, :]
     phi = amplification[:, None, :] * sums + offset
     return phi.reshape(len(mappings), *values.shape[:-1], k)
 

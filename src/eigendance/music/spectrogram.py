@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -29,8 +30,16 @@ from scipy.fft import rfft
 from eigendance.errors import InputError
 from eigendance.files import atomic_save_npz, atomic_write, checked_array, load_npz
 from eigendance.music.decode import CHUNK_SAMPLES, mono, open_audio
+from eigendance.music.rhythm import (
+    OnsetEnvelope,
+    Rhythm,
+    analyse_rhythm,
+    rhythm_arrays,
+    rhythm_from_arrays,
+)
 
 FORMAT_KEYS = ("times", "band_edges", "values", "rate", "sample_rate", "duration")
+FILE_VERSION = 2  # written (with the rhythm); version 1 (no `version` field, no rhythm) is read
 FRAME_BATCH = 1024  # analysis frames per batched FFT
 # Defaults of docs/design.md#spectrogram: frames per second, bands, band range (Hz), loudness
 # floor (dB) and smoothing time constant (s).
@@ -164,7 +173,7 @@ class _Analyser:
     """Streaming spectrogram: feed mono chunks, get smoothed band values chunk by chunk."""
 
     def __init__(self, sample_rate, rate=RATE, bands=BANDS, fmin=FMIN, fmax=FMAX,
-                 floor_db=FLOOR_DB, smoothing=SMOOTHING, name="audio"):
+                 floor_db=FLOOR_DB, smoothing=SMOOTHING, name="audio", rhythm=True):
         self.name = name
         if not (isinstance(sample_rate, int | np.integer) and 0 < sample_rate <= MAX_SAMPLE_RATE):
             raise InputError(f"{name}: the sample rate must be an integer from 1 to "
@@ -208,6 +217,9 @@ class _Analyser:
         self.next = 0  # next frame to compute
         self.total = 0  # samples received
         self.outputs: list[np.ndarray] = []
+        # The onset-strength envelope of docs/design.md#rhythm, from the same frames.
+        self.onsets = OnsetEnvelope(self.sample_rate, self.N, self.rate) if rhythm else None
+        self.envelope: list[np.ndarray] = []
 
     def feed(self, chunk: np.ndarray) -> None:
         chunk = np.asarray(chunk).ravel()
@@ -257,6 +269,8 @@ class _Analyser:
     def _analyse(self, frames: np.ndarray) -> np.ndarray:
         """(F, N) raw frames → (F, B) smoothed loudness, float32."""
         magnitude = np.abs(rfft(frames * self.window, axis=1))  # float32
+        if self.onsets is not None:
+            self.envelope.append(self.onsets.feed(magnitude))
         bands = np.empty((len(frames), len(self.edges) - 1))
         if len(self.reduce_starts):
             bands[:, self.nonempty] = np.maximum.reduceat(
@@ -290,6 +304,8 @@ class Spectrogram:
     rate : frames per second.
     sample_rate : the audio's, Hz.
     duration : the audio's, s.
+    rhythm : the song's onsets, beats and tempo (`music.rhythm.Rhythm`, docs/design.md#rhythm),
+        or None (a version-1 file, or analysed with rhythm=False).
 
     Example
     -------
@@ -308,6 +324,7 @@ class Spectrogram:
     rate: float
     sample_rate: int
     duration: float
+    rhythm: Rhythm | None = None  # None: a version-1 file, or analysed without rhythm
 
     @property
     def bands(self) -> int:
@@ -323,24 +340,30 @@ class Spectrogram:
     def from_chunks(cls, chunks, sample_rate: int, **options) -> Spectrogram:
         """Analyse an iterable of mono float chunks (the streaming core of the other builders).
 
-        options: those of the class docstring, and name (how messages call the audio).
+        options: those of the class docstring, name (how messages call the audio) and rhythm
+        (default True: also the rhythm of docs/design.md#rhythm).
 
         Parameters
         ----------
         chunks : iterable of (m,) float arrays.
         sample_rate : Hz.
-        **options : rate, bands, fmin, fmax, floor_db, smoothing, name.
+        **options : rate, bands, fmin, fmax, floor_db, smoothing, name, rhythm.
 
         Returns
         -------
-        Spectrogram.
+        Spectrogram (with its `rhythm` unless rhythm=False).
         """
         analyser = _Analyser(sample_rate, **options)
         for chunk in chunks:
             analyser.feed(chunk)
         values = analyser.finish()
+        rhythm = None
+        if analyser.onsets is not None:
+            envelope = np.concatenate(analyser.envelope) if analyser.envelope else \
+                np.zeros((len(values), 2), np.float32)
+            rhythm = analyse_rhythm(envelope[:, 0], analyser.rate, envelope[:, 1])
         return cls(np.arange(len(values)) / analyser.rate, analyser.edges, values,
-                   analyser.rate, int(sample_rate), analyser.total / sample_rate)
+                   analyser.rate, int(sample_rate), analyser.total / sample_rate, rhythm)
 
     @classmethod
     def from_samples(cls, samples, sample_rate: int, **options) -> Spectrogram:
@@ -421,22 +444,26 @@ class Spectrogram:
         return replace(self, values=values.astype(np.float32))
 
     def save(self, path: str | os.PathLike) -> None:
-        """Write the spectrogram file (docs/design.md#spectrogram-file) atomically.
+        """Write the spectrogram file (docs/design.md#spectrogram-file) atomically: version 2
+        with the rhythm, version 1 (the same fields as before) for a spectrogram without it.
 
         Parameters
         ----------
         path : the .npz to write.
         """
+        extra = {} if self.rhythm is None else \
+            {"version": np.int64(FILE_VERSION), **rhythm_arrays(self.rhythm)}
         atomic_save_npz(path, times=self.times, band_edges=self.band_edges,
                         values=self.values.astype(np.float32), rate=np.float64(self.rate),
                         sample_rate=np.int64(self.sample_rate),
-                        duration=np.float64(self.duration))
+                        duration=np.float64(self.duration), **extra)
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> Spectrogram:
         """Read a spectrogram file, checked: InputError naming the field for anything that
         breaks docs/design.md#spectrogram-file (a missing field, a wrong type or shape, NaN,
         values outside [0, 1], frame times that do not follow from the rate and duration).
+        Version 1 (no `version` field) has no rhythm; version 2 holds it.
 
         Parameters
         ----------
@@ -467,7 +494,12 @@ class Spectrogram:
                 times, np.arange(count) / rate, rtol=1e-9, atol=1e-9):
             raise InputError(f"{path}: {count} frames do not fit a duration of {duration:g} s "
                              f"at {rate:g} frames per second (times[j] = j / rate)")
-        return cls(times, edges, values.astype(np.float32), rate, sample_rate, duration)
+        version = int(checked_array(data, "version", path, "int")) if "version" in data else 1
+        if version not in (1, FILE_VERSION):
+            raise InputError(f"{path}: version must be 1 or {FILE_VERSION}, got {version}")
+        rhythm = None if version == 1 else \
+            rhythm_from_arrays(data, path, count, rate, duration)
+        return cls(times, edges, values.astype(np.float32), rate, sample_rate, duration, rhythm)
 
 
 def frame_times(duration: float, fps: float) -> np.ndarray:
@@ -516,7 +548,8 @@ def check_picture_path(path: str | os.PathLike) -> str:
 
 def save_picture(spectrogram: Spectrogram, path: str | os.PathLike,
                  title: str | None = None) -> None:
-    """Draw a spectrogram: time across, band (labelled in Hz) up, loudness as colour.
+    """Draw a spectrogram: time across, band (labelled in Hz) up, loudness as colour; the
+    beats (if any) as white ticks along the top edge with thin lines across.
 
     Parameters
     ----------
@@ -538,9 +571,32 @@ def save_picture(spectrogram: Spectrogram, path: str | os.PathLike,
     ticks = list(range(0, bands, max(1, bands // 8)))
     axes.set_yticks(ticks)
     axes.set_yticklabels([f"{spectrogram.band_centres[b]:.0f}" for b in ticks])
+    rhythm = spectrogram.rhythm
+    if rhythm is not None and len(rhythm.beats):
+        axes.vlines(rhythm.beats, -0.5, bands - 0.5, colors="white", linewidths=0.4,
+                    alpha=0.35)
+        axes.plot(rhythm.beats, np.full(len(rhythm.beats), bands - 1.5), "v", color="white",
+                  markersize=3, label=f"beats ({rhythm.tempo:.0f} BPM)")
+        axes.legend(loc="lower right", fontsize="small", framealpha=0.5)
     axes.set_xlabel("time (s)")
     axes.set_ylabel("band centre (Hz)")
     axes.set_title(title or f"{bands} bands, {rate:g} frames/s, {spectrogram.sample_rate} Hz")
     figure.colorbar(image, ax=axes, label="loudness")
     figure.tight_layout()
     atomic_write(path, lambda file: figure.savefig(file, format=format))
+
+
+def warm_up() -> float:
+    """Analyse two seconds of clicks once, so that numba compiles (and caches on disk) librosa's
+    kernels now rather than at the first song (2–10 s the first time ever). `make setup` (so
+    `make demo` and `make test`) calls it.
+
+    Returns
+    -------
+    float: the seconds it took.
+    """
+    start = time.perf_counter()
+    clicks = np.zeros(2 * 22050)
+    clicks[::11025] = 1.0
+    Spectrogram.from_samples(clicks, 22050)
+    return time.perf_counter() - start

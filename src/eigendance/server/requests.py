@@ -139,8 +139,9 @@ def gallery_size(value) -> int:
 
 
 def check_mapping_size(data, name: str) -> None:
-    """InputError unless a mapping document's lists fit MAX_BANDS and MAX_HARMONICS (checked
-    before `Mapping.from_json` looks at every value).
+    """InputError unless a mapping document's lists (transfer, amplification, the palette's,
+    the envelope's) fit MAX_BANDS and MAX_HARMONICS (checked before `Mapping.from_json` looks at
+    every value).
 
     Parameters
     ----------
@@ -150,11 +151,14 @@ def check_mapping_size(data, name: str) -> None:
     if not isinstance(data, dict):
         return  # Mapping.from_json says what is wrong
     modes = data.get("modes") if isinstance(data.get("modes"), dict) else {}
+    envelope = data.get("envelope") if isinstance(data.get("envelope"), dict) else {}
     for field_name, values, most in (
             ("transfer", data.get("transfer"), MAX_BANDS),
             ("amplification", data.get("amplification"), MAX_HARMONICS),
             *((f"modes.{key}", modes.get(key), MAX_HARMONICS)
-              for key in ("selected", "amplitudes", "phases"))):
+              for key in ("selected", "amplitudes", "phases")),
+            *((f"envelope.{key}", envelope.get(key), MAX_BANDS)
+              for key in ("attack", "release", "threshold"))):
         if isinstance(values, list) and len(values) > most:
             raise InputError(f"{name}: {field_name} has {len(values)} values; at most "
                              f"{most}")
