@@ -99,12 +99,12 @@ def in_process(name, seed, construction, k, output, laplacian="cotan"):
 
 def item_errors(reference, other, song, items):
     """Per item: (main harmonic range, RMS(d_other − d_reference) / RMS(d_reference))."""
-    from eigendance.music.gallery import gallery_motion
+    from eigendance.music.dancer import gallery_motion
 
     times = np.linspace(0, song.duration, FRAMES)
     rows = []
     for item, motion in zip(items, gallery_motion(reference, song, items), strict=True):
-        phi = item.filter(song.smoothed(item.smoothing).at(times), reference.k)
+        phi = item.play(song, times, reference.k)  # envelope, pulse: as every dance plays
         error = total = 0.0
         for chunk in range(0, FRAMES, 50):  # bounded memory: 50 frames of n × 3 at a time
             moved = reference.displacements(phi[chunk:chunk + 50])
@@ -220,7 +220,8 @@ def write_skin(path: str, queue) -> None:
     from eigendance.export.pointcache import pc2_size
     from eigendance.harmonic.basis import HarmonicBasis
     from eigendance.harmonic.mesh import Mesh
-    from eigendance.music.gallery import gallery_motion, initial_gallery
+    from eigendance.music.dancer import gallery_motion
+    from eigendance.music.gallery import initial_gallery
 
     basis = HarmonicBasis.from_mesh(Mesh.from_arrays(*detailed("fertility-1.15M")), K,
                                     construction="reduced")  # cached after the first run
