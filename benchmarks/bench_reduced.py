@@ -14,7 +14,8 @@ bad: big meshes that are not clean — the ogre ×16 (≈ 1 M vertices, 44 parts
   clear error, as on the exact path, and the memory planned beside the peak.
 exports: the same mesh and a 3-minute song (two shared songs end to end) at 30 fps: the glb as
   a skin on the samples (written, with its time and peak memory) beside the same dance as morph
-  targets (the driven harmonics, and all k as issue 19 counts them) and as a point cache.
+  targets (the driven harmonics, and all k as issue 19 counts them) and as a point cache; and
+  the page's basis bundle of that mesh (its coarse basis, weights and indices beside the mesh).
 
 Every solve runs in a fresh process (peak memory is its own; the band workers' is reported by
 the kernel for the children). Run: .venv/bin/python benchmarks/bench_reduced.py [accuracy]
@@ -222,6 +223,7 @@ def write_skin(path: str, queue) -> None:
     from eigendance.harmonic.mesh import Mesh
     from eigendance.music.dancer import gallery_motion
     from eigendance.music.gallery import initial_gallery
+    from eigendance.server.binary import basis_bundle
 
     basis = HarmonicBasis.from_mesh(Mesh.from_arrays(*detailed("fertility-1.15M")), K,
                                     construction="reduced")  # cached after the first run
@@ -236,10 +238,15 @@ def write_skin(path: str, queue) -> None:
     seconds = time.perf_counter() - start
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20
     sizes = glb_size(dance, frames)
+    bundle = len(basis_bundle(basis))  # what the page is sent (docs/web.md#basis-bundle)
+    interpolation = basis.reduced.interpolation
+    sent = 4 * basis.reduced.count * 4 * -(-K // 4) + 2 * interpolation.weights.size + \
+        2 * interpolation.indices.size  # coarse float32 texels, float16 weights, uint16 indices
     base = sizes["morph targets"] - len(dance.driven()) * (12 * dance.n + 4 * frames)
     queue.put({"n": dance.n, "m": basis.reduced.count, "frames": frames, "bytes": report["bytes"],
                "seconds": seconds, "peak": peak, "driven": len(dance.driven()), **sizes,
-               "all k": base + K * (12 * dance.n + 4 * frames), "pc2": pc2_size(dance.n, frames)})
+               "bundle": bundle, "sent": sent, "all k": base + K * (12 * dance.n + 4 * frames),
+               "pc2": pc2_size(dance.n, frames)})
 
 
 def exports() -> None:
@@ -262,6 +269,9 @@ def exports() -> None:
           f"×); all k = {K} harmonics {result['all k'] / mb:.0f} MB "
           f"({result['skin'] / result['all k']:.3f}×, ≤ 1/8 asked)")
     print(f"  as a point cache: {result['pc2'] / mb:.0f} MB (written only with --force)")
+    print(f"  the page's basis bundle: {result['bundle'] / mb:.1f} MB, of which "
+          f"{result['sent'] / mb:.1f} MB of coarse basis, weights and indices (≤ 64 MB asked); "
+          f"the exact harmonics would be {4 * result['n'] * 4 * -(-K // 4) / mb:.0f} MB")
 
 
 def main():
