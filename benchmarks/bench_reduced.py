@@ -215,7 +215,7 @@ def three_minutes():
 
 def write_skin(path: str, queue) -> None:
     """In a fresh process: the 1.15 M-vertex dance's glb (time, peak memory, sizes)."""
-    from eigendance.export.dance import HarmonicDance, sample_times
+    from eigendance.export.dance import HarmonicDance
     from eigendance.export.files import export_dance
     from eigendance.export.gltf import glb_size
     from eigendance.export.pointcache import pc2_size
@@ -223,6 +223,7 @@ def write_skin(path: str, queue) -> None:
     from eigendance.harmonic.mesh import Mesh
     from eigendance.music.dancer import gallery_motion
     from eigendance.music.gallery import initial_gallery
+    from eigendance.music.spectrogram import frame_times
     from eigendance.server.binary import basis_bundle
 
     basis = HarmonicBasis.from_mesh(Mesh.from_arrays(*detailed("fertility-1.15M")), K,
@@ -232,7 +233,7 @@ def write_skin(path: str, queue) -> None:
     motions = gallery_motion(basis, song, items)
     widest = max(range(len(items)), key=lambda i: motions[i].highest - motions[i].lowest)
     dance = HarmonicDance(basis, song, items[widest], name="fertility")
-    frames = len(sample_times(song.duration, 30.0))
+    frames = len(frame_times(song.duration, 30.0))
     start = time.perf_counter()
     report = export_dance(dance, path, fps=30.0, force=True)
     seconds = time.perf_counter() - start
@@ -255,7 +256,13 @@ def exports() -> None:
     with tempfile.TemporaryDirectory() as folder:
         process = context.Process(target=write_skin, args=(os.path.join(folder, "d.glb"), queue))
         process.start()
-        result = queue.get()
+        while True:  # a writer that dies must not hang the run
+            try:
+                result = queue.get(timeout=1)
+                break
+            except Empty:
+                if not process.is_alive():
+                    raise SystemExit(f"the export failed (exit {process.exitcode})") from None
         process.join()
     mb = 1e6
     print(f"\nexports: fertility ×256, n = {result['n']}, m = {result['m']} samples, a 3-minute "
