@@ -178,3 +178,22 @@ def test_a_mesh_in_several_pieces_gets_a_sample_on_each():
     robust = HarmonicBasis.from_mesh(beetle, 12, laplacian="robust", cache=False,
                                      construction="reduced", samples=300)
     assert np.isfinite(robust.filter_positions(np.full(12, 2.0))).all()
+
+
+def test_both_sheets_of_a_thin_part_get_samples():
+    """A box 1 × 1 × 0.03 (11k vertices): its top and bottom pass through the same voxel cells
+    (spacing ≈ 0.06). Each cell is split into the pieces of surface connected inside it, so both
+    sheets get half the samples and the lowest harmonics come within a few percent of the exact
+    solver's (one sample per cell: 29 on top, 227 below, errors of 60–170%)."""
+    import trimesh
+
+    from eigendance.harmonic.mesh import Mesh
+
+    box = trimesh.creation.box(extents=[1.0, 1.0, 0.03])
+    mesh = Mesh.from_arrays(*trimesh.remesh.subdivide_to_size(box.vertices, box.faces, 0.03))
+    exact = HarmonicBasis.from_mesh(mesh, 6, cache=False, construction="exact")
+    reduced = HarmonicBasis.from_mesh(mesh, 6, cache=False, construction="reduced", samples=250)
+    heights = reduced.vertices[reduced.reduced.samples, 2]
+    assert min((heights > 0).sum(), (heights < 0).sum()) >= 0.4 * len(heights)
+    relative = reduced.eigenvalues[1:4] / exact.eigenvalues[1:4] - 1
+    assert np.all(relative >= -1e-9) and np.all(relative <= 0.05)

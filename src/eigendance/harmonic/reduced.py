@@ -31,7 +31,7 @@ from eigendance.harmonic.sampling import (
     spread_samples,
 )
 
-REDUCED_VERSION = 1  # part of every reduced cache key: a new construction recomputes
+REDUCED_VERSION = 2  # part of every reduced cache key: a new construction recomputes
 SAMPLES_PER_HARMONIC = 24  # default m = 24·k (benchmarks/bench_reduced.py)
 MIN_SAMPLES = 2000
 # Peak bytes of a reduced solve (bench_reduced.py): per vertex the Laplacian, the graph, the
@@ -197,7 +197,8 @@ def reduced_harmonics(stiffness, mass: np.ndarray, vertices: np.ndarray, faces: 
     n = len(vertices)
     count = sample_count(n, k) if count is None else int(count)
     graph = operator_graph(stiffness, vertices)
-    samples, _ = spread_samples(vertices, component_labels(graph), count, float(mass.sum()))
+    samples, _ = spread_samples(vertices, component_labels(graph), count, float(mass.sum()),
+                                graph)
     if len(samples) <= k:
         raise InputError(f"k = {k} harmonics need more than {k} samples; {len(samples)} were "
                          f"placed on {n} vertices", remedy={"samples": 4 * k})

@@ -4,9 +4,10 @@ The samples are spread evenly over the surface by a voxel grid: one sample per o
 the vertex nearest the cell's centroid, with the cell size chosen so that about the requested
 number of cells is occupied. Cells are kept apart per connected component of the Laplacian's
 graph, so every part (and every part the operator couples, docs/design.md#laplacian) has a
-sample of its own. Each vertex then belongs to its nearest sample along the graph's edges
-(multi-source Dijkstra): those clusters give the neighbourhoods the interpolation weights use
-(`eigendance.harmonic.interpolation`).
+sample of its own, and split into the pieces of surface connected inside them, so two sheets
+that pass through one cell (a fold, a lip) have a sample each. Each vertex then belongs to its
+nearest sample along the graph's edges (multi-source Dijkstra): those clusters give the
+neighbourhoods the interpolation weights use (`eigendance.harmonic.interpolation`).
 """
 
 from __future__ import annotations
@@ -69,7 +70,7 @@ def component_labels(graph: sp.csr_matrix) -> np.ndarray:
 
 
 def spread_samples(vertices: np.ndarray, components: np.ndarray, count: int,
-                   area: float) -> tuple[np.ndarray, float]:
+                   area: float, graph: sp.csr_matrix | None = None) -> tuple[np.ndarray, float]:
     """About `count` vertices spread evenly over the surface, at least one per component.
 
     Parameters
@@ -78,6 +79,8 @@ def spread_samples(vertices: np.ndarray, components: np.ndarray, count: int,
     components : (n,) connected component of each vertex.
     count : the number of samples wanted (more if there are more components).
     area : the surface's area (sets the first cell size).
+    graph : the operator's graph (`operator_graph`): when given, a cell that two sheets of the
+        surface cross (a fold, a lip) gives each its sample (`cell_pieces`).
 
     Returns
     -------
@@ -88,11 +91,13 @@ def spread_samples(vertices: np.ndarray, components: np.ndarray, count: int,
     cell = float(np.sqrt(area / (1.7 * count)))  # an occupied cell holds ≈ 1.7 cell² of area
     for _ in range(ATTEMPTS):
         cells = _cell_keys(vertices, lower, cell, components)
-        occupied, inverse = np.unique(cells, return_inverse=True)
-        if abs(len(occupied) - count) <= COUNT_TOLERANCE * count:
+        inverse = np.unique(cells, return_inverse=True)[1].reshape(-1)
+        if graph is not None:
+            inverse = cell_pieces(inverse, graph)
+        occupied = int(inverse.max()) + 1
+        if abs(occupied - count) <= COUNT_TOLERANCE * count:
             break
-        cell *= float(np.sqrt(len(occupied) / count))
-    inverse = inverse.reshape(-1)
+        cell *= float(np.sqrt(occupied / count))
     totals = np.bincount(inverse).astype(np.float64)
     centroids = np.column_stack([np.bincount(inverse, vertices[:, axis]) for axis in range(3)])
     centroids /= totals[:, None]
@@ -100,6 +105,43 @@ def spread_samples(vertices: np.ndarray, components: np.ndarray, count: int,
     order = np.lexsort((distance, inverse))
     firsts = np.flatnonzero(np.diff(inverse[order], prepend=-1))
     return np.sort(order[firsts]), cell
+
+
+def cell_pieces(cells: np.ndarray, graph: sp.csr_matrix) -> np.ndarray:
+    """Cells split into their pieces: the parts of a cell's vertices connected by edges inside it.
+
+    Two sheets of one surface that pass through a cell (a fold, a lip, both sides of a thin
+    part) would otherwise share one sample, and span P could not tell them apart. A piece with
+    fewer than a quarter of the median cell's vertices (a corner the surface grazes) stays with
+    the largest piece of its cell.
+
+    Parameters
+    ----------
+    cells : (n,) each vertex's cell, 0 … C − 1.
+    graph : (n, n) the operator's graph (`operator_graph`).
+
+    Returns
+    -------
+    (n,) each vertex's piece, 0 … P − 1 (P ≥ C).
+
+    Example
+    -------
+    >>> path = sp.csr_matrix(np.eye(4, k=1) + np.eye(4, k=-1))   # 0 - 1 - 2 - 3
+    >>> cell_pieces(np.array([0, 1, 1, 0]), path).tolist()       # cell 0 holds 0 and 3, apart
+    [0, 1, 1, 2]
+    """
+    edges = sp.coo_matrix(graph)
+    inside = cells[edges.row] == cells[edges.col]
+    within = sp.csr_matrix((np.ones(int(inside.sum())), (edges.row[inside], edges.col[inside])),
+                           shape=graph.shape)
+    pieces = connected_components(within, directed=False)[1]
+    size = np.bincount(pieces)
+    order = np.lexsort((-size[pieces], cells))  # by cell, the largest piece first
+    firsts = order[np.flatnonzero(np.diff(cells[order], prepend=-1))]
+    largest = np.empty(int(cells.max()) + 1, dtype=np.int64)
+    largest[cells[firsts]] = pieces[firsts]
+    kept = size[pieces] >= 0.25 * float(np.median(np.bincount(cells)))
+    return np.unique(np.where(kept, pieces, largest[cells]), return_inverse=True)[1].reshape(-1)
 
 
 def _cell_keys(vertices, lower, cell, components):
