@@ -23,7 +23,7 @@ from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import unpack
 
 pytestmark = pytest.mark.web
-SAMPLES = 2000  # the default for k = 24 (at least 2000)
+SAMPLES = 2000  # the default for k = 24 (at least 2000): the grid places it within 5%
 
 
 @pytest.fixture(scope="module")
@@ -49,18 +49,18 @@ def test_the_bundle_holds_the_interpolation_not_the_harmonics(reduced_server, re
     with urllib.request.urlopen(reduced_server["url"] + f"api/meshes/{mesh['id']}/basis.bin") \
             as answer:
         meta, arrays = unpack(answer.read())
-    n = meta["n"]
-    assert "harmonics" not in arrays and meta["samples"] == SAMPLES
-    assert arrays["coarse"].shape == (SAMPLES, 4 * ((E2E_K + 3) // 4))
+    n, m = meta["n"], meta["samples"]
+    assert "harmonics" not in arrays and abs(m - SAMPLES) <= 0.05 * SAMPLES
+    assert arrays["coarse"].shape == (m, 4 * ((E2E_K + 3) // 4))
     assert arrays["weights"].dtype == np.float16 and arrays["weights"].shape == (n, 8)
-    assert arrays["indices"].dtype == np.uint16 and arrays["indices"].max() < SAMPLES
+    assert arrays["indices"].dtype == np.uint16 and arrays["indices"].max() < m
     assert np.array_equal(arrays["weights"].astype(np.float64).sum(axis=1), np.ones(n))
 
 
 def test_gpu_and_cpu_positions_equal_python_on_a_reduced_basis(reduced_page, web_files):
     os.environ["EIGENDANCE_CACHE_DIR"] = web_files["cache"]
     basis = HarmonicBasis.from_mesh(CAT, E2E_K, construction="reduced")  # the server's, cached
-    assert basis.reduced.count == SAMPLES
+    assert abs(basis.reduced.count - SAMPLES) <= 0.05 * SAMPLES
     spectrogram = Spectrogram.from_file(web_files["song"])
     diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
 
