@@ -10,7 +10,8 @@ and `tests/web/test_web_build_fresh.py` (or `python3 scripts/web_stamp.py check`
 (path relative to the repository, bytes) of a set of files, every file hashed as
 `path (UTF-8) · NUL · length (8 bytes, little-endian) · bytes`:
 
-- `sources`: every file under `web/src/`, plus `web/index.html`, `web/package-lock.json`,
+- `sources`: every file under `web/src/`, the GLSL the page shares with the video
+  (`src/eigendance/shaders/*.glsl`), plus `web/index.html`, `web/package-lock.json`,
   `web/package.json`, `web/vite.config.ts` and `web/tsconfig.json`;
 - `build`: every file under `src/eigendance/static/` except the stamp itself (catches a build
   edited by hand or committed in part).
@@ -28,6 +29,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 SOURCE_FOLDERS = ("web/src",)
+SHADERS = ("src/eigendance/shaders", ".glsl")  # imported by web/src/shaders.ts (`?raw`)
 SOURCE_FILES = ("web/index.html", "web/package-lock.json", "web/package.json",
                 "web/vite.config.ts", "web/tsconfig.json")
 BUILD_FOLDER = "src/eigendance/static"
@@ -47,7 +49,8 @@ def files_under(root: Path, folder: str) -> list[str]:
 def source_paths(root: Path = ROOT) -> list[str]:
     """The files a build is made from (a missing listed file counts as changed, not skipped)."""
     paths = [path for folder in SOURCE_FOLDERS for path in files_under(root, folder)]
-    return sorted({*paths, *SOURCE_FILES})
+    shaders = [path for path in files_under(root, SHADERS[0]) if path.endswith(SHADERS[1])]
+    return sorted({*paths, *shaders, *SOURCE_FILES})
 
 
 def build_paths(root: Path = ROOT) -> list[str]:

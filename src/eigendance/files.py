@@ -15,11 +15,11 @@ import math
 import os
 import tempfile
 import time
-import zipfile
 
 import numpy as np
 
 from eigendance.errors import InputError, one_line
+from eigendance.reads import read_npz
 
 MESH_SUFFIXES = (".obj", ".ply", ".off", ".stl", ".gltf", ".glb",
                  ".fbx", ".blend", ".dae", ".3ds")  # the last four through Blender's bpy
@@ -244,11 +244,7 @@ def load_npz(path, required: tuple[str, ...]) -> dict:
     {name: array}; InputError for an unreadable file or a missing key.
     """
     path = check_readable(path)
-    try:
-        with np.load(path, allow_pickle=False) as data:
-            arrays = {name: data[name] for name in data.files}
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as error:
-        raise InputError(f"{path}: not a readable .npz file ({one_line(error)})") from None
+    arrays = read_npz(path)
     missing = [name for name in required if name not in arrays]
     if missing:
         raise InputError(f"{path}: missing {', '.join(missing)} (not an eigendance file "

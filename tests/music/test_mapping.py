@@ -172,6 +172,17 @@ def test_version_1_files_are_still_read_with_default_settings():
     assert (mapping.gain, mapping.smoothing, mapping.offset, mapping.modes) == (1.0, 0.0, 0.0,
                                                                                None)
     assert mapping.deformed_normal_weight == 0.4 and mapping.shading == "smooth"
+    assert mapping.materials is True  # a model with materials is drawn in them
+
+
+def test_the_clay_switch_is_saved_in_the_look(tmp_path):
+    mapping = Mapping([0.2, 0.7], [1.0, -2.0], materials=False)
+    mapping.save(tmp_path / "clay.json")
+    again = Mapping.load(tmp_path / "clay.json")
+    assert again.to_json()["look"]["materials"] is False and again.materials is False
+    written = mapping.to_json()
+    del written["look"]["materials"]  # a version-2 file written before the switch existed
+    assert Mapping.from_json(written).materials is True
 
 
 def test_gain_scales_the_amplification_of_the_filter(rng):
@@ -189,6 +200,7 @@ def test_gain_scales_the_amplification_of_the_filter(rng):
     ({"smoothing": "slow"}, "smoothing must be a finite number"),
     ({"look": {"shading": "toon"}}, "shading must be one of"),
     ({"look": {"deformed_normal_weight": 2}}, "deformed_normal_weight must be a number in"),
+    ({"look": {"materials": "yes"}}, "look.materials must be true or false"),
     ({"modes": {"selected": [0, 0]}}, "lists a mode twice"),
     ({"modes": {"selected": [0, 1], "phases": [0.0]}}, "modes.phases has 1 values for 2"),
     ({"modes": {"time_scale": 0}}, "time_scale must be positive"),

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import functools
+import http.server
 import os
+import shutil
 import sys
+import threading
 
 import pytest
 
@@ -17,6 +21,11 @@ from web_helpers import (
     write_icosphere,
     write_song,
 )
+
+from helpers import fixture_path
+
+HERE = os.path.dirname(__file__)
+WEB_MODULES = os.path.join(HERE, "..", "..", "web", "node_modules")
 
 
 @pytest.fixture(scope="session")
@@ -35,3 +44,29 @@ def live_server(web_files):
                         web_files["folder"], web_files["cache"]) as server:
         yield server
 
+
+@pytest.fixture(scope="session")
+def gltf_reference(tmp_path_factory):
+    """A static server of gltf_reference.html (three.js's GLTFLoader drawing a file), the
+    textured models (model.gltf: MorphStressTest; astronaut.glb: the Draco astronaut) and three
+    from web/node_modules: its URL."""
+    if not os.path.isdir(os.path.join(WEB_MODULES, "three")):
+        pytest.skip("web/node_modules is not installed (scripts/web.sh install)")
+    folder = tmp_path_factory.mktemp("gltf-reference")
+    shutil.copy(os.path.join(HERE, "gltf_reference.html"),
+                folder / "index.html")
+    shutil.copy(fixture_path("textured", "MorphStressTest.gltf"), folder / "model.gltf")
+    shutil.copy(fixture_path("rigged", "quaternius_Astronaut_FinnTheFrog.glb"),
+                folder / "astronaut.glb")
+    os.symlink(os.path.abspath(os.path.join(WEB_MODULES, "three")), folder / "three")
+    handler = functools.partial(Quiet, directory=str(folder))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    yield f"http://127.0.0.1:{server.server_address[1]}/"
+    server.shutdown()
+    server.server_close()
+
+
+class Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass

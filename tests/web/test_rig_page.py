@@ -8,6 +8,7 @@ Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 
 from __future__ import annotations
 
+import base64
 import json
 import math
 import urllib.request
@@ -115,8 +116,8 @@ def test_every_mode_tile_moves_and_shows_its_frequency(page, rig_ids):
     try:
         for t in times:
             page.evaluate(f"window.eigendance.rig.renderAt({t})")
-            frames.append([np.array(p, dtype=float)
-                           for p in page.evaluate("window.eigendance.rig.tilePixels(2)")])
+            frames.append([np.frombuffer(base64.b64decode(p), np.uint8).astype(float)
+                           for p in page.evaluate("window.eigendance.rig.tileBytes(2)")])
     finally:
         page.set_viewport_size(viewport)
     assert len(frames[0]) == 16

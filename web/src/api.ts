@@ -5,14 +5,19 @@ import type { Mapping } from "./filter";
 
 export interface Job { id: string; kind: string; state: string; done: number; total: number;
   message: string; }
+/** A model's look as the library lists it: null for a model drawn in clay. */
+export type LookInfo = { materials: number; images: number; drawn: number } | null;
 export interface MeshInfo { id: string; name: string; k: number; vertices: number; ready: boolean;
-  job: Job | null; }
+  job: Job | null; look?: LookInfo; }
 export interface SongInfo { id: string; name: string; duration: number; }
 /** A mapping of the library: `origin` "file" (given to `serve`: opens in the player at start)
  * or "upload" (added in the page). */
 export interface MappingInfo { id: string; name: string; origin?: "file" | "upload"; }
 export interface Library { meshes: MeshInfo[]; songs: SongInfo[]; mappings: MappingInfo[];
-  rigs?: { id: string; name: string; ready: boolean; modes?: number; revision?: number }[]; }
+  rigs?: { id: string; name: string; ready: boolean; modes?: number; revision?: number;
+    look?: LookInfo; origin?: string }[];
+  /** the first model given to `serve`: the page opens it first */
+  first?: { kind: "mesh" | "rig"; id: string } | null; }
 
 /** The response, or an Error with the server's one-line message. */
 export async function checked(response: Response): Promise<Response> {

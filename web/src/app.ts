@@ -261,6 +261,18 @@ export class App {
     this.fillSizeMenu(size);
   }
 
+  /** Start with rig `rigId` in its gallery of modes, on the first song (or `?song=`). */
+  private async loadFirstRig(library: api.Library, rigId: string): Promise<boolean> {
+    await this.library.loadSong(this.options.song ?? library.songs[0].id);
+    this.started = true;
+    const failure = await this.openRig(rigId);
+    if (this.options.view === "player") this.setView("player");
+    if (!failure) {
+      this.messages.hint(this.options.render ? "render mode" : READY, this.transport.playing);
+    }
+    return true;
+  }
+
   /** The *tiles* menu: the sizes the rule allows, the size on screen chosen. */
   private fillSizeMenu(size: number | null): void {
     const menu = $<HTMLSelectElement>("size");
@@ -274,8 +286,11 @@ export class App {
    * library). What a start (or a reload) shows: the first model and song of the library (or
    * `?mesh=`, `?song=`), the gallery — or the player with a mapping given to `serve` (or
    * `?mapping=`); mappings added in the page stay in the menu, and do not open by themselves.
-   * Returns false while the library lacks a mesh or a song. */
+   * A rig given first to `serve` (a skinned glTF), or the only kind of model there, opens in
+   * its gallery of modes instead. Returns false while the library lacks a model or a song. */
   private async loadFirst(library: api.Library): Promise<boolean> {
+    const rig = firstRig(library, this.options.mesh);
+    if (rig && library.songs.length) return this.loadFirstRig(library, rig);
     if (!library.meshes.length || !library.songs.length) {
       const missing = library.meshes.length ? "a song" : "a model";
       this.messages.status(`the library needs ${missing}: drop a file here`);
@@ -307,4 +322,16 @@ export class App {
     this.notice = "";
     return true;
   }
+}
+
+/** The rig the page opens first: the first model given to `serve` when it is a rig (a skinned
+ * glTF), or, in a library without meshes, the last rig added from a file; none with `?mesh=`. */
+export function firstRig(library: api.Library, meshOption: string | null): string | null {
+  if (meshOption) return null;
+  const rigs = library.rigs ?? [];
+  const first = library.first;
+  if (first?.kind === "rig" && rigs.some((rig) => rig.id === first.id)) return first.id;
+  if (library.meshes.length) return null;
+  const added = rigs.filter((rig) => rig.origin === "file" || rig.origin === "upload");
+  return added.length ? added[added.length - 1].id : null;
 }

@@ -1,25 +1,47 @@
 // A rig's figure beside its modal skin (docs/web.md#rig-motion-in-the-page): the bones drawn as
 // lines between each body's ends, the joints as points (the pose editor picks them), and the
-// skin by three.js linear blend skinning (`SkinnedMesh`, one bone per body) — all moved by the
-// body poses of the same mode coefficients.
+// skin by three.js linear blend skinning (`SkinnedMesh`, one bone per body; in the rig's
+// materials too, sharing the modal skin's textures) — all moved by the body poses of the same
+// mode coefficients.
 import * as THREE from "three";
 import { CLAY } from "./deform";
+import type { DrawnLook } from "./look";
 import type { Rig } from "./rig-bundle";
 import { normalising } from "./rig-bundle";
 import { SURFACE_FRAGMENT } from "./shaders";
 
-/** Linear blend skinning with three.js's own skinning chunks; shaded like the modal skin. */
+/** Linear blend skinning with three.js's own skinning chunks; shaded like the modal skin (the
+ * shared surface fragment: clay, or a material with its UVs and colours). */
 const LBS_VERTEX = /* glsl */ `
 #include <common>
 #include <skinning_pars_vertex>
 out vec3 vViewPosition;
 out vec3 vNormal;
-out float vHarmonic;
+#ifdef MATERIAL
+in vec2 texcoord0;
+out vec2 vUv0;
+#ifdef UV1
+in vec2 texcoord1;
+out vec2 vUv1;
+#endif
+#ifdef VERTEX_COLOR
+in vec4 vertexColor;
+out vec4 vColor;
+#endif
+#endif
 void main() {
   #include <skinbase_vertex>
   #include <begin_vertex>
   #include <skinning_vertex>
-  vHarmonic = 0.0;
+#ifdef MATERIAL
+  vUv0 = texcoord0;
+#ifdef UV1
+  vUv1 = texcoord1;
+#endif
+#ifdef VERTEX_COLOR
+  vColor = vertexColor;
+#endif
+#endif
   vec4 mv = modelViewMatrix * vec4(transformed, 1.0);
   vViewPosition = -mv.xyz;
   vNormal = normalize(normalMatrix * normal);
@@ -32,13 +54,15 @@ export class RigFigure {
   readonly group = new THREE.Group();
   readonly skinned: THREE.SkinnedMesh;
   readonly lbsMaterial: THREE.ShaderMaterial;
+  /** the LBS skin in the rig's materials (null: a rig drawn in clay) */
+  readonly skinnedLook: THREE.SkinnedMesh | null = null;
   private readonly bones: THREE.LineSegments;
   private readonly joints: THREE.Points;
   private readonly picked: THREE.Points;
   private readonly skeletonBones: THREE.Bone[];
   private readonly rest: THREE.Matrix4[];
 
-  constructor(readonly rig: Rig) {
+  constructor(readonly rig: Rig, look: DrawnLook | null = null) {
     const s = normalising(rig);
     this.group.matrixAutoUpdate = false;
     this.group.matrix.makeScale(s, s, s).setPosition(-rig.center[0] * s, -rig.center[1] * s,
@@ -70,7 +94,19 @@ export class RigFigure {
     const inverses = Array.from({ length: rig.b }, (_, b) =>
       new THREE.Matrix4().fromArray(rig.bindMatrices, 16 * b));
     this.skinned.bindMode = THREE.DetachedBindMode;
-    this.skinned.bind(new THREE.Skeleton(this.skeletonBones, inverses), new THREE.Matrix4());
+    const skeleton = new THREE.Skeleton(this.skeletonBones, inverses);
+    this.skinned.bind(skeleton, new THREE.Matrix4());
+    if (look) {
+      const drawn = look.drawnGeometry(rig.vertices, { skinIndex: [rig.skinJoints, 4],
+        skinWeight: [rig.skinWeights, 4] });
+      this.skinnedLook = new THREE.SkinnedMesh(drawn, look.materialsWith(LBS_VERTEX));
+      this.skinnedLook.frustumCulled = false;
+      this.skinnedLook.bindMode = THREE.DetachedBindMode;
+      this.skinnedLook.bind(skeleton, new THREE.Matrix4());
+      for (const material of this.skinnedLook.material as THREE.ShaderMaterial[]) {
+        material.uniforms.deformedNormalWeight = { value: 1 };
+      }
+    }
 
     const lines = new THREE.BufferGeometry();
     lines.setAttribute("position", new THREE.BufferAttribute(new Float32Array(rig.bodyEnds), 3));
@@ -89,16 +125,19 @@ export class RigFigure {
       color: 0xffb347, size: 13, sizeAttenuation: false, depthTest: false }));
     this.picked.renderOrder = 4;
     this.group.add(this.skinned, this.bones, this.joints, this.picked);
+    if (this.skinnedLook) this.group.add(this.skinnedLook);
     for (const object of [this.skinned, this.bones, this.joints, this.picked]) {
       object.frustumCulled = false;
     }
     this.show({ lbs: false, bones: false, joint: -1 });
   }
 
-  /** What shows: the LBS skin (instead of the modal skin), the bones and joints, the joint
-   * picked by the pose editor (−1: none). */
-  show(what: { lbs: boolean; bones: boolean; joint: number }): void {
-    this.skinned.visible = what.lbs;
+  /** What shows: the LBS skin (instead of the modal skin; in its materials when asked and it
+   * has them), the bones and joints, the joint picked by the pose editor (−1: none). */
+  show(what: { lbs: boolean; bones: boolean; joint: number; materials?: boolean }): void {
+    const look = Boolean(what.materials && this.skinnedLook);
+    this.skinned.visible = what.lbs && !look;
+    if (this.skinnedLook) this.skinnedLook.visible = what.lbs && look;
     this.bones.visible = this.joints.visible = what.bones || what.joint >= 0;
     this.picked.visible = what.joint >= 0;
     if (what.joint >= 0) { // where the joint is drawn now (posed)
@@ -165,6 +204,10 @@ export class RigFigure {
     this.group.removeFromParent();
     this.skinned.geometry.dispose();
     this.lbsMaterial.dispose();
+    if (this.skinnedLook) {
+      this.skinnedLook.geometry.dispose();
+      for (const material of this.skinnedLook.material as THREE.Material[]) material.dispose();
+    }
     this.skinned.skeleton.dispose();
     for (const object of [this.bones, this.joints, this.picked]) {
       object.geometry.dispose();

@@ -3,7 +3,8 @@
 
 export interface Bundle {
   meta: Record<string, any>;
-  arrays: Record<string, { data: Float32Array | Uint32Array | Uint16Array; shape: number[] }>;
+  arrays: Record<string, { data: Float32Array | Uint32Array | Uint16Array | Uint8Array;
+    shape: number[] }>;
 }
 
 let halfTable: Float32Array | null = null;
@@ -34,7 +35,8 @@ export function parseBundle(buffer: ArrayBuffer): Bundle {
   for (const [name, entry] of Object.entries<any>(header.arrays)) {
     const count = entry.shape.reduce((a: number, b: number) => a * b, 1);
     const offset = start + entry.offset;
-    const size = entry.dtype === "float16" || entry.dtype === "uint16" ? 2 : 4;
+    const size = entry.dtype === "float16" || entry.dtype === "uint16" ? 2
+      : entry.dtype === "uint8" ? 1 : 4;
     if (offset + size * count > buffer.byteLength) {
       throw new Error(`bundle array ${name} truncated`);
     }
@@ -46,11 +48,8 @@ export function parseBundle(buffer: ArrayBuffer): Bundle {
       arrays[name] = { data, shape: entry.shape };
       continue;
     }
-    if (entry.dtype === "uint16") {
-      arrays[name] = { data: new Uint16Array(buffer, offset, count), shape: entry.shape };
-      continue;
-    }
-    const Type = entry.dtype === "uint32" ? Uint32Array : Float32Array;
+    const Type = entry.dtype === "uint32" ? Uint32Array : entry.dtype === "uint16" ? Uint16Array
+      : entry.dtype === "uint8" ? Uint8Array : Float32Array;
     arrays[name] = { data: new Type(buffer, offset, count), shape: entry.shape };
   }
   return { meta: header.meta, arrays };

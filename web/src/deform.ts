@@ -2,14 +2,18 @@
 // per tile only the k filter values change, uploaded as a uniform array of weights
 // (φ − 1) ⊙ X̃ (see filter.ts shaderWeights). A CPU path gives the same numbers.
 // The GLSL is in shaders.ts, the batched positions pass in positions-pass.ts. A reduced basis
-// (reduced.ts) runs the positions pass over its samples and gathers in the surface pass.
+// (reduced.ts) runs the positions pass over its samples and gathers in the surface pass (the
+// REDUCED define of the shared surface shader). A model with materials is drawn by its
+// DrawnLook (look.ts) from the same positions.
 import * as THREE from "three";
 import { harmonicRows } from "./bundle";
 import type { Basis } from "./bundle";
 import { simplifiedFaces } from "./detail";
+import { DrawnLook } from "./look";
+import type { Appearance } from "./look";
 import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
 import type { HarmonicsSource } from "./positions-pass";
-import { GATHER, GatherPass, gatherAttributes, reducedHarmonic, sampleGeometry } from "./reduced";
+import { GatherPass, gatherAttributes, reducedHarmonic, sampleGeometry } from "./reduced";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX, TEXELS } from "./shaders";
 
 /** The models' colour (sRGB): one studio clay for every tile and the player, so tiles differ
@@ -23,13 +27,31 @@ export function maxHarmonicsOnGPU(renderer: THREE.WebGLRenderer): number {
   return 4 * Math.floor((vectors - 32) / 3);
 }
 
-/** Everything drawn for one basis: geometry, the harmonics texture and the two materials. */
+/** How one tile or the player is drawn (`Deformer.setTile`). */
+export interface TileLook {
+  color: number;
+  /** weight of the deformed triangle's flat normal (thesis Fig. 6.4(d)) */
+  deformedNormalWeight: number;
+  wireframe: boolean;
+  /** the harmonics explorer's harmonic (−1: off) and colour scale */
+  harmonic: number;
+  harmonicScale: number;
+  /** in the model's materials (when it has them), else clay */
+  materials: boolean;
+}
+
+/** Everything drawn for one basis: geometry, the harmonics texture, the two clay materials
+ * and, for a model with materials, its drawn look. */
 export class Deformer implements HarmonicsSource {
   readonly geometry: THREE.BufferGeometry;
   readonly texture: THREE.DataTexture;
-  readonly gpuMaterial: THREE.ShaderMaterial;
-  readonly cpuMaterial: THREE.ShaderMaterial;
+  readonly gpuMaterial: THREE.RawShaderMaterial;
+  readonly cpuMaterial: THREE.RawShaderMaterial;
   readonly mesh: THREE.Mesh;
+  /** the model's own look (materials, textures), or null: clay */
+  look: DrawnLook | null = null;
+  /** whether the surface is drawn at all (a rig's LBS skin replaces it) */
+  shown = true;
   readonly scene = new THREE.Scene();
   readonly textureWidth: number;
   /** tiles per positions pass (colour attachments, uniform space) */
@@ -77,18 +99,17 @@ export class Deformer implements HarmonicsSource {
         textureWidth: width, geometry: sampleGeometry(basis.reduced.m) };
     }
 
-    const defines: Record<string, number> = basis.reduced ? { K4: basis.k4, REDUCED: 1 }
-      : { K4: basis.k4 };
+    const defines: Record<string, number> = basis.reduced
+      ? { K4: basis.k4, HARMONICS: 1, REDUCED: 1 } : { K4: basis.k4, HARMONICS: 1 };
     const uniforms = () => ({
       harmonics: { value: this.texture }, texWidth: { value: width },
       colorHarmonic: { value: -1 }, colorScale: { value: 1 },
       baseColor: { value: new THREE.Color(CLAY) }, deformedNormalWeight: { value: 0.4 },
       wire: { value: false },
     });
-    const make = (extra: Record<string, any>) => new THREE.ShaderMaterial({
+    const make = (extra: Record<string, any>) => new THREE.RawShaderMaterial({
       glslVersion: THREE.GLSL3, defines: { ...defines, ...extra }, uniforms: uniforms(),
-      vertexShader: TEXELS + (basis.reduced ? GATHER : "") + SURFACE_VERTEX,
-      fragmentShader: SURFACE_FRAGMENT,
+      vertexShader: TEXELS + SURFACE_VERTEX, fragmentShader: SURFACE_FRAGMENT,
       side: THREE.DoubleSide,
     });
     this.gpuMaterial = make({});
@@ -107,16 +128,35 @@ export class Deformer implements HarmonicsSource {
     this.scene.add(this.mesh);
   }
 
-  get material(): THREE.ShaderMaterial {
+  get material(): THREE.RawShaderMaterial {
     return this.useCPU ? this.cpuMaterial : this.gpuMaterial;
   }
 
-  /** Set one tile's look and deformation before `renderer.render(scene, camera)`.
-   * deformedNormalWeight: weight of the deformed triangle's flat normal (thesis Fig. 6.4(d)). */
-  setTile(weights: Float32Array, cpuPositions: Float32Array | null, options: {
-    color: number; deformedNormalWeight: number; wireframe: boolean; harmonic: number;
-    harmonicScale: number;
-  }, positions: THREE.Texture | null = null): void {
+  /** Draw the model in its own look from now on (null: clay only). */
+  setLook(appearance: Appearance | null): void {
+    if (this.look) {
+      this.scene.remove(this.look.mesh);
+      this.look.dispose();
+    }
+    this.look = appearance ? new DrawnLook(appearance, this.basis,
+      this.gpuMaterial.uniforms.deformedWidth.value) : null;
+    if (this.look) this.scene.add(this.look.mesh);
+  }
+
+  /** Set one tile's look and deformation before `renderer.render(scene, camera)`: in the
+   * model's materials when asked and it has them (not for a wireframe or the explorer). */
+  setTile(weights: Float32Array, cpuPositions: Float32Array | null, options: TileLook,
+          positions: THREE.Texture | null = null): void {
+    const look = options.materials && !options.wireframe && options.harmonic < 0 ? this.look
+      : null;
+    this.mesh.visible = this.shown && !look;
+    if (look) {
+      look.mesh.visible = this.shown;
+      const texture = this.useCPU ? null : positions ?? this.computePositions([weights])[0];
+      look.setTile(texture, this.useCPU ? cpuPositions : null, options.deformedNormalWeight);
+      return;
+    }
+    if (this.look) this.look.mesh.visible = false;
     const material = this.material;
     this.mesh.material = material;
     const u = material.uniforms;
@@ -146,6 +186,7 @@ export class Deformer implements HarmonicsSource {
       this.detailIndex.set(fraction, index);
     }
     if (this.geometry.index !== index) this.geometry.setIndex(index);
+    this.look?.useDetail(fraction);
     return fraction;
   }
 
@@ -208,6 +249,7 @@ export class Deformer implements HarmonicsSource {
     this.texture.dispose();
     this.gpuMaterial.dispose();
     this.cpuMaterial.dispose();
+    this.look?.dispose();
     this.single?.dispose();
     this.batched?.dispose();
     this.samples?.geometry.dispose();

@@ -1,6 +1,9 @@
-// Files the person gives the page: the *add* input and dropping anywhere. Each one is uploaded
-// (the server checks it by its content) and becomes the current model, song, rig or player
-// mapping.
+// Files the person gives the page: the *add* input and dropping anywhere (files or folders).
+// Each one is uploaded (the server checks it by its content) and becomes the current model,
+// song, rig or player mapping. A model in several files — a .gltf with its .bin and textures, an
+// OBJ with its MTL and images — goes as one .zip (docs/web.md#http-api), read by the server like
+// a single .glb.
+import { zipSync } from "three/examples/jsm/libs/fflate.module.js";
 import * as api from "./api";
 import { $, messageOf } from "./dom";
 import type { Mapping } from "./filter";
@@ -25,9 +28,11 @@ export interface FileEvents {
 export class FileIntake {
   constructor(private readonly messages: Messages, private readonly events: FileEvents) {}
 
-  /** Upload files one by one; each becomes the current mesh, song or player mapping. */
-  async handle(files: FileList | File[]): Promise<void> {
-    for (const file of Array.from(files)) {
+  /** Upload files one by one; each becomes the current mesh, song or player mapping. A model
+   * with the files it names (`paths`: where each file lies in a dropped folder) goes as one
+   * zip. */
+  async handle(files: FileList | File[], paths?: string[]): Promise<void> {
+    for (const file of await together(Array.from(files), paths)) {
       try {
         await this.add(file);
       } catch (error) {
@@ -51,7 +56,14 @@ export class FileIntake {
     window.addEventListener("drop", (e) => {
       e.preventDefault();
       drop.hidden = true;
-      if (e.dataTransfer?.files.length) void this.handle(e.dataTransfer.files);
+      if (!e.dataTransfer?.files.length) return;
+      const entries = Array.from(e.dataTransfer.items ?? [], (item) => item.webkitGetAsEntry?.());
+      if (entries.some((entry) => entry?.isDirectory)) { // a folder: every file in it
+        void filesIn(entries.filter((entry): entry is FileSystemEntry => Boolean(entry)))
+          .then((found) => this.handle(found.map((f) => f.file), found.map((f) => f.path)));
+      } else {
+        void this.handle(e.dataTransfer.files);
+      }
     });
   }
 
@@ -84,4 +96,56 @@ export class FileIntake {
 /** A server message without the file name it starts with (the page names the file itself). */
 function withoutName(message: string, name: string): string {
   return message.startsWith(`${name}: `) ? message.slice(name.length + 2) : message;
+}
+
+/** Model files, and the files models name beside them (as eigendance.server.archive). */
+const MODEL_SUFFIXES = [".gltf", ".glb", ".obj", ".ply", ".off", ".stl", ".fbx", ".blend",
+  ".dae", ".3ds"];
+const COMPANION_SUFFIXES = [".bin", ".mtl", ".png", ".jpg", ".jpeg", ".webp", ".ktx2", ".tga",
+  ".bmp", ".tif", ".tiff"];
+
+function suffixOf(name: string): string {
+  const dot = name.lastIndexOf(".");
+  return dot < 0 ? "" : name.slice(dot).toLowerCase();
+}
+
+/** The uploads of some files: a model's files (a model and what it names: buffers, MTLs,
+ * images) as one zip named after the model, each other file by itself. */
+export async function together(files: File[], paths?: string[]): Promise<File[]> {
+  const isModel = (file: File) => MODEL_SUFFIXES.includes(suffixOf(file.name));
+  const isCompanion = (file: File) => COMPANION_SUFFIXES.includes(suffixOf(file.name));
+  const models = files.filter(isModel), companions = files.filter(isCompanion);
+  if (!models.length || !companions.length) return files; // the server says what it refuses
+  const members: Record<string, Uint8Array> = {};
+  for (const [index, file] of files.entries()) {
+    if (!isModel(file) && !isCompanion(file)) continue;
+    const path = (paths?.[index] ?? file.name).replace(/^\/+/, "");
+    members[path] = new Uint8Array(await file.arrayBuffer());
+  }
+  const name = models[0].name.replace(/\.[^.]*$/, "") + ".zip";
+  const zipped = zipSync(members, { level: 0 }); // stored: images and buffers barely shrink
+  return [new File([zipped], name, { type: "application/zip" }),
+    ...files.filter((file) => !isModel(file) && !isCompanion(file))];
+}
+
+/** Every file under dropped entries (folders read through), with its path in the drop. */
+async function filesIn(entries: FileSystemEntry[]): Promise<{ file: File; path: string }[]> {
+  const found: { file: File; path: string }[] = [];
+  const visit = async (entry: FileSystemEntry): Promise<void> => {
+    if (entry.isFile) {
+      const file = await new Promise<File>((resolve, reject) =>
+        (entry as FileSystemFileEntry).file(resolve, reject));
+      found.push({ file, path: entry.fullPath });
+    } else if (entry.isDirectory) {
+      const reader = (entry as FileSystemDirectoryEntry).createReader();
+      for (;;) { // readEntries answers in batches until an empty one
+        const batch = await new Promise<FileSystemEntry[]>((resolve, reject) =>
+          reader.readEntries(resolve, reject));
+        if (!batch.length) break;
+        for (const child of batch) await visit(child);
+      }
+    }
+  };
+  for (const entry of entries) await visit(entry);
+  return found;
 }

@@ -34,7 +34,7 @@ export interface Mapping {
   smoothing?: number;
   offset?: number;
   modes?: unknown;
-  look?: { deformed_normal_weight?: number; shading?: Shading };
+  look?: { deformed_normal_weight?: number; shading?: Shading; materials?: boolean };
   envelope?: EnvelopeJSON | null;
   pulse?: PulseJSON | null;
 }
@@ -48,11 +48,13 @@ export interface Settings {
   /** weight of the deformed triangle's flat normal against the original vertex normal */
   deformedNormalWeight: number;
   shading: Shading;
+  /** draw a model with materials in them (false: the clay studio look) */
+  materials: boolean;
 }
 
 /** The defaults of a version-1 file (and of docs/design.md#mapping-file). */
 export const DEFAULT_SETTINGS: Settings = { gain: 1, smoothing: 0, deformedNormalWeight: 0.4,
-  shading: "smooth" };
+  shading: "smooth", materials: true };
 
 /** A mapping's settings, the defaults where a (version 1) file has none. */
 export function settingsOf(mapping: Mapping): Settings {
@@ -62,6 +64,7 @@ export function settingsOf(mapping: Mapping): Settings {
     smoothing: mapping.smoothing ?? DEFAULT_SETTINGS.smoothing,
     deformedNormalWeight: look.deformed_normal_weight ?? DEFAULT_SETTINGS.deformedNormalWeight,
     shading: look.shading ?? DEFAULT_SETTINGS.shading,
+    materials: look.materials ?? DEFAULT_SETTINGS.materials,
   };
 }
 
@@ -71,7 +74,7 @@ export function withSettings(mapping: Mapping, settings: Settings): Mapping {
     ...mapping, version: 3, gain: settings.gain, smoothing: settings.smoothing,
     offset: mapping.offset ?? 0, modes: mapping.modes ?? null,
     look: { ...mapping.look, deformed_normal_weight: settings.deformedNormalWeight,
-      shading: settings.shading },
+      shading: settings.shading, materials: settings.materials },
   };
 }
 

@@ -76,9 +76,9 @@ export class GalleryView {
   shots(): Shot[] {
     const mappings = this.mappings();
     return this.tiles.map((tile, index) => {
-      const { shading, deformedNormalWeight } = settingsOf(mappings[index]);
+      const { shading, deformedNormalWeight, materials } = settingsOf(mappings[index]);
       return { element: tile.view, prepared: this.prepared[index],
-        look: { shading, deformedNormalWeight } };
+        look: { shading, deformedNormalWeight, materials } };
     });
   }
 

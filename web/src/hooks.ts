@@ -6,6 +6,7 @@ import type { Prepared } from "./filter";
 import { bodyMatrices } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { toFileUnits } from "./rig-bundle";
+import { RIG_LOOK } from "./rig-gallery-view";
 import type { Skinning } from "./rig-player-view";
 import type { DeformationPath, View, Viewer } from "./viewer";
 
@@ -81,9 +82,20 @@ function makeHooks(app: App, ready: Promise<void>) {
       time: app.transport.now(), volume: app.transport.volume, muted: app.transport.muted,
       error: app.messages.shownError(), scale: viewer.resolution.scale,
       status: document.getElementById("status")!.textContent,
-      recording: app.recorder.size,
+      recording: app.recorder.size, look: lookInfo(viewer),
     }),
     setPath: (path: DeformationPath) => viewer.setPath(path),
+    /** Draw every tile and the player in the model's materials (true) or in clay (false), as
+     * the player's switch does for its mapping. */
+    setMaterials(on: boolean): void {
+      for (const mapping of [...gallery.mappings(), player.mapping]) {
+        if (mapping) mapping.look = { ...mapping.look, materials: on };
+      }
+      (document.getElementById("materials") as HTMLInputElement).checked = on;
+      viewer.requestDraw();
+    },
+    /** The model's own look as loaded: materials, drawn vertices (null: clay). */
+    look: () => lookInfo(viewer),
     /** The render scale (dynamic resolution) of the harmonics' viewer. */
     resolution: () => ({ scale: viewer.resolution.scale, atFloor: viewer.resolution.atFloor,
       detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
@@ -170,6 +182,9 @@ function rigHooks(app: App) {
       return Array.from(figure.lbsPositions());
     },
     tilePixels: (step = 4): number[][] => pixelsOf(rigs.viewer, rigs.gallery.views(), step),
+    /** The same as base64 strings of the RGB bytes (far faster to hand over than numbers). */
+    tileBytes: (step = 4): string[] => pixelsOf(rigs.viewer, rigs.gallery.views(), step)
+      .map((pixels) => base64(pixels)),
     playerPixels: (step = 4): number[] => pixelsOf(rigs.viewer, [document.getElementById(
       "rig-player-area")!], step)[0],
     labels: () => rigs.gallery.labels(),
@@ -199,6 +214,13 @@ function rigHooks(app: App) {
       (document.getElementById("rig-music") as HTMLInputElement).checked = on;
       rigs.player.update();
     },
+    /** The rig's tiles and player in its materials (true) or in clay (false). */
+    setMaterials: (on: boolean) => {
+      RIG_LOOK.materials = on;
+      (document.getElementById("rig-materials") as HTMLInputElement).checked = on;
+      rigs.viewer.requestDraw();
+    },
+    look: () => lookInfo(rigs.viewer),
     setBones: (on: boolean) => {
       rigs.player.bones = on;
       (document.getElementById("rig-bones") as HTMLInputElement).checked = on;
@@ -237,6 +259,22 @@ function rigHooks(app: App) {
       return { frame: (performance.now() - start) / count };
     },
   };
+}
+
+/** Bytes (0–255 numbers) as base64. */
+function base64(bytes: number[]): string {
+  let text = "";
+  for (let i = 0; i < bytes.length; i += 8192) {
+    text += String.fromCharCode(...bytes.slice(i, i + 8192));
+  }
+  return btoa(text);
+}
+
+/** The look a viewer's model is drawn in: its materials and drawn vertices, or null (clay). */
+function lookInfo(viewer: Viewer) {
+  const look = viewer.deformer?.look;
+  return look ? { materials: look.appearance.materials.map((m) => m.name),
+    drawn: look.appearance.drawn, images: look.appearance.images.length } : null;
 }
 
 /** Downsampled RGB pixels of each element's area of the viewer's canvas, as drawn. */

@@ -3,6 +3,7 @@
 // indicator while they come).
 import * as api from "./api";
 import { $, messageOf } from "./dom";
+import { loadAppearance } from "./look";
 import type { Motion } from "./motion";
 import type { Options } from "./options";
 import type { AudioTransport } from "./transport";
@@ -69,8 +70,15 @@ export class Library {
       }
       this.busy(`${mesh.name}: loading its harmonics…`, null);
       const bytes = 16 * Math.ceil(mesh.k / 4) * mesh.vertices;
-      const basis = await api.basis(meshId, this.options.half ?? bytes > HALF_ABOVE_BYTES);
-      this.viewer.setBasis(basis, this.options.batch);
+      const [basis, appearance] = await Promise.all([
+        api.basis(meshId, this.options.half ?? bytes > HALF_ABOVE_BYTES),
+        mesh.look ? loadAppearance("meshes", meshId).catch((error) => {
+          this.problem(`${mesh.name}: its materials cannot be shown (${messageOf(error)}); `
+            + "it is drawn in clay");
+          return null;
+        }) : null]);
+      this.viewer.setBasis(basis, this.options.batch, appearance);
+      $("materials-switch").hidden = !appearance;
       this.motion.basis = basis;
       this.meshId = meshId;
       $<HTMLSelectElement>("mesh").value = meshId;

@@ -34,6 +34,8 @@ export class Motion {
   /** Whether there is something to draw. */
   get ready(): boolean { return this.basis !== null && this.spectrum !== null; }
 
+  get songLoaded(): boolean { return this.spectrum !== null; }
+
   get duration(): number { return this.spectrum?.duration ?? 0; }
 
   setSpectrum(spectrum: Spectrum): void {

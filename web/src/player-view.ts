@@ -1,5 +1,6 @@
 // The player: one mapping on a large orbitable view, with its settings — gain, smoothing, the
-// normals' facet weight and the shading — which are the mapping's own (saving writes them, so
+// normals' facet weight, the shading and the materials / clay switch — which are the mapping's
+// own (saving writes them, so
 // `eigendance animate` gives what the player shows), the harmonics explorer, and saving /
 // loading mappings.
 import { $, saveJSON } from "./dom";
@@ -48,14 +49,15 @@ export class PlayerView {
       $(`${id}-out`).textContent = shown(settings[key]);
     }
     $<HTMLSelectElement>("shading").value = settings.shading;
+    $<HTMLInputElement>("materials").checked = settings.materials;
     $("player-source").textContent = source;
   }
 
   /** The player's model as the viewer draws it. */
   shot(element: HTMLElement): Shot | null {
     if (!this.mapping || !this.prepared) return null;
-    const { shading, deformedNormalWeight } = settingsOf(this.mapping);
-    return { element, prepared: this.prepared, look: { shading, deformedNormalWeight },
+    const { shading, deformedNormalWeight, materials } = settingsOf(this.mapping);
+    return { element, prepared: this.prepared, look: { shading, deformedNormalWeight, materials },
       source: this.mapping };
   }
 
@@ -88,7 +90,8 @@ export class PlayerView {
     const value = (id: string) => Number($<HTMLInputElement>(id).value);
     return { gain: value("gain"), smoothing: value("smoothing"),
       deformedNormalWeight: value("facets"),
-      shading: $<HTMLSelectElement>("shading").value as Shading };
+      shading: $<HTMLSelectElement>("shading").value as Shading,
+      materials: $<HTMLInputElement>("materials").checked };
   }
 
   /** Write the controls' settings into the mapping (version 2) and show the change. */
@@ -108,6 +111,7 @@ export class PlayerView {
       });
     }
     $("shading").addEventListener("change", () => this.apply());
+    $("materials").addEventListener("change", () => this.apply());
     const harmonic = $<HTMLInputElement>("harmonic");
     harmonic.addEventListener("input", () => this.explore(harmonic.value));
     $("save-mapping").addEventListener("click", () => {

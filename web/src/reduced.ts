@@ -2,62 +2,34 @@
 // harmonics texture holds U_r (m samples), the positions pass runs over the samples and gives
 // their displacements D_j = Σ_ν U_r[j, ν] (φ_ν − 1) X̃_ν, and every vertex gathers the ≤ 8 of
 // its samples, x = rest + Σ_j w_j D_j — linear blend skinning with translation-only joints. The
-// surface pass gathers in its vertex shader; `GatherPass` writes the same gather into a float
-// target to read positions back; `deformReducedCPU` is the CPU path, the same numbers.
+// surface pass gathers in its vertex shader (the REDUCED define of the shared surface shader,
+// src/eigendance/shaders/surface.vert.glsl); `GatherPass` draws that same shader as points into
+// a float target (READ_BACK) to read positions back; `deformReducedCPU` is the CPU path, the
+// same numbers.
 import * as THREE from "three";
 import type { Basis, Interpolation } from "./bundle";
-import { TEXELS } from "./shaders";
+import { SURFACE_VERTEX, TEXELS } from "./shaders";
 
 /** Weights are multiples of 2⁻¹¹ (docs/design.md#reduced-basis): sent to the GPU as the
- * integers w·2048 (exact), scaled back in the shader. */
+ * integers w·2048 (exact), scaled back in the shader (surface.vert.glsl WEIGHT_UNIT). */
 export const WEIGHT_UNITS = 2048;
-
-/** GLSL of the gather (after TEXELS): `deformed` holds one tile's sample displacements, one per
- * texel (row-major, `deformedWidth` wide); the attributes are the vertex's 8 samples and
- * weights. `gatherHarmonicTexel` is the harmonics explorer's value of U = P U_r. */
-export const GATHER = /* glsl */ `
-uniform sampler2D deformed;
-uniform int deformedWidth;
-in vec4 sampleIndices0;
-in vec4 sampleIndices1;
-in vec4 sampleWeights0;
-in vec4 sampleWeights1;
-vec3 sampleDisplacement(float j) {
-  int i = int(j + 0.5);
-  return texelFetch(deformed, ivec2(i % deformedWidth, i / deformedWidth), 0).xyz;
-}
-vec3 gatherDisplacement() {
-  vec3 d = sampleWeights0.x * sampleDisplacement(sampleIndices0.x)
-    + sampleWeights0.y * sampleDisplacement(sampleIndices0.y)
-    + sampleWeights0.z * sampleDisplacement(sampleIndices0.z)
-    + sampleWeights0.w * sampleDisplacement(sampleIndices0.w)
-    + sampleWeights1.x * sampleDisplacement(sampleIndices1.x)
-    + sampleWeights1.y * sampleDisplacement(sampleIndices1.y)
-    + sampleWeights1.z * sampleDisplacement(sampleIndices1.z)
-    + sampleWeights1.w * sampleDisplacement(sampleIndices1.w);
-  return d * ${(1 / WEIGHT_UNITS).toFixed(12)};
-}
-vec4 gatherHarmonicTexel(int j) {
-  vec4 u = vec4(0.0);
-  for (int s = 0; s < 4; s++) {
-    u += sampleWeights0[s] * harmonicTexel(int(sampleIndices0[s] + 0.5), j);
-    u += sampleWeights1[s] * harmonicTexel(int(sampleIndices1[s] + 0.5), j);
-  }
-  return u * ${(1 / WEIGHT_UNITS).toFixed(12)};
-}
-`;
 
 const ATTRIBUTES = { sampleIndices0: 0, sampleIndices1: 4, sampleWeights0: 0, sampleWeights1: 4 };
 
 /** The four gather attributes of a reduced basis's geometry: the 8 sample indices and weights
  * of each vertex as two vec4 each (interleaved views of one array: no copy of the indices
- * when they fit 16 bits). */
-export function gatherAttributes(reduced: Interpolation):
+ * when they fit 16 bits); of the vertices `rows` only (a model's drawn vertices, their welded
+ * ones) when given. */
+export function gatherAttributes(reduced: Interpolation, rows?: ArrayLike<number>):
     Record<string, THREE.InterleavedBufferAttribute> {
-  const indices = reduced.indices instanceof Uint16Array ? reduced.indices
-    : Float32Array.from(reduced.indices); // exact below 2²⁴ samples
-  const weights = new Uint16Array(reduced.weights.length);
+  let indices: Uint16Array | Float32Array = reduced.indices instanceof Uint16Array
+    ? reduced.indices : Float32Array.from(reduced.indices); // exact below 2²⁴ samples
+  let weights = new Uint16Array(reduced.weights.length);
   for (let i = 0; i < weights.length; i++) weights[i] = Math.round(reduced.weights[i] * WEIGHT_UNITS);
+  if (rows) {
+    indices = pickRows(indices, rows);
+    weights = pickRows(weights, rows);
+  }
   const indexBuffer = new THREE.InterleavedBuffer(indices, 8);
   const weightBuffer = new THREE.InterleavedBuffer(weights, 8);
   return {
@@ -66,6 +38,13 @@ export function gatherAttributes(reduced: Interpolation):
     sampleWeights0: new THREE.InterleavedBufferAttribute(weightBuffer, 4, 0),
     sampleWeights1: new THREE.InterleavedBufferAttribute(weightBuffer, 4, 4),
   };
+}
+
+/** Rows `rows` (8 values each) of `values`, in that order. */
+function pickRows<T extends Uint16Array | Float32Array>(values: T, rows: ArrayLike<number>): T {
+  const out = new (values.constructor as new (length: number) => T)(rows.length * 8);
+  for (let i = 0; i < rows.length; i++) out.set(values.subarray(8 * rows[i], 8 * rows[i] + 8), 8 * i);
+  return out;
 }
 
 /** A points geometry of the m samples for the positions pass: rest position 0 (the pass then
@@ -78,11 +57,11 @@ export function sampleGeometry(m: number): THREE.BufferGeometry {
 }
 
 /** The gather into a float target (vertex v at pixel (v mod width, v div width)), to read a
- * tile's positions back: the surface pass's own GLSL, drawn as points. */
+ * tile's positions back: the surface pass's own shader (REDUCED, READ_BACK), drawn as points. */
 export class GatherPass {
   readonly target: THREE.WebGLRenderTarget;
   readonly width: number;
-  private readonly material: THREE.ShaderMaterial;
+  private readonly material: THREE.RawShaderMaterial;
   private readonly scene = new THREE.Scene();
   private readonly camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
 
@@ -94,31 +73,22 @@ export class GatherPass {
       type: THREE.FloatType, format: THREE.RGBAFormat, depthBuffer: false,
       minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
     });
-    this.material = new THREE.ShaderMaterial({
-      glslVersion: THREE.GLSL3, defines: { K4: k4 },
+    this.material = new THREE.RawShaderMaterial({
+      glslVersion: THREE.GLSL3, defines: { K4: k4, HARMONICS: 1, REDUCED: 1, READ_BACK: 1 },
       uniforms: { deformed: { value: null }, deformedWidth: { value: samplesWidth },
         harmonics: { value: harmonics }, texWidth: { value: texWidth },
+        colorHarmonic: { value: -1 }, colorScale: { value: 1 },
         targetWidth: { value: this.width }, targetSize: { value: new THREE.Vector2(this.width, height) } },
-      vertexShader: TEXELS + GATHER + /* glsl */ `
-uniform int targetWidth;
-uniform vec2 targetSize;
-out vec3 vPosition;
-void main() {
-  int v = int(vid + 0.5);
-  vPosition = position + gatherDisplacement();
-  vec2 pixel = vec2(float(v % targetWidth), float(v / targetWidth)) + 0.5;
-  gl_Position = vec4(pixel / targetSize * 2.0 - 1.0, 0.0, 1.0);
-  gl_PointSize = 1.0;
-}`,
+      vertexShader: TEXELS + SURFACE_VERTEX,
       fragmentShader: /* glsl */ `
 precision highp float;
-in vec3 vPosition;
+in vec3 vViewPosition; // READ_BACK: the vertex's position
 layout(location = 0) out highp vec4 outPosition;
-void main() { outPosition = vec4(vPosition, 1.0); }`,
+void main() { outPosition = vec4(vViewPosition, 1.0); }`,
       depthTest: false, depthWrite: false,
     });
     const vertices = new THREE.BufferGeometry(); // the surface's attributes, without faces
-    for (const name of ["position", "vid", ...Object.keys(ATTRIBUTES)]) {
+    for (const name of ["position", "normal", "vid", ...Object.keys(ATTRIBUTES)]) {
       vertices.setAttribute(name, geometry.getAttribute(name));
     }
     const points = new THREE.Points(vertices, this.material);

@@ -27,8 +27,9 @@ export function danceLabel(rig: Rig, prepared: RigPrepared): string {
   return `${modesLabel(driven)} · ×${prepared.timeScale.toFixed(2)} time scale`;
 }
 
-/** Rigs are shaded by the normals of their deformed faces (thesis §6.3). */
-export const RIG_LOOK: Look = { shading: "smooth", deformedNormalWeight: 1 };
+/** Rigs are shaded by the normals of their deformed faces (thesis §6.3), in their materials
+ * unless the rig player's switch says clay (one switch for the rig's tiles and player). */
+export const RIG_LOOK: Look = { shading: "smooth", deformedNormalWeight: 1, materials: true };
 
 interface Tile { element: HTMLElement; view: HTMLElement; label: HTMLElement; }
 

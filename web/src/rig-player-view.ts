@@ -76,6 +76,10 @@ export class RigPlayerView {
       this.skinning = (e.target as HTMLSelectElement).value as Skinning;
       this.events.requestDraw();
     });
+    $<HTMLInputElement>("rig-materials").addEventListener("change", (e) => {
+      RIG_LOOK.materials = (e.target as HTMLInputElement).checked;
+      this.events.requestDraw();
+    });
     $<HTMLInputElement>("rig-bones").addEventListener("change", (e) => {
       this.bones = (e.target as HTMLInputElement).checked;
       this.events.requestDraw();
@@ -128,7 +132,7 @@ export class RigPlayerView {
     if (!this.mapping || !this.palette) return null;
     return { ...this.mapping, version: 3, gain: this.music ? this.mapping.gain ?? 1 : 0,
       smoothing: this.mapping.smoothing ?? 0, offset: this.music ? this.mapping.offset ?? 0 : 1,
-      modes: { ...this.palette } };
+      modes: { ...this.palette }, look: { ...this.mapping.look, materials: RIG_LOOK.materials } };
   }
 
   shot(element: HTMLElement): Shot | null {
@@ -139,6 +143,8 @@ export class RigPlayerView {
   /** Play `mapping` (copied: the sliders change the copy). */
   show(mapping: Mapping, source: string): void {
     this.mapping = structuredClone(mapping);
+    RIG_LOOK.materials = mapping.look?.materials ?? true;
+    $<HTMLInputElement>("rig-materials").checked = RIG_LOOK.materials;
     this.source = source;
     this.palette = this.rig ? paletteOf(this.rig, mapping.modes as Partial<ModeSettings>) : null;
     this.buildPalette();

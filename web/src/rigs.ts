@@ -2,14 +2,17 @@
 // opens its gallery of modes; the RigStage owns what the page shows then — a second Viewer (its
 // own canvas) drawing the rig's modal skin through the harmonics' deformation machinery, the
 // rig's galleries and player, and the edits (pose, stiffness) that answer a new rig bundle.
-import { $ } from "./dom";
+import * as api from "./api";
+import { $, messageOf } from "./dom";
+import { loadAppearance } from "./look";
+import type { Appearance } from "./look";
 import type { Mapping } from "./filter";
 import { RigFigure } from "./bones";
 import { RigMotion, bodyMatrices } from "./modal-skin";
 import type { Motion } from "./motion";
 import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
-import { RigGalleryView } from "./rig-gallery-view";
+import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
 import type { Clock } from "./transport";
 import { Viewer } from "./viewer";
@@ -29,6 +32,8 @@ export class RigStage {
   readonly gallery: RigGalleryView;
   readonly player: RigPlayerView;
   rig: Rig | null = null;
+  /** the rig's skin's materials (its drawn vertices follow the skin's), or null: clay */
+  appearance: Appearance | null = null;
   figure: RigFigure | null = null;
   active = false;
   view: View = "gallery";
@@ -66,7 +71,10 @@ export class RigStage {
     try {
       const rig = await rigBundle(id);
       if (!rig.k) throw new Error(`${rig.name} has no vibration mode (no elastic joint)`);
-      const gallery = await rigGallery(id, this.events.songId(), null);
+      const [gallery, appearance] = await Promise.all([
+        rigGallery(id, this.events.songId(), null), this.rigLook(id)]);
+      this.appearance = appearance;
+      $("rig-materials-switch").hidden = !appearance;
       this.gallery.pageSize = pageSize;
       this.setRig(rig, true);
       this.defaultMapping = gallery.default;
@@ -163,9 +171,9 @@ export class RigStage {
 
   /** Show a rig: its modal skin as a basis for the viewer, its figure (bones, LBS skin). */
   private setRig(rig: Rig, fresh: boolean): void {
-    this.viewer.setBasis(rigBasis(rig), this.batch);
+    this.viewer.setBasis(rigBasis(rig), this.batch, this.appearance);
     this.figure?.dispose();
-    this.figure = new RigFigure(rig);
+    this.figure = new RigFigure(rig, this.viewer.deformer!.look);
     this.viewer.deformer!.scene.add(this.figure.group);
     this.rig = rig;
     this.motion.rig = rig;
@@ -189,11 +197,25 @@ export class RigStage {
     if (!figure || !deformer) return;
     const player = this.view === "player" && this.player.prepared !== null;
     const lbs = player && this.player.skinning === "lbs";
-    deformer.mesh.visible = !lbs;
+    deformer.shown = !lbs;
     if (player) {
       figure.pose(bodyMatrices(this.rig!, this.motion.coefficients(this.player.prepared!, t)));
     }
-    figure.show({ lbs, bones: player && this.player.bones, joint: player ? this.player.joint : -1 });
+    figure.show({ lbs, bones: player && this.player.bones, joint: player ? this.player.joint : -1,
+      materials: RIG_LOOK.materials });
+  }
+
+  /** The rig's skin's look, if the library lists one (null: clay, or it cannot be shown). */
+  private async rigLook(id: string): Promise<Appearance | null> {
+    const listed = (await api.library()).rigs?.find((rig) => rig.id === id);
+    if (!listed?.look) return null;
+    try {
+      return await loadAppearance("rigs", id);
+    } catch (error) {
+      this.events.status(`${listed.name}: its materials cannot be shown (${messageOf(error)}); `
+        + "drawn in clay");
+      return null;
+    }
   }
 
   /** A click in the player picks the joint drawn nearest to it. */

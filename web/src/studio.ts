@@ -13,11 +13,11 @@ const MOTION_MARGIN = 1.08;
 export class Studio {
   readonly backdrop: THREE.Mesh;
   readonly shadow: THREE.Mesh;
-  private readonly backdropMaterial: THREE.ShaderMaterial;
-  private readonly shadowMaterial: THREE.ShaderMaterial;
+  private readonly backdropMaterial: THREE.RawShaderMaterial;
+  private readonly shadowMaterial: THREE.RawShaderMaterial;
 
   constructor() {
-    this.backdropMaterial = new THREE.ShaderMaterial({
+    this.backdropMaterial = new THREE.RawShaderMaterial({
       glslVersion: THREE.GLSL3, vertexShader: BACKDROP_VERTEX, fragmentShader: BACKDROP_FRAGMENT,
       uniforms: { top: { value: new THREE.Color(0x2b303b) }, bottom: { value:
         new THREE.Color(0x121418) }, aspect: { value: 1 } },
@@ -26,7 +26,7 @@ export class Studio {
     this.backdrop = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), this.backdropMaterial);
     this.backdrop.frustumCulled = false;
     this.backdrop.renderOrder = -2;
-    this.shadowMaterial = new THREE.ShaderMaterial({
+    this.shadowMaterial = new THREE.RawShaderMaterial({
       glslVersion: THREE.GLSL3, vertexShader: SHADOW_VERTEX, fragmentShader: SHADOW_FRAGMENT,
       uniforms: { strength: { value: 0.55 } }, transparent: true, depthWrite: false,
     });

@@ -9,6 +9,7 @@ import type { Basis } from "./bundle";
 import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
 import type { Prepared, Shading } from "./filter";
+import type { Appearance } from "./look";
 import { ResolutionGovernor } from "./resolution";
 import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
 import type { Silhouette } from "./studio";
@@ -22,6 +23,8 @@ export interface Look {
   shading: Shading;
   /** weight of the deformed triangle's flat normal against the original vertex normal */
   deformedNormalWeight: number;
+  /** in the model's own materials when it has them (false: the clay studio look) */
+  materials: boolean;
 }
 
 /** One model to draw: where on the page, moved by which (prepared) mapping, with which look;
@@ -39,6 +42,8 @@ export interface Stage { view: View; tiles: Shot[]; player: Shot | null; explore
  * weights `framingWeights` gives, else those at the song's loudest times. */
 export interface MotionSource {
   readonly ready: boolean;
+  /** a song is loaded (the page's clock and spectrum follow it even without a model) */
+  readonly songLoaded?: boolean;
   weights(prepared: Prepared, t: number): Float32Array;
   loudestTimes(count: number): number[];
   framingWeights?(prepared: Prepared): Float32Array[];
@@ -134,8 +139,9 @@ export class Viewer {
   unpin(): void { this.pinned = null; this.requestDraw(); }
 
   /** Show a new mesh: its deformer (GPU resources), its shadow, and cameras framing it. */
-  setBasis(basis: Basis, batch: number): void {
+  setBasis(basis: Basis, batch: number, appearance: Appearance | null = null): void {
     const deformer = new Deformer(basis, this.renderer, batch); // may throw: keep the old one
+    deformer.setLook(appearance);
     this.deformer?.dispose();
     this.deformer = deformer;
     deformer.scene.add(this.studio.backdrop, this.studio.shadow);
@@ -173,7 +179,10 @@ export class Viewer {
    * after each part and return where the time went. */
   draw(t: number, profile = false): FrameParts | null {
     const deformer = this.deformer;
-    if (!deformer || !this.motion.ready) return null;
+    if (!deformer || !this.motion.ready) {
+      if (this.motion.songLoaded) this.onFrame(t); // a rig alone: the clock still follows the song
+      return null;
+    }
     const start = performance.now();
     this.onFrame(t); // first: what it writes into the page may move the views
     this.resize();
@@ -329,6 +338,7 @@ export class Viewer {
       deformedNormalWeight: look.shading === "flat" ? 1 : look.deformedNormalWeight,
       harmonic: player ? stage.explorer.harmonic : -1,
       harmonicScale: stage.explorer.scale,
+      materials: look.materials,
     }, positions);
     renderer.render(deformer.scene, camera);
   }

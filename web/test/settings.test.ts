@@ -14,14 +14,15 @@ describe("mapping settings", () => {
   it("reads a version-1 file with the defaults (facet weight 0.4, thesis Fig. 6.4(d))", () => {
     expect(settingsOf(v1)).toEqual(DEFAULT_SETTINGS);
     expect(DEFAULT_SETTINGS.deformedNormalWeight).toBe(0.4);
+    expect(DEFAULT_SETTINGS.materials).toBe(true); // a model with materials shows them
   });
 
-  it("writes every setting into a version-2 file and reads it back", () => {
+  it("writes every setting into a version-3 file and reads it back", () => {
     const settings = { gain: 1.7, smoothing: 0.25, deformedNormalWeight: 0.8,
-      shading: "flat" as const };
+      shading: "flat" as const, materials: false };
     const saved = withSettings(v1, settings);
     expect(saved).toMatchObject({ version: 3, gain: 1.7, smoothing: 0.25, offset: 0,
-      look: { deformed_normal_weight: 0.8, shading: "flat" } });
+      look: { deformed_normal_weight: 0.8, shading: "flat", materials: false } });
     expect(settingsOf(saved)).toEqual(settings);
     expect(saved.transfer).toEqual(v1.transfer);
     expect(v1.version).toBe(1); // the original is not changed

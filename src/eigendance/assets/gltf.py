@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import base64
 import binascii
+import json
 import os
 import urllib.parse
 
@@ -20,6 +21,7 @@ import numpy as np
 import pygltflib
 
 from eigendance.errors import InputError, one_line
+from eigendance.reads import open_regular
 
 COMPONENT_TYPES = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
                    5125: np.uint32, 5126: np.float32}
@@ -30,6 +32,13 @@ READ_EXTENSIONS = {DRACO, "KHR_materials_unlit", "KHR_texture_transform",
                    "KHR_mesh_quantization", "KHR_materials_emissive_strength"}
 IMAGE_MAGIC = {b"\x89PNG\r\n\x1a\n": "image/png", b"\xff\xd8\xff": "image/jpeg"}
 MAX_ELEMENTS = 1 << 28  # an accessor larger than this is refused before it is allocated
+# An accessor without a buffer view is zeros (the base of a sparse one): its size is declared,
+# not held. It may declare at most ZEROS_PER_BYTE values per byte of the file and its buffers
+# (a mesh stores 12 bytes per vertex, Draco 1 or more), beyond ZEROS_FREE values.
+ZEROS_PER_BYTE, ZEROS_FREE = 16, 1 << 16
+# Objects of one kind (nodes, accessors, meshes …) a document may list: pygltflib takes about
+# 3 ms to read each, so 10,000 nodes take 30 s (a skeleton of 100,000 joints would take 5 min).
+MAX_OBJECTS = 10_000
 
 
 class GltfFile:
@@ -47,6 +56,8 @@ class GltfFile:
         path = os.fspath(path)
         self.name = name or os.path.basename(path)
         self.folder = os.path.dirname(os.path.abspath(path))
+        self.file_bytes = os.path.getsize(path)
+        self._check_objects(path)
         try:
             document = pygltflib.GLTF2().load(path)
         except Exception as error:  # pygltflib raises many kinds on a corrupt file
@@ -61,6 +72,26 @@ class GltfFile:
         self.document = document
         self._buffers: dict[int, bytes] = {}
         self._check_extensions()
+
+    def _check_objects(self, path: str) -> None:
+        """InputError when the document lists more than MAX_OBJECTS of a kind (nodes,
+        accessors …), read with json before pygltflib spends 3 ms on each."""
+        try:
+            with open_regular(path, self.name) as file:
+                head = file.read(20)
+                if head[:4] == b"glTF":  # GLB: header (12 bytes), JSON chunk (8 + length)
+                    text = file.read(int.from_bytes(head[12:16], "little"))
+                else:
+                    text = head + file.read()
+            document = json.loads(text)
+        except (ValueError, UnicodeDecodeError, OSError):
+            return  # pygltflib says what is wrong
+        if not isinstance(document, dict):
+            return
+        for kind, items in document.items():
+            if isinstance(items, list) and len(items) > MAX_OBJECTS:
+                raise self.message(f"the file lists {len(items)} {kind}; at most {MAX_OBJECTS} "
+                                   "are read")
 
     def _check_extensions(self) -> None:
         required = [str(e) for e in self.document.extensionsRequired or []]
@@ -146,11 +177,12 @@ class GltfFile:
         if not os.path.exists(path):
             raise self.message(f"{what}: the file {relative!r} is missing (it must sit beside "
                                "the model)")
-        if not os.path.isfile(path) or os.path.islink(path) and not \
-                os.path.realpath(path).startswith(os.path.realpath(self.folder) + os.sep):
-            raise self.message(f"{what}: {relative!r} is not a regular file in the model's "
-                               "folder")
-        with open(path, "rb") as file:
+        # Links are followed only where they stay inside the folder (a linked folder leading
+        # to /proc is outside), and only a regular file is opened (a FIFO would block).
+        inside = os.path.realpath(self.folder) + os.sep
+        if not os.path.realpath(path).startswith(inside):
+            raise self.message(f"{what}: {relative!r} leads outside the model's folder")
+        with open_regular(path, f"{self.name}: {what} ({relative})") as file:
             return file.read()
 
     def view_bytes(self, index: int) -> bytes:
@@ -194,6 +226,7 @@ class GltfFile:
         dtype, width = self._layout(item, f"accessor {index}")
         count = item.count
         if item.bufferView is None:
+            self._check_declared(count * width, f"accessor {index}")
             values = np.zeros((count, width), dtype=dtype)
         else:
             values = self._strided(item.bufferView, item.byteOffset or 0, dtype, width, count,
@@ -203,6 +236,23 @@ class GltfFile:
         if item.normalized and dtype.kind in "iu":
             return np.maximum(values / float(np.iinfo(dtype).max), -1.0)
         return values.astype(np.float64 if dtype.kind == "f" else np.int64)
+
+    def held_bytes(self) -> int:
+        """Bytes the model holds: its file and its buffers.
+
+        Returns
+        -------
+        int.
+        """
+        return self.file_bytes + sum(len(self.buffer(index))
+                                     for index in range(len(self.document.buffers or [])))
+
+    def _check_declared(self, values: int, what: str) -> None:
+        """InputError when `values` declared (not held) exceed what the file's bytes can
+        describe (ZEROS_PER_BYTE, ZEROS_FREE): checked before they are allocated."""
+        if values > ZEROS_FREE and values > ZEROS_PER_BYTE * self.held_bytes():
+            raise self.message(f"{what} declares {values} values without data, more than a "
+                               f"file of {self.held_bytes()} bytes can describe")
 
     def _layout(self, item, what: str) -> tuple[np.dtype, int]:
         if item.componentType not in COMPONENT_TYPES or item.type not in WIDTHS:

@@ -18,6 +18,10 @@ from eigendance.errors import InputError
 
 SAMPLER_FIELDS = ("magFilter", "minFilter", "wrapS", "wrapT")
 
+# The largest texture read: WebGL2 implementations allow 4096 to 16384 texels a side, and
+# 64 M pixels are 256 MB decoded as RGBA.
+MAX_IMAGE_SIDE, MAX_IMAGE_PIXELS = 16384, 1 << 26
+
 
 class Images:
     """The images a model's materials use, read once each, in the order first used."""
@@ -54,12 +58,21 @@ class Images:
 
 
 def _check_decodes(data: bytes) -> None:
-    """InputError unless Pillow can read the image's header and structure."""
+    """InputError unless Pillow can read the image's header and structure, and the size its
+    header declares is within MAX_IMAGE_SIDE and MAX_IMAGE_PIXELS (checked before anything
+    decodes it: a PNG of a few kB may declare 100,000 × 100,000 pixels)."""
     from PIL import Image as PillowImage  # imported when a textured model is read
 
     try:
         with PillowImage.open(io.BytesIO(data)) as image:
+            width, height = image.size
+            if max(width, height) > MAX_IMAGE_SIDE or width * height > MAX_IMAGE_PIXELS:
+                raise InputError(f"an image of {width} × {height} pixels (at most "
+                                 f"{MAX_IMAGE_SIDE} a side and {MAX_IMAGE_PIXELS >> 20} M "
+                                 "pixels)")
             image.verify()
+    except InputError:
+        raise
     except Exception as error:  # noqa: BLE001 - Pillow raises many kinds on broken images
         raise InputError(f"a broken image ({type(error).__name__})") from None
 

@@ -21,6 +21,10 @@ TRIANGLES, STRIP, FAN = 4, 5, 6
 MODE_NAMES = {0: "point", 1: "line", 2: "line loop", 3: "line strip"}
 
 
+# Joints read from a model's skins: the weights are a dense (vertices, joints) array, and a rig
+# keeps at most modal.bodies.MAX_BODIES of them (helper bones that move nothing are dropped).
+MAX_SKIN_JOINTS = 1024
+
 @dataclass
 class Piece:
     """One primitive of one mesh node, in world coordinates at rest.
@@ -217,14 +221,19 @@ def _skin_tree(gltf: GltfFile, nodes, parents, world, in_scene) -> SkinTree | No
     used = {node.skin for index, node in enumerate(nodes)
             if index in in_scene and node.skin is not None and node.mesh is not None}
     joint_nodes: list[int] = []
+    listed: set[int] = set()
     for skin_index in sorted(s for s in used if isinstance(s, int)):
         if not 0 <= skin_index < len(skins):
             raise gltf.message(f"a node names skin {skin_index}, which does not exist")
         for joint in skins[skin_index].joints or []:
             if not isinstance(joint, int) or not 0 <= joint < len(nodes):
                 raise gltf.message(f"skin {skin_index} names joint node {joint!r}")
-            if joint not in joint_nodes:
+            if joint not in listed:
+                listed.add(joint)
                 joint_nodes.append(joint)
+    if len(joint_nodes) > MAX_SKIN_JOINTS:  # before the (vertices, joints) weights exist
+        raise gltf.message(f"its skins have {len(joint_nodes)} joints; at most "
+                           f"{MAX_SKIN_JOINTS} are read")
     if not joint_nodes:
         return None
     column = {node: position for position, node in enumerate(joint_nodes)}

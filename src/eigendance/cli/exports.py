@@ -267,7 +267,7 @@ def run_render(args) -> None:
         dances, looks = gallery_dances(args, mapping)
     else:
         dances = [dance_from(args, mapping)]
-        looks = [Look(mapping.shading, mapping.deformed_normal_weight) if mapping else Look()]
+        looks = [Look.of(mapping)]
     bar, update = progress_bar(None, "frames", unit="frame")
     with bar:
         def step(done, total):
@@ -310,4 +310,4 @@ def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
     dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(
         args.start, args.duration) for item in items]
     say_note(args.output, dances[0].note)
-    return dances, [Look(item.shading, item.deformed_normal_weight) for item in items]
+    return dances, [Look.of(item) for item in items]

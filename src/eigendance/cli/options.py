@@ -97,6 +97,10 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
     -------
     (bar, update): the bar (a context manager) and update(done), which moves it to `done`.
     """
+    # No monitor thread (tqdm starts one even for a disabled bar): a single-threaded command
+    # forks its eigensolver's workers; a fork server's children may print a bootstrap traceback
+    # when Ctrl-C tears the pool down while they start.
+    tqdm.monitor_interval = 0
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
                disable=not sys.stderr.isatty(), leave=False)
 

@@ -1,13 +1,15 @@
 """Offscreen rendering of dances with the player's look (docs/design.md#exports).
 
 OpenGL 3.3 through moderngl on an EGL context (Mesa's llvmpipe when there is no GPU), drawing
-into an RGBA8 framebuffer that is read back as RGBA rows for the encoder. The look is the page's
-(web/src/shaders.ts, web/src/studio.ts, web/src/viewer.ts), ported line for line:
+into an RGBA8 framebuffer that is read back as RGBA rows for the encoder. The GLSL is the page's
+own (`eigendance.shaders`: one source both compile); the studio's numbers and the cameras follow
+web/src/studio.ts and web/src/viewer.ts:
 
 - the frame cleared to #15171c (between a gallery's tiles); in each view the studio backdrop
   (a vertical gradient #121418 → #2b303b with a faint light pool) and a soft contact shadow on
   the floor plane under the rest shape;
-- the model in one clay colour (#d9a47f) for every tile; per fragment, normals as thesis
+- a model with materials in its materials (`look_gl`, unless its mapping's look says clay),
+  else in one clay colour (#d9a47f) for every tile; per fragment, normals as thesis
   Fig. 6.4(d): the flat normal of the deformed triangle (screen derivatives of the view-space
   position) weighted `deformed_normal_weight` (0.4) against the original vertex normal (1 for
   flat shading); a camera-fixed studio light rig (sky/ground ambient, wrapped key, cool fill,
@@ -29,6 +31,8 @@ import moderngl
 import numpy as np
 
 from eigendance.errors import InputError, one_line
+from eigendance.export.look_gl import MaterialLook
+from eigendance.shaders.programs import program
 
 BACKGROUND = (0x15, 0x17, 0x1C)  # the canvas's clear colour (viewer.ts), bytes
 CLAY = 0xD9A47F  # the models' colour, sRGB (deform.ts)
@@ -40,112 +44,6 @@ MOTION_MARGIN = 1.08  # room around the poses framed
 POSES, RIM = 6, 2000  # the loudest poses framed, by the rim vertices reaching farthest
 NEAR, FAR = 0.05, 100.0  # in units of the mesh's half size
 GALLERY_PADDING, GALLERY_GAP = 10, 6  # pixels, as the page's tiles grid
-
-VERTEX = """
-#version 330
-uniform mat4 modelView;
-uniform mat4 projection;
-uniform mat3 normalMatrix;
-in vec3 position;
-in vec3 normal;
-out vec3 vViewPosition;
-out vec3 vNormal;
-void main() {
-  vec4 mv = modelView * vec4(position, 1.0);
-  vViewPosition = -mv.xyz;
-  vNormal = normalize(normalMatrix * normal);
-  gl_Position = projection * mv;
-}
-"""
-
-# web/src/shaders.ts SURFACE_FRAGMENT without the harmonics explorer.
-FRAGMENT = """
-#version 330
-uniform vec3 baseColor;
-uniform float deformedNormalWeight;
-uniform bool wire;
-in vec3 vViewPosition;
-in vec3 vNormal;
-out vec4 fragColor;
-void main() {
-  vec3 albedo = baseColor; // linear
-  if (wire) { fragColor = vec4(pow(albedo, vec3(1.0 / 2.2)), 1.0); return; }
-  vec3 flatNormal = normalize(cross(dFdx(vViewPosition), dFdy(vViewPosition)));
-  vec3 vertexNormal = normalize(vNormal);
-  if (dot(vertexNormal, flatNormal) < 0.0) vertexNormal = -vertexNormal;
-  vec3 n = normalize(mix(vertexNormal, flatNormal, deformedNormalWeight));
-  vec3 view = normalize(vViewPosition);
-  vec3 key = normalize(vec3(-0.5, 0.75, 0.45));
-  vec3 fill = normalize(vec3(0.8, 0.05, 0.55));
-  vec3 back = normalize(vec3(0.3, 0.6, -0.75));
-  vec3 ambient = mix(vec3(0.045, 0.040, 0.038), vec3(0.16, 0.17, 0.20), 0.5 + 0.5 * n.y);
-  float wrapped = max((dot(n, key) + 0.3) / 1.3, 0.0);
-  vec3 light = ambient + vec3(1.0, 0.93, 0.84) * 1.05 * wrapped * wrapped
-    + vec3(0.55, 0.65, 0.85) * 0.35 * max(dot(n, fill), 0.0);
-  // pow(x, 4) and pow(x, 24) by multiplication: the same numbers, cheaper on a software GPU.
-  float edge = 1.0 - max(dot(n, view), 0.0), edge2 = edge * edge;
-  float fresnel = edge2 * edge2;
-  vec3 rim = vec3(0.75, 0.82, 1.0) * (0.35 * max(dot(n, back), 0.0) + 0.25) * fresnel;
-  float h = max(dot(n, normalize(key + view)), 0.0), h3 = h * h * h, h6 = h3 * h3;
-  float h12 = h6 * h6;
-  float spec = h12 * h12 * 0.18;
-  vec3 color = albedo * light + rim + vec3(spec);
-  color = color / (1.0 + 0.25 * color); // soft shoulder: highlights never clip hard
-  fragColor = vec4(pow(color * 1.25, vec3(1.0 / 2.2)), 1.0);
-}
-"""
-
-# web/src/shaders.ts BACKDROP_*: a full-view quad behind everything.
-BACKDROP_VERTEX = """
-#version 330
-in vec2 position;
-out vec2 vUv;
-void main() {
-  vUv = position.xy * 0.5 + 0.5;
-  gl_Position = vec4(position.xy, 0.999, 1.0);
-}
-"""
-
-BACKDROP_FRAGMENT = """
-#version 330
-uniform vec3 top;
-uniform vec3 bottom;
-uniform float aspect;
-in vec2 vUv;
-out vec4 fragColor;
-void main() {
-  vec3 color = mix(bottom, top, smoothstep(0.0, 1.0, vUv.y));
-  vec2 p = (vUv - vec2(0.5, 0.58)) * vec2(aspect, 1.0);
-  color += vec3(0.012, 0.011, 0.010) * exp(-3.5 * dot(p, p));
-  fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
-}
-"""
-
-# web/src/shaders.ts SHADOW_*: the unit square of the floor plane (x, z in [-1, 1]) placed by
-# `model`, blended over what is drawn (three.js NormalBlending).
-SHADOW_VERTEX = """
-#version 330
-uniform mat4 modelView;
-uniform mat4 projection;
-in vec2 position;
-out vec2 vPlane;
-void main() {
-  vPlane = position;
-  gl_Position = projection * modelView * vec4(position.x, 0.0, position.y, 1.0);
-}
-"""
-
-SHADOW_FRAGMENT = """
-#version 330
-uniform float strength;
-in vec2 vPlane;
-out vec4 fragColor;
-void main() {
-  float r = dot(vPlane, vPlane);
-  fragColor = vec4(0.0, 0.0, 0.0, strength * exp(-3.0 * r) * (1.0 - smoothstep(0.7, 1.0, r)));
-}
-"""
-
 
 def linear(value: int) -> tuple[float, float, float]:
     """An sRGB hex colour as a linear colour uniform (three.js `new Color(hex)`).
@@ -165,18 +63,36 @@ def linear(value: int) -> tuple[float, float, float]:
 
 @dataclass
 class Look:
-    """How a surface is shaded (a mapping's `look`): shading "smooth" | "flat" | "wireframe",
-    and the weight of the deformed triangle's flat normal against the original vertex normal
-    (thesis Fig. 6.4(d): 0.4).
+    """How a surface is shaded (a mapping's `look`).
 
     Parameters
     ----------
-    shading : "smooth", "flat" or "wireframe".
-    deformed_normal_weight : w in [0, 1].
+    shading : "smooth", "flat" or "wireframe" (a wireframe is drawn in clay).
+    deformed_normal_weight : the deformed triangle's flat normal against the original vertex
+        normal (thesis Fig. 6.4(d): 0.4).
+    materials : draw a model with materials in them (False: the clay studio look).
     """
 
     shading: str = "smooth"
     deformed_normal_weight: float = 0.4
+    materials: bool = True
+
+    @classmethod
+    def of(cls, mapping) -> Look:
+        """The look a mapping saves (`Mapping.shading`, `.deformed_normal_weight`,
+        `.materials`).
+
+        Parameters
+        ----------
+        mapping : a `music.mapping.Mapping`, or None (the default look).
+
+        Returns
+        -------
+        Look.
+        """
+        if mapping is None:
+            return cls()
+        return cls(mapping.shading, mapping.deformed_normal_weight, mapping.materials)
 
     @property
     def normal_weight(self) -> float:
@@ -421,34 +337,43 @@ class Renderer:
     faces : (m, 3) triangles of the mesh every draw uses.
     normals : (n, 3) its vertex normals (replaced per draw when a dance turns them).
     rest : (n, 3) its rest shape, and `scale` its half size: where the contact shadow lies.
+    appearance : the model's look (`assets.Appearance`: drawn vertices on these, materials), or
+        None (clay).
     """
 
     def __init__(self, width: int, height: int, faces: np.ndarray, normals: np.ndarray,
-                 rest: np.ndarray, scale: float):
+                 rest: np.ndarray, scale: float, appearance=None):
         self.width, self.height = int(width), int(height)
         self.context = context = create_context()
         self.framebuffer = context.framebuffer(
             color_attachments=[context.renderbuffer((self.width, self.height))],
             depth_attachment=context.depth_renderbuffer((self.width, self.height)))
-        self.program = context.program(vertex_shader=VERTEX, fragment_shader=FRAGMENT)
+        defines = {"CPU_PATH": 1}
+        self.program = context.program(vertex_shader=program("surface.vert", defines),
+                                       fragment_shader=program("surface.frag", defines))
         self.n = len(normals)
         self.positions = context.buffer(reserve=self.n * 12, dynamic=True)
         self.rest_normals = np.ascontiguousarray(normals, dtype=np.float32)
         self.normals = context.buffer(self.rest_normals.tobytes(), dynamic=True)
         self.indices = context.buffer(np.ascontiguousarray(faces, dtype=np.uint32).tobytes())
         self.vertex_array = context.vertex_array(
-            self.program, [(self.positions, "3f", "position"), (self.normals, "3f", "normal")],
+            self.program, [(self.positions, "3f", "displaced"), (self.normals, "3f", "normal")],
             self.indices)
         self.program["baseColor"].value = linear(CLAY)
-        square = context.buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], dtype=np.float32))
-        self.backdrop = context.program(vertex_shader=BACKDROP_VERTEX,
-                                        fragment_shader=BACKDROP_FRAGMENT)
+        self.look = None if appearance is None else MaterialLook(context, appearance, normals)
+        square = context.buffer(np.array([-1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0],
+                                         dtype=np.float32))
+        self.backdrop = context.program(vertex_shader=program("backdrop.vert"),
+                                        fragment_shader=program("backdrop.frag"))
         self.backdrop["top"].value = linear(BACKDROP_TOP)
         self.backdrop["bottom"].value = linear(BACKDROP_BOTTOM)
-        self.backdrop_quad = context.vertex_array(self.backdrop, [(square, "2f", "position")])
-        self.shadow = context.program(vertex_shader=SHADOW_VERTEX, fragment_shader=SHADOW_FRAGMENT)
+        self.backdrop_quad = context.vertex_array(self.backdrop, [(square, "3f", "position")])
+        floor = context.buffer(np.array([-1, 0, -1, 1, 0, -1, -1, 0, 1, 1, 0, 1],
+                                        dtype=np.float32))
+        self.shadow = context.program(vertex_shader=program("shadow.vert"),
+                                      fragment_shader=program("shadow.frag"))
         self.shadow["strength"].value = SHADOW_STRENGTH
-        self.shadow_quad = context.vertex_array(self.shadow, [(square, "2f", "position")])
+        self.shadow_quad = context.vertex_array(self.shadow, [(floor, "3f", "position")])
         self.shadow_model = shadow_model(np.asarray(rest, dtype=np.float64), scale)
         self.studio = context.framebuffer(
             color_attachments=[context.renderbuffer((self.width, self.height))])
@@ -457,10 +382,10 @@ class Renderer:
         self.framebuffer.use()
 
     def begin(self, views: list[tuple[int, int, int, int]]) -> None:
-        """Start a frame of these views (x, y, w, h): the canvas's clear colour between them
-        and the studio backdrop in each. The backdrop depends on the views only, so it is drawn
-        once and copied into every frame (a per-pixel gradient is most of a frame's cost on
-        llvmpipe otherwise).
+        """Start a frame of these views: the canvas's clear colour between them and the studio
+        backdrop in each. The backdrop depends on the views only, so it is drawn once and
+        copied into every frame (a per-pixel gradient is most of a frame's cost on llvmpipe
+        otherwise).
 
         Parameters
         ----------
@@ -487,36 +412,45 @@ class Renderer:
     def draw(self, positions: np.ndarray | None, camera: Camera, look: Look,
              viewport: tuple[int, int, int, int] | None = None,
              normals: np.ndarray | None = None) -> None:
-        """Draw the mesh at `positions` (n, 3) and its contact shadow into `viewport` (one of
-        the frame's views; default: the whole frame), in the page's order after the backdrop:
-        the model, then the (transparent) shadow, hidden where the model is in front of it.
-        Positions None: the empty studio.
+        """Draw the mesh and its contact shadow into one of the frame's views, in the page's
+        order after the backdrop: the model (its opaque parts), the (transparent) shadow,
+        hidden where the model is in front of it, then the model's blended parts.
 
         Parameters
         ----------
-        positions : (n, 3), or None.
+        positions : (n, 3) the welded vertices, or None (the empty studio).
         camera : the view's camera.
-        look : how the surface is shaded.
-        viewport : (x, y, w, h), or None.
-        normals : (n, 3) turned normals (a rig's), or None (computed from the deformed triangles).
+        look : how the surface is shaded (in its materials or in clay).
+        viewport : (x, y, w, h), or None (the whole frame).
+        normals : (n, 3) the welded vertices' turned normals (a rig's), or None (rest normals).
         """
         context = self.context
         viewport = viewport or (0, 0, self.width, self.height)
         self.framebuffer.viewport = viewport
         context.scissor = viewport
         context.enable(moderngl.DEPTH_TEST)
-        if positions is not None:
-            self._draw_model(positions, camera, look, normals)
-        # The shadow comes last in its view, so its depth never hides anything.
-        self.shadow["modelView"].write(_matrix(camera.view @ self.shadow_model))
-        self.shadow["projection"].write(_matrix(camera.projection))
+        materials = self.look is not None and look.materials and look.shading != "wireframe"
+        matrices = {"modelViewMatrix": _matrix(camera.view),
+                    "projectionMatrix": _matrix(camera.projection),
+                    "normalMatrix": _matrix(np.linalg.inv(camera.view[:3, :3]).T)}
+        if positions is not None and materials:
+            self.look.update(positions, normals)
+            self.look.draw(matrices, look.normal_weight, blended=False)
+        elif positions is not None:
+            self._draw_clay(positions, matrices, look, normals)
+        # The shadow after the opaque model, so its depth never hides anything.
+        self.shadow["modelViewMatrix"].write(
+            _matrix(camera.view @ self.shadow_model))
+        self.shadow["projectionMatrix"].write(matrices["projectionMatrix"])
         context.enable(moderngl.BLEND)
         context.blend_func = (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA,
                               moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
         self.shadow_quad.render(moderngl.TRIANGLE_STRIP)
         context.disable(moderngl.BLEND)
+        if positions is not None and materials and self.look.has_blended:
+            self.look.draw(matrices, look.normal_weight, blended=True)
 
-    def _draw_model(self, positions, camera, look, normals) -> None:
+    def _draw_clay(self, positions, matrices, look, normals) -> None:
         context = self.context
         self.positions.write(np.ascontiguousarray(positions, dtype=np.float32))
         if normals is not None:
@@ -525,12 +459,11 @@ class Renderer:
         elif self.turned:
             self.normals.write(self.rest_normals)
             self.turned = False
-        program = self.program
-        program["modelView"].write(_matrix(camera.view))
-        program["projection"].write(_matrix(camera.projection))
-        program["normalMatrix"].write(_matrix(np.linalg.inv(camera.view[:3, :3]).T))
-        program["deformedNormalWeight"].value = look.normal_weight
-        program["wire"].value = look.shading == "wireframe"
+        program_ = self.program
+        for name, value in matrices.items():
+            program_[name].write(value)
+        program_["deformedNormalWeight"].value = look.normal_weight
+        program_["wire"].value = look.shading == "wireframe"
         context.wireframe = look.shading == "wireframe"
         self.vertex_array.render(moderngl.TRIANGLES)
         context.wireframe = False
@@ -547,11 +480,11 @@ class Renderer:
         return self.framebuffer.read(components=4, alignment=1)
 
     def image(self) -> np.ndarray:
-        """The frame as an (height, width, 3) uint8 RGB array, top row first.
+        """The frame as an image.
 
         Returns
         -------
-        (height, width, 3) uint8.
+        (height, width, 3) uint8 RGB, top row first.
         """
         frame = np.frombuffer(self.read(), np.uint8).reshape(self.height, self.width, 4)
         return frame[::-1, :, :3]

@@ -153,7 +153,7 @@ def render_frames(dances: list[Dance], looks: list[Look], times, width: int, hei
         gallery_cells(len(dances), width, height)
     cameras = view_cameras(dances, cells)
     renderer = Renderer(width, height, first.faces, first.rest_normals(), first.rest,
-                        first.scale)
+                        first.scale, first.appearance)
     try:
         streams = [_one_by_one(dance.frames(times)) for dance in dances]
         for frame in zip(*streams, strict=True):

@@ -25,6 +25,7 @@ import platformdirs
 
 from eigendance.errors import InputError
 from eigendance.files import atomic_save_npz
+from eigendance.reads import read_npz
 
 KEY, CHECKSUM = "__key__", "__checksum__"
 
@@ -127,12 +128,11 @@ class DiskCache:
         if not os.path.lexists(path):
             return None
         try:
-            with np.load(path, allow_pickle=False) as data:
-                arrays = {name: data[name] for name in data.files}
+            arrays = read_npz(path)  # a regular file whose declared sizes it holds
             stored_key, stored_sum = str(arrays.pop(KEY)), str(arrays.pop(CHECKSUM))
             if stored_key == key and stored_sum == checksum(arrays):
                 return arrays
-        except (OSError, ValueError, KeyError, zipfile.BadZipFile, EOFError):
+        except (InputError, OSError, ValueError, KeyError, zipfile.BadZipFile, EOFError):
             pass
         self._discard(path)
         return None

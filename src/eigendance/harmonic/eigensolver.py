@@ -547,6 +547,10 @@ class _Workers:
         if kind is not None:  # interrupted or failed: do not wait for bands nobody needs
             for process in list(getattr(self.pool, "_processes", {}).values()):
                 process.kill()
+            # The queue's feeder thread may be blocked writing bands to a pipe the killed
+            # workers no longer read; joining it at exit would hang the interpreter.
+            if (calls := getattr(self.pool, "_call_queue", None)) is not None:
+                calls.cancel_join_thread()
         self.pool.shutdown(wait=kind is None, cancel_futures=True)
 
 

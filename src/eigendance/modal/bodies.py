@@ -149,6 +149,38 @@ class Joint:
 
 
 
+# The largest rig analysed (docs/design.md#rig-size): the modal analysis is dense in the 6 n_b
+# rigid-body coordinates, its time grows as n_b³ and the modal skin's memory as n_b × vertices.
+# Measured (benchmarks/bench_limits.py, 2 loaded cores): a glTF chain of 250 joints takes 11 s
+# and 0.25 GB, of 500 joints 49 s; a skeleton JSON of 200 bodies (its tube skin of 19,200
+# vertices) 31 s and 1.4 GB, of 300 bodies 75 s and 3.1 GB.
+MAX_BODIES, MAX_JOINTS = 256, 512
+
+
+def check_rig_size(bodies: int, joints: int, name: str) -> None:
+    """InputError when a rig has more than MAX_BODIES bodies or MAX_JOINTS joints (checked
+    before anything is computed from them).
+
+    Parameters
+    ----------
+    bodies : how many bodies (or glTF joints that become bodies).
+    joints : how many joints.
+    name : how messages call the rig.
+
+    Example
+    -------
+    >>> check_rig_size(100, 99, "snake.json")   # within the limits: nothing to say
+    >>> try:
+    ...     check_rig_size(1000, 999, "snake.json")
+    ... except InputError as error:
+    ...     print(str(error)[:38])
+    snake.json: 1000 bodies and 999 joints
+    """
+    if bodies > MAX_BODIES or joints > MAX_JOINTS:
+        raise InputError(f"{name}: {bodies} bodies and {joints} joints; eigendance analyses "
+                         f"rigs of at most {MAX_BODIES} bodies and {MAX_JOINTS} joints")
+
+
 def check_skeleton(bodies: list[Body], joints: list[Joint], name: str) -> None:
     """InputError, naming the skeleton and the first part at fault, unless the bodies and joints
     make a skeleton the modal analysis handles (`check_bodies`, `check_joints`).
@@ -159,6 +191,7 @@ def check_skeleton(bodies: list[Body], joints: list[Joint], name: str) -> None:
     joints : its pairwise joints (bodies given by index).
     name : how messages call the skeleton (a file name).
     """
+    check_rig_size(len(bodies), len(joints), name)
     check_bodies(bodies, name)
     check_joints(joints, len(bodies), name)
 

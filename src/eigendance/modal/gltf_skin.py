@@ -18,7 +18,7 @@ from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
 from eigendance.geometry import weld
-from eigendance.modal.bodies import Body, Joint
+from eigendance.modal.bodies import Body, Joint, check_rig_size
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.stiffness import DEFAULT_JOINT_FREQUENCY, set_automatic_stiffness
 
@@ -99,6 +99,7 @@ def skinned_rig(model: Model) -> tuple[SkinnedRig, np.ndarray]:
     hanging = np.flatnonzero(model.bones >= 0)
     weights[hanging, model.bones[hanging]] = 1.0
     keep = moving_joints(skin.parents, weights.max(axis=0, initial=0) >= CARRY_WEIGHT)
+    check_rig_size(int(keep.sum()), max(int(keep.sum()) - 1, 0), model.name)
     notes = []
     if not keep.all():
         notes.append(f"left out {int((~keep).sum())} joints that move no vertex "

@@ -23,7 +23,6 @@ import os
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError
@@ -109,7 +108,38 @@ def null_space(matrix: np.ndarray, n_columns: int) -> np.ndarray:
     """
     if matrix.shape[0] == 0:
         return np.eye(n_columns)
-    return scipy.linalg.null_space(matrix, rcond=RANK_TOLERANCE)
+    # numpy's SVD, not scipy.linalg.null_space: numpy lets other threads run meanwhile (scipy's
+    # LAPACK wrappers hold the GIL, and the server's event loop waited seconds for them).
+    _, singular, rows = np.linalg.svd(matrix, full_matrices=True)
+    rank = int(np.sum(singular > RANK_TOLERANCE * singular[0])) if singular.size else 0
+    return rows[rank:].T.copy()
+
+
+def generalized_eigh(stiffness: np.ndarray, mass: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """K v = λ M v for symmetric K and positive definite M, as LAPACK's sygvd solves it (M = L Lᵀ,
+    the standard problem of L⁻¹ K L⁻ᵀ), with numpy's routines, which let other threads run
+    (scipy.linalg.eigh holds the GIL).
+
+    Parameters
+    ----------
+    stiffness : (d, d) symmetric K.
+    mass : (d, d) symmetric positive definite M.
+
+    Returns
+    -------
+    eigenvalues (d,) ascending, eigenvectors (d, d) as columns, M-orthonormal (Vᵀ M V = I).
+
+    Example
+    -------
+    >>> values, vectors = generalized_eigh(np.diag([2.0, 12.0]), np.diag([1.0, 3.0]))
+    >>> values.round(6).tolist(), bool(np.allclose(vectors.T @ np.diag([1.0, 3.0]) @ vectors,
+    ...                                            np.eye(2)))
+    ([2.0, 4.0], True)
+    """
+    lower = np.linalg.cholesky(mass)
+    standard = np.linalg.solve(lower, np.linalg.solve(lower, stiffness).T)
+    eigenvalues, vectors = np.linalg.eigh((standard + standard.T) / 2)
+    return eigenvalues, np.linalg.solve(lower.T, vectors)
 
 
 def matrix_rank(matrix: np.ndarray) -> int:
@@ -226,7 +256,7 @@ class ModalModel:
         reduced_stiffness = (reduced_stiffness + reduced_stiffness.T) / 2
         dimension = basis.shape[1]
         if dimension:
-            eigenvalues, vectors = scipy.linalg.eigh(reduced_stiffness, reduced_mass)
+            eigenvalues, vectors = generalized_eigh(reduced_stiffness, reduced_mass)
         else:
             eigenvalues, vectors = np.zeros(0), np.zeros((0, 0))
         elastic = stiffnesses > 0

@@ -93,7 +93,7 @@ class Rig:
         """The modal skinning of the skin (`ModalSkin`), precomputed on first use and kept."""
         if self._skin is None:
             self._skin = ModalSkin(self.model, self.skeleton.vertices, self.skeleton.weights,
-                                   self.dtype)
+                                   self.dtype, self.skeleton.name)
         return self._skin
 
     @property

@@ -28,6 +28,7 @@ from eigendance.modal.bodies import (
     Body,
     Joint,
     check_bodies,
+    check_rig_size,
     meeting_point,
 )
 from eigendance.modal.stiffness import set_automatic_stiffness
@@ -59,6 +60,7 @@ def skeleton_parts(document, name: str = "skeleton") -> tuple[list[Body], list[J
         raise InputError(f"{name}: \"bodies\" must be a non-empty list")
     if not isinstance(raw_joints, list):
         raise InputError(f"{name}: \"joints\" must be a list")
+    check_rig_size(len(raw_bodies), len(raw_joints), name)
     bodies = [_body(item, index, name) for index, item in enumerate(raw_bodies)]
     check_bodies(bodies, name)  # before "auto" stiffness computes with their masses
     joints, automatic, joint_names = [], [], set()

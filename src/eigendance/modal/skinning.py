@@ -22,8 +22,28 @@ import scipy.sparse
 
 from eigendance.errors import InputError
 from eigendance.geometry import cross
+from eigendance.limits import check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.rotations import rotate_by_vectors
+
+# Peak bytes of building a modal skin per value of τ (vertex × mode × coordinate): measured
+# 40 (benchmarks/bench_limits.py: float64 products cast to float32, transposed copies).
+SKIN_PEAK_BYTES = 48
+
+
+def skin_bytes(vertices: int, modes: int) -> int:
+    """Peak memory of building the modal skin of `modes` modes on `vertices` vertices.
+
+    Parameters
+    ----------
+    vertices : n.
+    modes : nm.
+
+    Returns
+    -------
+    int, bytes.
+    """
+    return SKIN_PEAK_BYTES * 3 * int(vertices) * int(modes)
 
 
 def _checked(vertices, weights, n_bodies):
@@ -45,6 +65,8 @@ class ModalSkin:
     vertices : (n, 3) rest positions, in the bodies' coordinates.
     weights : (n, n_b) skin weights (dense or scipy sparse), rows summing to 1.
     dtype : float32 halves memory and time per frame (what a GPU uses); float64 by default.
+    name : how messages call the rig (InputError when its skin would not fit in memory,
+        `skin_bytes`, checked before anything is allocated).
 
     Attributes: displacement (nm, 3n) — row κ is τ_·κ flattened; rotation (nm, 3n) — ρ_·κ.
 
@@ -60,10 +82,13 @@ class ModalSkin:
     (True, True)
     """
 
-    def __init__(self, model: ModalModel, vertices, weights, dtype=np.float64):
+    def __init__(self, model: ModalModel, vertices, weights, dtype=np.float64,
+                 name: str = "rig"):
         weights = weights if hasattr(weights, "tocsr") else np.asarray(weights, dtype=float)
         self.vertices = _checked(vertices, weights, model.n_bodies)
         n, nm, nb = len(self.vertices), model.n_modes, model.n_bodies
+        check_memory(skin_bytes(n, nm), f"{name}: the modal skin's values ({nm} modes on "
+                     f"{n} vertices)")
         if not hasattr(weights, "tocsr") and np.count_nonzero(weights) < 0.25 * weights.size:
             weights = scipy.sparse.csr_array(weights)  # a vertex follows a few bodies
         twists = model.modes.reshape(nb, 6, nm)

@@ -136,6 +136,8 @@ class Mapping:
     deformed_normal_weight : weight of the deformed triangle's flat normal against the original
         vertex normal, in [0, 1] (thesis Fig. 6.4(d): 0.4).
     shading : "smooth", "flat" or "wireframe".
+    materials : draw a model that has materials in them (False: in the clay studio look);
+        a model without materials is drawn in clay either way (docs/design.md#mapping-file).
     envelope : per-band attack, release, threshold and auto-range (`Envelope`; version 3).
     pulse : kicks on the beats routed to a range of targets (`Pulse`; version 3).
 
@@ -158,6 +160,7 @@ class Mapping:
     modes: ModeSettings | None = None
     deformed_normal_weight: float = 0.4
     shading: str = "smooth"
+    materials: bool = True
     envelope: Envelope = field(default_factory=Envelope)
     pulse: Pulse = field(default_factory=Pulse)
 
@@ -177,6 +180,10 @@ class Mapping:
         if self.shading not in SHADINGS:
             raise InputError(f"{self.name}: shading must be one of {', '.join(SHADINGS)}, got "
                              f"{self.shading!r}")
+        if not isinstance(self.materials, bool | np.bool_):
+            raise InputError(f"{self.name}: look.materials must be true or false, got "
+                             f"{_shown(self.materials)}")
+        self.materials = bool(self.materials)
         self.envelope = self.envelope.for_bands(self.bands, self.name)
 
     @property
@@ -343,7 +350,7 @@ class Mapping:
                 "gain": self.gain, "smoothing": self.smoothing, "offset": self.offset,
                 "modes": None if self.modes is None else self.modes.to_json(),
                 "look": {"deformed_normal_weight": self.deformed_normal_weight,
-                         "shading": self.shading},
+                         "shading": self.shading, "materials": self.materials},
                 "envelope": self.envelope.to_json(), "pulse": self.pulse.to_json()}
 
     @classmethod
@@ -396,6 +403,8 @@ class Mapping:
                     look["deformed_normal_weight"], "look.deformed_normal_weight", name)
             if "shading" in look:
                 settings["shading"] = look["shading"]
+            if "materials" in look:
+                settings["materials"] = look["materials"]
         if version >= 3:
             if data.get("envelope") is not None:
                 settings["envelope"] = Envelope.from_json(data["envelope"], name)

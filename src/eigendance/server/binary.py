@@ -2,8 +2,8 @@
 
 Layout (little-endian): b"EDB1", uint32 header length H, H bytes of UTF-8 JSON padded with
 spaces to a multiple of 4, then the arrays, each starting at a multiple of 4 bytes. The header is
-``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32"|"uint16", "shape":
-[...], "offset": bytes from the start of the data}}}``.
+``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32"|"uint16"|"uint8",
+"shape": [...], "offset": bytes from the start of the data}}}``.
 
 Basis bundle (`basis_bundle`): vertices (n,3) f32 normalised, faces (m,3) u32, eigenvalues (k,)
 f32, coefficients (k,3) f32 and `harmonics` (n, 4·⌈k/4⌉) f32 (or f16 on request) — the eigenvectors
@@ -17,6 +17,9 @@ empty without it), meta rate/sample_rate/duration and tempo (beats per minute, 0
 Rig bundle (`rig_bundle`): what the page needs to play a rig — modal skinning packed for float
 textures, linear blend skinning for three.js, the bodies and their per-mode twists; the arrays
 and their units are listed in docs/web.md#rig-bundle.
+Appearance bundle (`appearance_bundle`): a model's look — drawn vertices, their map onto the
+welded ones, materials with the shader's rule for each, the images' bytes
+(docs/web.md#appearance-bundle).
 """
 
 from __future__ import annotations
@@ -33,15 +36,16 @@ from eigendance.modal.palette import (
     mode_reach,
     single_mode_amplitudes,
 )
+from eigendance.shaders.programs import material_shading
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
-          "uint16": np.dtype("<u2")}
+          "uint16": np.dtype("<u2"), "uint8": np.dtype("u1")}
 
 
 def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) -> bytes:
-    """Bundle the arrays: integers as uint32 (uint16 arrays stay uint16), floats as float32
-    (float16 arrays, and names in `half`, as float16).
+    """Bundle the arrays: bytes (uint8) and uint16 arrays as they are, other integers as uint32,
+    floats as float32 (float16 arrays, and names in `half`, as float16).
 
     Parameters
     ----------
@@ -56,7 +60,9 @@ def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) 
     entries, blobs, offset = {}, [], 0
     for name, array in arrays.items():
         kind = np.asarray(array).dtype
-        if kind == np.uint16:
+        if kind == np.uint8:
+            dtype = "uint8"
+        elif kind == np.uint16:
             dtype = "uint16"
         elif np.issubdtype(kind, np.integer):
             dtype = "uint32"
@@ -300,3 +306,34 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0, edited: bool = False) 
         "joint_positions": model.joint_positions,
         "joint_bend": joint_bend(model),  # (j, k): the page's palette caps the bend with it
     })
+
+
+def appearance_bundle(appearance, name: str = "model") -> bytes:
+    """A model's look for the web app (docs/web.md#appearance-bundle).
+
+    Parameters
+    ----------
+    appearance : an `assets.Appearance` (its `welded` map onto the vertices of the basis or
+        rig bundle of the same model).
+    name : the model's name.
+
+    Returns
+    -------
+    bytes: meta {kind "appearance", name, drawn, materials (each with `shading`: the surface
+    shader's defines, uniforms and textures, `shaders.programs.material_shading`), images,
+    parts, uvSets, colors, tangents}; arrays welded (n_d,) uint32, normals (n_d, 3), uv0, uv1
+    (n_d, 2), colors (n_d, 4), tangents (n_d, 4), triangles<p> (m_p, 3) uint32 per part,
+    image<i> (bytes,) uint8 the encoded PNG or JPEG of image i.
+    """
+    meta = {"kind": "appearance", "name": name, **appearance.to_json()}
+    colors = appearance.colors is not None
+    for material, described in zip(appearance.materials, meta["materials"], strict=True):
+        described["shading"] = material_shading(material, len(appearance.uvs), colors)
+    arrays = dict(appearance.arrays())
+    arrays["welded"] = np.asarray(appearance.welded, dtype=np.uint32)
+    for key in list(arrays):
+        if key.startswith("triangles"):
+            arrays[key] = np.asarray(arrays[key], dtype=np.uint32)
+    for index, image in enumerate(appearance.images):
+        arrays[f"image{index}"] = np.frombuffer(image.data, dtype=np.uint8)
+    return pack(meta, arrays)

@@ -188,7 +188,7 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
             whole = HarmonicDance(item.basis, song.spectrogram, mapping, audio, stem)
         part = whole.window(start, duration)
         part.info["song"] = song.name
-        return part, Look(mapping.shading, mapping.deformed_normal_weight)
+        return part, Look.of(mapping)
 
     dance, look = await in_worker(clip)  # a bad mapping is a 400 now, not a failed job
     job = Job(new_id(), "export", max(1, math.ceil(duration * fps)), name=item.name)

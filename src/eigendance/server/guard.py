@@ -16,6 +16,8 @@ browser only keeps it from reading most answers. So, for every request:
   ``application/x-www-form-urlencoded``: 415) — the JSON routes ask for ``application/json``.
   Clients other than browsers (curl, scripts) send neither Origin nor Sec-Fetch-Site.
 - A path with control characters (``%00``) is refused (400).
+- A request that repeats a header the checks read (Host, Origin, Sec-Fetch-Site, Content-Type)
+  is refused (400): a proxy or a browser may read the other copy than we did.
 
 Any exception the app does not turn into an answer becomes a 500 with one line of JSON, and one
 line on stderr: no traceback reaches the client or the terminal.
@@ -37,6 +39,8 @@ DEFAULT_HOST = "127.0.0.1"
 LOOPBACK_NAMES = ("localhost", "127.0.0.1", "[::1]")
 WILDCARDS = ("", "0.0.0.0", "::")
 SAFE_METHODS = ("GET", "HEAD", "OPTIONS")
+# Headers the checks read: each may be sent once.
+SINGLE_HEADERS = (b"host", b"origin", b"sec-fetch-site", b"content-type")
 # Content types a cross-origin page can send without asking first (no CORS preflight).
 FORM_TYPES = ("application/x-www-form-urlencoded", "multipart/form-data", "text/plain")
 
@@ -146,14 +150,20 @@ def split_host(header: str) -> tuple[str | None, int | None]:
 
     Returns
     -------
-    (name, port): port 80 when absent; (None, None) when malformed.
+    (name, port): port 80 when absent; (None, None) when malformed (a port of other than ASCII
+    digits included: "²" is a digit to Python, not to HTTP).
+
+    Example
+    -------
+    >>> split_host("LocalHost:8765"), split_host("[::1]"), split_host("localhost:8²")
+    (('localhost', 8765), ('[::1]', 80), (None, None))
     """
     header = header.strip().lower()
     if header.endswith("]") or ":" not in header:
         name, port = header, "80"
     else:
         name, _, port = header.rpartition(":")
-    if not name or not port.isdigit() or len(port) > 5:
+    if not name or not port.isascii() or not port.isdigit() or len(port) > 5:
         return None, None
     return name, int(port)
 
@@ -192,6 +202,10 @@ def refusal(scope, hosts: Hosts) -> tuple[int, str] | None:
     path = scope.get("path", "")
     if any(ord(character) < 32 or ord(character) == 127 for character in path):
         return 400, "the path holds control characters"
+    names = [key for key, _ in scope.get("headers", ())]
+    repeated = next((name for name in SINGLE_HEADERS if names.count(name) > 1), None)
+    if repeated is not None:
+        return 400, f"the request repeats the {repeated.decode().title()} header"
     host = header_of(scope, b"host")
     if host is None or not hosts.accepts(host):
         shown = one_line(host or "(none)", 80)
@@ -246,7 +260,10 @@ class Guard:
     async def __call__(self, scope, receive, send):
         if scope["type"] != "http":
             return await self.app(scope, receive, send)
-        refused = refusal(scope, self.hosts)
+        try:
+            refused = refusal(scope, self.hosts)
+        except Exception as error:  # noqa: BLE001 - headers no check foresaw: refused, one line
+            refused = 400, f"malformed request headers ({type(error).__name__})"
         if refused is not None:
             return await send_json(send, *refused)
         started = False

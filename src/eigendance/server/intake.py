@@ -6,7 +6,8 @@ skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a 
 skin cannot be analysed). One
 item per distinct content (`server.contents`): the same bytes again answer the item already
 there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
-names from the network never become paths.
+names from the network never become paths. A .zip is a model in several files
+(`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import dataclasses
 import hashlib
 import json
 import os
+import shutil
 
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import check_readable, kind_of, read_json, suffix_of
@@ -25,6 +27,7 @@ from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server import rigs
+from eigendance.server.archive import is_archive, unpack
 from eigendance.server.binary import spectrogram_bundle
 from eigendance.server.contents import file_digest
 from eigendance.server.items import Job, MappingItem, MeshItem, RigItem, SongItem, new_id
@@ -33,6 +36,8 @@ from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
 
 UPLOAD_PREFIX = "upload-"
+# A model's zip may unpack to this many times the upload limit (docs/design.md#server).
+UNPACKED_FACTOR = 4
 
 
 class Intake:
@@ -45,13 +50,16 @@ class Intake:
     k : harmonics per mesh basis.
     spectrogram_options : options of `Spectrogram.from_file`.
     construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
+    unpacked_limit : the most bytes a model's zip may unpack to.
     """
 
     def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,
-                 spectrogram_options: dict | None = None, construction: str = "auto"):
+                 spectrogram_options: dict | None = None, construction: str = "auto",
+                 unpacked_limit: int = 256 << 20):
         self.shelf, self.solver, self.k = shelf, solver, k
         self.construction = construction
         self.spectrogram_options = spectrogram_options or {}
+        self.unpacked_limit = unpacked_limit
 
     def add_path(self, path: str, name: str | None = None, k: int | None = None):
         """Register a file by its kind (suffix): meshes start a basis job, songs are decoded.
@@ -67,9 +75,10 @@ class Intake:
         The item: new, or the one already there with the same content.
         """
         name = name or os.path.basename(path)
-        kind = kind_of(name)
         check_readable(path)
-        return self._add_file(path, name, kind, file_digest(path), "file", k)[0]
+        if is_archive(name):
+            return self._add_archive(path, name, file_digest(path), "file", k)[0]
+        return self._add_file(path, name, kind_of(name), file_digest(path), "file", k)[0]
 
     def add_upload(self, stored: str, name: str, kind: str, digest: str):
         """Register an uploaded file under a name of our own; an upload that fails leaves no
@@ -86,6 +95,11 @@ class Intake:
         -------
         (item, new): new is False when the same content was there (that item is answered).
         """
+        if is_archive(name):
+            try:
+                return self._add_archive(stored, name, digest, "upload")
+            finally:
+                os.unlink(stored)
         final = os.path.join(self.shelf.folder, f"{UPLOAD_PREFIX}{digest[:24]}{suffix_of(name)}")
         try:
             os.replace(stored, final)
@@ -93,11 +107,47 @@ class Intake:
         except BaseException as error:
             self.shelf.discard(stored, final)
             if isinstance(error, EigendanceError):
-                error.args = (self.shelf.public(str(error), {final: name}),)
+                message = self.shelf.public(str(error), {final: name})
+                if "is missing" in message:  # a .gltf's buffer or image, not uploaded with it
+                    message += "; add the model together with the files it names (drop them " \
+                               "together, or as one .zip)"
+                error.args = (message,)
             raise
         if not new:
             self.shelf.discard(final)  # unless it is the file of the item already there
         return item, new
+
+    def _add_archive(self, path: str, name: str, digest: str, origin: str,
+                     k: int | None = None):
+        """A model's zip (`server.archive`): unpacked once into the library's folder
+        `upload-<digest>/` and its model file added (named by that file); the item and whether
+        it is new. A zip that fails leaves no folder behind."""
+        shelf = self.shelf
+        folder = os.path.join(shelf.folder, f"{UPLOAD_PREFIX}{digest[:24]}")
+        if folder not in shelf.unpacked:
+            part = f"{folder}.{new_id()}"
+            try:
+                model = os.path.relpath(unpack(path, part, self.unpacked_limit, name), part)
+            except BaseException as error:
+                shutil.rmtree(part, ignore_errors=True)
+                if isinstance(error, EigendanceError):
+                    error.args = (shelf.public(str(error), {path: name}),)
+                raise
+            with shelf.lock:  # the same zip unpacked meanwhile: keep the first
+                if folder in shelf.unpacked:
+                    shutil.rmtree(part, ignore_errors=True)
+                else:
+                    os.rename(part, folder)
+                    shelf.unpacked[folder] = model
+        model = os.path.join(folder, shelf.unpacked[folder])
+        try:
+            return self._add_file(model, os.path.basename(model), kind_of(model), digest,
+                                  origin, k)
+        except BaseException as error:
+            shelf.discard(model)
+            if isinstance(error, EigendanceError):
+                error.args = (shelf.public(str(error), {model: os.path.basename(model)}),)
+            raise
 
     def _add_file(self, path: str, name: str, kind: str, digest: str, origin: str,
                   k: int | None = None):
@@ -153,7 +203,7 @@ class Intake:
         construction = choose_construction(mesh.n, k) if self.construction == "auto" \
             else self.construction
         item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
-                        construction=construction)
+                        construction=construction, appearance=mesh.appearance)
         item.job = Job(new_id(), "basis", k, name)
         self.shelf.admit(item, self.shelf.meshes, f"{name}: a basis of {k} harmonics of "
                                       f"{len(mesh.vertices)} vertices")
@@ -220,9 +270,13 @@ class Intake:
 
         Returns
         -------
-        RigItem; InputError when it is not a rig that can be analysed, or cannot fit.
+        RigItem; InputError when it is not a rig that can be analysed, or cannot fit (its
+        planned memory is charged before the analysis: `rigs.planned_bytes`).
         """
+        skeleton = load_rig(path, name)
         item = RigItem(new_id(), name, origin, path, content=content)
-        rigs.analyse(item, Rig(load_rig(path, name)))
-        self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
+        with self.shelf.reserving(item.id, rigs.planned_bytes(skeleton),
+                                  f"{name}: the analysis of {skeleton.n_bodies} bodies"):
+            rigs.analyse(item, Rig(skeleton))
+            self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
         return item

@@ -111,6 +111,8 @@ class MeshItem:
     content : its content key.
     removed : taken out of the library (its solve stops).
     construction : "exact" or "reduced" (docs/design.md#reduced-basis).
+    appearance : its look (`assets.Appearance`: materials, drawn vertices), None for clay.
+    look_bundle : its appearance bundle, made when first asked for (`server.binary`).
     """
 
     id: str
@@ -126,31 +128,38 @@ class MeshItem:
     content: tuple | None = None  # the key of its content (server.contents)
     removed: bool = False
     construction: str = "exact"
+    appearance: object = None
+    look_bundle: bytes | None = None
 
     def as_json(self) -> dict:
         """What the page is told.
 
         Returns
         -------
-        {"id", "name", "k", "vertices", "ready", "construction", "job", "rig"}.
+        {"id", "name", "k", "vertices", "ready", "construction", "job", "rig", "look"
+        (`look_summary`)}.
         """
         return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
                 "ready": self.basis is not None, "construction": self.construction,
-                "job": self.job.as_json() if self.job else None, "rig": self.rig}
+                "job": self.job.as_json() if self.job else None, "rig": self.rig,
+                "look": look_summary(self.appearance)}
 
     def held(self) -> int:
-        """Bytes kept: the basis and bundles once solved, the planned ones until then.
+        """Bytes kept: the basis and bundles once solved, the planned ones until then, and the
+        look.
 
         Returns
         -------
         int, bytes.
         """
+        look = footprint(self.appearance, self.look_bundle)
         if self.basis is None and self.construction == "reduced":
             return self.vertices * (REDUCED_BYTES_PER_VERTEX + BYTES_PER_VERTEX) + \
-                sample_count(self.vertices, self.k) * self.k * BYTES_PER_ENTRY
+                sample_count(self.vertices, self.k) * self.k * BYTES_PER_ENTRY + look
         if self.basis is None:
-            return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX)
-        return footprint(self.basis, self.bundle, self.half_bundle)
+            return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX) + look
+        return footprint(self.basis, self.bundle, self.half_bundle, self.appearance,
+                         self.look_bundle)
 
     @property
     def busy(self) -> bool:
@@ -254,6 +263,7 @@ class RigItem:
     error : why a file could not be analysed ("" when it was).
     content : its content key.
     lock : held while it is analysed or edited.
+    look_bundle : the appearance bundle of its skin, made when first asked for.
     """
 
     id: str
@@ -268,6 +278,12 @@ class RigItem:
     error: str = ""
     content: tuple | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
+    look_bundle: bytes | None = None
+
+    @property
+    def appearance(self):
+        """The skin's look (`assets.Appearance`), or None (clay, or not analysed yet)."""
+        return getattr(self.original, "appearance", None)
 
     @property
     def path(self) -> str:
@@ -280,14 +296,15 @@ class RigItem:
         Returns
         -------
         {"id", "name", "origin", "ready", "revision", "edited", "error"}, and once analysed
-        "bodies", "joints", "vertices", "modes".
+        "bodies", "joints", "vertices", "modes", "look" (`look_summary`).
         """
         info = {"id": self.id, "name": self.name, "origin": self.origin,
                 "ready": self.rig is not None, "revision": self.revision,
                 "edited": self.edited, "error": self.error or None}
         if self.rig is not None:
             info.update(bodies=self.rig.skeleton.n_bodies, joints=len(self.rig.skeleton.joints),
-                        vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes)
+                        vertices=len(self.rig.skeleton.vertices), modes=self.rig.model.n_modes,
+                        look=look_summary(self.appearance))
         return info
 
     def held(self) -> int:
@@ -297,9 +314,26 @@ class RigItem:
         -------
         int, bytes.
         """
-        return footprint(self.original, self.rig, self.bundle)
+        return footprint(self.original, self.rig, self.bundle, self.look_bundle)
 
     @property
     def busy(self) -> bool:
         """Being analysed or edited."""
         return self.lock.locked()
+
+
+def look_summary(appearance) -> dict | None:
+    """What the page knows of a model's look before asking for it.
+
+    Parameters
+    ----------
+    appearance : an `assets.Appearance`, or None.
+
+    Returns
+    -------
+    None (clay), or {"materials", "images", "drawn"} counts.
+    """
+    if appearance is None:
+        return None
+    return {"materials": len(appearance.materials), "images": len(appearance.images),
+            "drawn": int(appearance.n)}

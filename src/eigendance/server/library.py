@@ -19,11 +19,12 @@ from __future__ import annotations
 import os
 import threading
 
+from eigendance.errors import InputError
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs
-from eigendance.server.binary import basis_bundle
-from eigendance.server.intake import Intake
+from eigendance.server.binary import appearance_bundle, basis_bundle
+from eigendance.server.intake import UNPACKED_FACTOR, Intake
 from eigendance.server.items import Job, MeshItem, RigItem, new_id
 from eigendance.server.memory import DEFAULT_BUDGET, Budget
 from eigendance.server.shelf import Shelf
@@ -55,7 +56,8 @@ class Library:
         self.shelf = Shelf(folder, Budget(memory_budget))
         self.solver = BasisSolver(self.shelf.recharge, self.shelf.public)
         self.shelf.removed = self.solver.forget
-        self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction)
+        self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
+                             UNPACKED_FACTOR * max_upload_bytes)
         self.meshes, self.songs = self.shelf.meshes, self.shelf.songs
         self.mappings, self.rigs, self.budget = self.shelf.mappings, self.shelf.rigs, \
             self.shelf.budget
@@ -136,6 +138,27 @@ class Library:
             self.shelf.recharge(item)
         return item.half_bundle
 
+    def look_bundle(self, item: MeshItem | RigItem) -> bytes:
+        """The appearance bundle of a mesh or (analysed) rig item, made once and charged.
+
+        Parameters
+        ----------
+        item : a mesh item, or a rig item analysed (`ready_rig`).
+
+        Returns
+        -------
+        bytes (`binary.appearance_bundle`); InputError 404 for a model without materials or
+        colours (drawn in clay).
+        """
+        appearance = item.appearance
+        if appearance is None:
+            raise InputError(f"{item.name} has no materials or colours of its own (it is drawn "
+                             "in clay)", status=404)
+        if item.look_bundle is None:
+            item.look_bundle = appearance_bundle(appearance, item.name)
+            self.shelf.recharge(item)
+        return item.look_bundle
+
     # --- rigs ----------------------------------------------------------------------------------
     def ready_rig(self, item: RigItem) -> RigItem:
         """The rig item analysed (`rigs.ready`), charged what it holds.
@@ -165,7 +188,10 @@ class Library:
         bytes: the new rig bundle; a failed edit leaves the rig as it was.
         """
         self.ready_rig(item)
-        bundle = rigs.edit(item, change)
+        with self.shelf.reserving(f"{item.id}/edit", rigs.planned_bytes(item.rig.skeleton),
+                                  f"{item.name}: an edit"):
+            bundle = rigs.edit(item, change)
+        self.shelf.budget.release(f"{item.id}/edit")
         self.shelf.recharge(item)
         return bundle
 

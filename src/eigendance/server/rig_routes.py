@@ -58,6 +58,21 @@ async def get_rig_bundle(request: Request):
     return bundle_response((await ready_rig(request)).bundle)
 
 
+async def get_rig_look(request: Request):
+    """GET /api/rigs/{id}/appearance.bin: the appearance bundle of the rig's skin.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    Response, the bundle (`binary.appearance_bundle`); 404 for a skin without materials.
+    """
+    item = await ready_rig(request)
+    return bundle_response(await in_worker(library_of(request).look_bundle, item))
+
+
 async def get_rig_skeleton(request: Request):
     """GET /api/rigs/{id}/skeleton.json: the current skeleton (the edits included).
 

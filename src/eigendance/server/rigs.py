@@ -15,8 +15,25 @@ from eigendance.errors import EigendanceError, InputError
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.modal.skeleton import Skeleton
+from eigendance.modal.skinning import skin_bytes
 from eigendance.server.binary import rig_bundle
 from eigendance.server.items import RigItem
+
+
+def planned_bytes(skeleton: Skeleton) -> int:
+    """The memory analysing a skeleton may take at its peak: its modal skin (`skin_bytes`)
+    with at most 6 modes per body; charged to the library's budget before the analysis.
+
+    Parameters
+    ----------
+    skeleton : a skeleton with its skin.
+
+    Returns
+    -------
+    int, bytes.
+    """
+    vertices = 0 if skeleton.vertices is None else len(skeleton.vertices)
+    return skin_bytes(vertices, 6 * skeleton.n_bodies)
 
 
 def analyse(item: RigItem, rig: Rig, original: Skeleton | None = None) -> None:
@@ -85,5 +102,5 @@ def forget(item: RigItem) -> None:
     ----------
     item : a built-in rig item.
     """
-    item.original = item.rig = item.bundle = None
+    item.original = item.rig = item.bundle = item.look_bundle = None
     item.revision, item.error, item.edited = 0, "", False

@@ -25,9 +25,18 @@ from eigendance.files import kind_of, suffix_of
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
 from eigendance.music.mapping import Mapping
+from eigendance.server.archive import is_archive
 from eigendance.server.items import RigItem
 from eigendance.server.library import Library
-from eigendance.server.lookup import item_of, job_of, library_of, mesh_of, ready_basis, song_of
+from eigendance.server.lookup import (
+    bundle_response,
+    item_of,
+    job_of,
+    library_of,
+    mesh_of,
+    ready_basis,
+    song_of,
+)
 from eigendance.server.requests import (
     answer,
     check_mapping_size,
@@ -67,6 +76,9 @@ def sniff(name: str, head: bytes) -> str | None:
         ".ogg": head[:4] == b"OggS", ".oga": head[:4] == b"OggS", ".opus": head[:4] == b"OggS",
         ".flac": head[:4] == b"fLaC", ".m4a": head[4:8] == b"ftyp",
         ".json": text_like and head.lstrip()[:1] == b"{",
+        ".zip": head[:2] == b"PK",  # a model in several files (server.archive)
+        # read through Blender when it is installed; else the reader says how to convert them
+        ".fbx": True, ".blend": True, ".dae": True, ".3ds": True,
     }
     if suffix not in checks:
         return f"unknown file type '{suffix}'"
@@ -139,6 +151,22 @@ async def get_basis(request: Request):
         bundle = item.bundle
     return Response(bundle, media_type="application/octet-stream",
                     headers={"Cache-Control": "no-cache"})
+
+
+async def get_mesh_look(request: Request):
+    """GET /api/meshes/{id}/appearance.bin: the mesh's appearance bundle
+    (docs/web.md#appearance-bundle), ready before its basis.
+
+    Parameters
+    ----------
+    request : path parameter id.
+
+    Returns
+    -------
+    Response, the bundle (`binary.appearance_bundle`); 404 for a mesh without materials.
+    """
+    item = mesh_of(request, request.path_params["id"])
+    return bundle_response(await in_worker(library_of(request).look_bundle, item))
 
 
 async def get_spectrogram(request: Request):
@@ -235,7 +263,7 @@ async def upload(request: Request):
     name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
     if not name or name.startswith("."):
         raise HTTPException(400, "upload needs ?name=FILE with a file name and suffix")
-    kind = kind_of(name)
+    kind = "mesh" if is_archive(name) else kind_of(name)
     stored, digest, head = await receive_file(request, library, name)
     try:
         if (why := sniff(name, head)) is not None:

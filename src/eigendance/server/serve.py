@@ -10,10 +10,13 @@ within a second, open connections (server-sent events) included.
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
+import ctypes
 import errno
 import fcntl
 import os
+import resource
 import shutil
 import signal
 import socket
@@ -31,6 +34,7 @@ from eigendance.errors import InputError, one_line
 from eigendance.files import FRESH_SECONDS
 from eigendance.harmonic.cache import cache_folder
 from eigendance.music.demo_music import write_demo_wav
+from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 
@@ -39,6 +43,16 @@ DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
 LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
+# glibc's mallopt parameters (malloc.h) and our values (`return_freed_memory`).
+M_MMAP_THRESHOLD, M_ARENA_MAX = -3, -8
+MMAP_THRESHOLD, MALLOC_ARENAS = 1 << 20, 2
+KEEP_ALIVE_SECONDS = 5.0  # an idle connection is closed this long after its last answer
+# File descriptors the server asks for (its soft limit raised up to the hard one): the open
+# connections (`server.connections`) and the files, pipes and processes of its work.
+OPEN_FILES = 4 * MAX_CONNECTIONS + 1024
+# (With uvicorn's backlog at MAX_CONNECTIONS, asyncio accepts at most that many connections
+# before `Connection` sees them: 2 × MAX_CONNECTIONS descriptors at most, under Linux's
+# customary 1024.)
 
 __all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "demo_paths", "library_session", "listen",
            "run", "terminal_progress"]
@@ -69,18 +83,18 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
     on_exit : called at the first Ctrl-C or SIGTERM (e.g. `Library.stop`).
     """
     host, bound = listening.getsockname()[:2]
-    config = uvicorn.Config(app, host=host, port=bound, log_level="warning", access_log=False,
-                            proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS)
-    server = _Server(config, on_exit)
-    if announce:
-        original = server.startup
+    raise_open_files(OPEN_FILES)
+    return_freed_memory()
+    server = _Server(server_config(app, host, bound), on_exit)
+    original = server.startup
 
-        async def startup(sockets=None):
-            await original(sockets=sockets)
-            if server.started:
-                print(announce(bound) if callable(announce) else announce, flush=True)
+    async def startup(sockets=None):
+        asyncio.get_running_loop().set_exception_handler(_one_line_handler())
+        await original(sockets=sockets)
+        if server.started and announce:
+            print(announce(bound) if callable(announce) else announce, flush=True)
 
-        server.startup = startup
+    server.startup = startup
     hung_up = []
     with listening, _handling({signal.SIGHUP: lambda number, frame: hung_up.append(number) or
                                server.handle_exit(number, frame)}):
@@ -89,6 +103,86 @@ def run(app, listening: socket.socket, announce=None, on_exit=None) -> None:
         raise SystemExit(128 + signal.SIGHUP)
     if not server.started:
         raise InputError(f"cannot serve on {host}:{bound}: the app did not start")
+
+
+def server_config(app, host: str, port: int) -> uvicorn.Config:
+    """uvicorn's settings for the app: our connections (`server.connections`: header and body
+    timeouts, a bound on open connections, refusals in JSON), the keep-alive time, the
+    backlog, no access log.
+
+    Parameters
+    ----------
+    app : the ASGI app.
+    host : the address it listens on.
+    port : the port.
+
+    Returns
+    -------
+    uvicorn.Config.
+    """
+    return uvicorn.Config(app, host=host, port=port, log_level="warning", access_log=False,
+                          proxy_headers=False, timeout_graceful_shutdown=GRACE_SECONDS,
+                          http=Connection, timeout_keep_alive=KEEP_ALIVE_SECONDS,
+                          backlog=MAX_CONNECTIONS)  # also the most accepted at one go
+
+
+def raise_open_files(wanted: int) -> int:
+    """Raise the soft limit of open files towards `wanted` (never past the hard limit).
+
+    Parameters
+    ----------
+    wanted : file descriptors.
+
+    Returns
+    -------
+    int, the soft limit now.
+    """
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    target = wanted if hard == resource.RLIM_INFINITY else min(wanted, hard)
+    if soft != resource.RLIM_INFINITY and soft < target:
+        with contextlib.suppress(ValueError, OSError):
+            resource.setrlimit(resource.RLIMIT_NOFILE, (target, hard))
+            soft = target
+    return soft
+
+
+def return_freed_memory() -> bool:
+    """Make glibc give freed arrays back to the system (docs/design.md#server).
+
+    By default glibc raises its mmap threshold up to 32 MB after a large block is freed, so
+    arrays up to that size then come from heaps that stay as large as their peak, one heap per
+    thread (up to 8 per core). The server's worker threads each build and free hundreds of MB (a
+    rig analysis, a basis bundle): its RSS grew to 2.5 times the library's budget. A fixed
+    threshold of MMAP_THRESHOLD and MALLOC_ARENAS heaps keep it near what the library holds.
+
+    Returns
+    -------
+    bool: whether glibc took the settings (False on other C libraries).
+    """
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+        return bool(libc.mallopt(M_MMAP_THRESHOLD, MMAP_THRESHOLD)
+                    and libc.mallopt(M_ARENA_MAX, MALLOC_ARENAS))
+    except (OSError, AttributeError):
+        return False
+
+
+def _one_line_handler():
+    """An event-loop exception handler writing one line on stderr, at most once a second per
+    message (asyncio's default writes a traceback each time: when the process runs out of file
+    descriptors, one per attempt to accept a connection)."""
+    said: dict[str, float] = {}
+
+    def handler(loop, context):
+        message = str(context.get("message", "event loop error"))
+        if time.monotonic() - said.get(message, -1e9) < 1.0:
+            return
+        said[message] = time.monotonic()
+        error = context.get("exception")
+        detail = f" ({type(error).__name__}: {one_line(error, 200)})" if error else ""
+        print(f"eigendance: {one_line(message, 200)}{detail}", file=sys.stderr, flush=True)
+
+    return handler
 
 
 def listen(host: str, port: int) -> socket.socket:

@@ -11,8 +11,10 @@ Messages name stored files by the names they were uploaded under (`public`).
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
+import shutil
 import threading
 
 from eigendance.errors import InputError
@@ -48,7 +50,40 @@ class Shelf:
         self.budget = budget
         self.lock = threading.RLock()
         self.contents = Contents(self.lock)
+        self.unpacked: dict[str, str] = {}  # a zip's folder → its model file, relative
         self.removed = lambda item: None
+        self.reserved: set[str] = set()  # keys charged for work in progress (`reserving`)
+
+    @contextlib.contextmanager
+    def reserving(self, key: str, size: int, what: str):
+        """Charge `size` bytes under `key` before the work that allocates them (dropping the
+        least recently used items to make room); release them if the work fails. Work that
+        succeeds charges what it keeps under the same key (`admit`, `recharge`).
+
+        Parameters
+        ----------
+        key : the budget's key (an item's id, or one of its own for an edit).
+        size : the planned bytes.
+        what : the work in words, for the message when it cannot fit (InputError 413 or 409).
+
+        Yields
+        ------
+        None, while the work runs (its key is busy: never dropped meanwhile).
+        """
+        with self.lock:
+            dropped = self.budget.charge(key, size, busy=self._busy)
+            if dropped is None:
+                raise refusal(size, self.budget.limit, what)
+            self.reserved.add(key)
+            for other in dropped:
+                self._drop(other)
+        try:
+            yield
+        except BaseException:
+            self.budget.release(key)
+            raise
+        finally:
+            self.reserved.discard(key)
 
     def admit(self, item, store: dict, what: str) -> None:
         """Charge `item` its bytes (dropping the least recently used items to make room) and
@@ -87,6 +122,8 @@ class Shelf:
     def _busy(self, item_id: str) -> bool:
         """In use, not to be dropped: a mesh whose basis is queued or being solved, a rig being
         analysed or edited."""
+        if item_id in self.reserved:
+            return True
         item = self.find(item_id)
         return item is not None and item.busy
 
@@ -156,7 +193,8 @@ class Shelf:
         self.discard(getattr(item, "path", ""))
 
     def discard(self, *paths: str) -> None:
-        """Delete files of the library folder that no item uses.
+        """Delete files of the library folder that no item uses (a zip's whole folder once no
+        item uses its model).
 
         Parameters
         ----------
@@ -164,11 +202,22 @@ class Shelf:
         """
         with self.lock:
             for path in paths:
-                if path and os.path.dirname(path) == self.folder and not self._in_use(path):
+                folder = self._unpacked_folder(path)
+                if folder and not self._in_use(os.path.join(folder, self.unpacked[folder])):
+                    shutil.rmtree(folder, ignore_errors=True)
+                    del self.unpacked[folder]
+                elif path and os.path.dirname(path) == self.folder and not self._in_use(path):
                     try:
                         os.unlink(path)
                     except OSError:
                         pass
+
+    def _unpacked_folder(self, path: str) -> str | None:
+        """The zip folder of the library holding `path`, or None."""
+        for folder in self.unpacked:
+            if path.startswith(folder + os.sep):
+                return folder
+        return None
 
     def _store(self, kind: str) -> dict:
         return {"mesh": self.meshes, "song": self.songs, "mapping": self.mappings,
@@ -227,7 +276,7 @@ class Shelf:
         names = dict(names or {})
         for store in (self.meshes, self.songs, self.rigs):
             for item in list(store.values()):
-                if item.path and os.path.dirname(item.path) == self.folder:
+                if item.path and item.path.startswith(self.folder + os.sep):
                     names[item.path] = item.name
         for path, name in names.items():
             text = text.replace(path, name).replace(os.path.basename(path), name)
