@@ -14,6 +14,8 @@ import urllib.request
 
 import numpy as np
 import pytest
+from test_look_page import MODEL as LOOK_MODEL
+from test_look_page import page_picture
 from web_helpers import CAT, E2E_K, open_app, running_server
 
 from eigendance.harmonic.basis import HarmonicBasis
@@ -95,3 +97,30 @@ def test_the_player_and_breeding_work_on_a_reduced_basis(reduced_page, web_files
     expected = positions_at(basis, spectrogram, child, 2.0)
     assert np.abs(basis.to_original(shown.reshape(-1, 3)) - expected).max() / diagonal < 1e-4
     reduced_page.evaluate("window.eigendance.setView('gallery')")
+
+
+@pytest.fixture(scope="module")
+def reduced_look_server(web_files, tmp_path_factory):
+    """A model with materials (MorphStressTest) served on a reduced basis."""
+    folder = tmp_path_factory.mktemp("reduced-look")
+    Mapping(np.linspace(0, 1, 64), np.zeros(24), name="still.json").save(folder / "still.json")
+    with running_server([LOOK_MODEL, web_files["song"], str(folder / "still.json"), "-k", "24",
+                         "--reduced"], folder, web_files["cache"]) as server:
+        yield server
+
+
+def test_a_model_with_materials_dances_alike_on_both_paths_of_a_reduced_basis(
+        browser, reduced_look_server):
+    """The drawn vertices gather their welded vertex's samples (the REDUCED define of the shared
+    surface shader) on the GPU, or take the CPU path's positions: the same dancing picture."""
+    url = reduced_look_server["url"]
+    with urllib.request.urlopen(url + "api/library") as answer:
+        library = json.load(answer)
+    assert library["meshes"][0]["construction"] == "reduced"
+    mapping_id = library["mappings"][0]["id"]
+    gpu = page_picture(browser, url, mapping_id, True, "gpu", 1.5, tile=1)
+    cpu = page_picture(browser, url, mapping_id, True, "cpu", 1.5, tile=1)
+    still = page_picture(browser, url, mapping_id, True, "cpu", 1.5)
+    assert np.mean(np.abs(cpu - still).max(axis=2) * 255 > 24) > 0.01  # it dances
+    difference = np.abs(gpu - cpu).max(axis=2) * 255
+    assert np.mean(difference > 2) < 0.002
