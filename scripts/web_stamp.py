@@ -31,7 +31,7 @@ ROOT = Path(__file__).resolve().parent.parent
 SOURCE_FOLDERS = ("web/src",)
 SHADERS = ("src/eigendance/shaders", ".glsl")  # imported by web/src/shaders.ts (`?raw`)
 SOURCE_FILES = ("web/index.html", "web/package-lock.json", "web/package.json",
-                "web/vite.config.ts", "web/tsconfig.json")
+                "web/vite.config.ts", "web/tsconfig.json", "src/eigendance/music/analysis.json")
 BUILD_FOLDER = "src/eigendance/static"
 STAMP = f"{BUILD_FOLDER}/build-stamp.json"
 FORMAT = "eigendance.web-build-stamp"

@@ -13,6 +13,7 @@ import re
 import socket
 
 import numpy as np
+import pygltflib
 import pytest
 import soundfile
 import trimesh
@@ -137,8 +138,21 @@ def made(tmp_path_factory):
     with open(fixture_path("rigged", "RiggedSimple.glb"), "rb") as file:
         data = file.read()
     put("cut.glb", data[: len(data) // 2])
+    put("zero-ibm.glb", zero_inverse_bind_matrices(fixture_path("rigged", "RiggedSimple.glb")))
     put("version7.glb", data[:4] + (7).to_bytes(4, "little") + data[8:])  # pygltflib warns
     return paths
+
+
+def zero_inverse_bind_matrices(path) -> bytes:
+    """The bytes of a .glb whose first skin's inverse bind matrices are all zeros."""
+    document = pygltflib.GLTF2().load(path)
+    accessor = document.accessors[document.skins[0].inverseBindMatrices]
+    view = document.bufferViews[accessor.bufferView]
+    blob = bytearray(document.binary_blob())
+    start = view.byteOffset + (accessor.byteOffset or 0)
+    blob[start:start + 64 * accessor.count] = bytes(64 * accessor.count)
+    document.set_binary_blob(bytes(blob))
+    return b"".join(document.save_to_bytes())
 
 
 def run(argv, capfd) -> tuple[int, str, str]:
@@ -228,6 +242,25 @@ REFUSED = [
      "a gallery has"),
     ("k beyond the mesh", "basis " + KNIGHT + " -k 20000 -o {out}/b.npz",
      "need a mesh of more than 20000 vertices"),
+    # issue 21: no non-finite value reaches a file, no crash on what a reader accepts
+    ("amplification 1e200 in a glb", "export {basis.npz} {ok.wav} --mapping {amplified.json} "
+     "-o {out}/a.glb", "amplified.json: the motion it asks for leaves the range"),
+    ("amplification 1e200 in a point cache", "export {basis.npz} {ok.wav} --mapping "
+     "{amplified.json} -o {out}/a.pc2", "amplified.json: the motion it asks for leaves"),
+    ("amplification 1e200 in a rig export", "export chain {ok.wav} --mapping {amplified.json} "
+     "-o {out}/a.glb", "amplified.json: the motion it asks for turns or moves a body"),
+    ("render at 1e-9 fps", "render {basis.npz} {ok.wav} --fps 1e-9 -o {out}/v.mp4",
+     "frames per second must be from 0.01 to 240"),
+    ("all-zero inverse bind matrices", "modes {zero-ibm.glb} -o {out}/m.npz",
+     "zero-ibm.glb: skin 0: inverseBindMatrices[0] is not an invertible matrix"),
+    ("all-zero inverse bind matrices, export", "export {zero-ibm.glb} {ok.wav} --rig "
+     "-o {out}/a.glb", "is not an invertible matrix"),
+    # all or nothing: the second output cannot be written (a file stands where its folder
+    # would be), so the first one, written already, is removed too
+    ("spectrum and an unwritable picture", "spectrum {ok.wav} --png {ok.wav}/s.png "
+     "-o {out}/s.npz", "cannot write"),
+    ("rig animation and an unwritable mapping", "animate-rig chain --duration 1 "
+     "--save-mapping {ok.wav}/m.json -o {out}/a.npz", "cannot write"),
 ]
 
 
@@ -350,3 +383,67 @@ def test_an_mp3_gives_the_spectrogram_of_its_wav_and_nothing_on_stderr(made, tmp
     assert status == 0 and err == ""
     values = Spectrogram.load(tmp_path / "s.npz").values
     assert values.shape == (201, 64) and np.all(np.isfinite(values))
+
+
+# --- issue 21: inputs are sacred, names from files, the memory advice ----------------------
+
+def test_force_never_overwrites_an_input(tmp_path, capfd):
+    """`export dance.obj … -o dance.pc2 --force` would write the rest mesh over dance.obj."""
+    model = tmp_path / "dance.obj"
+    model.write_bytes(obj(*TETRA))
+    before = model.read_bytes()
+    song = tmp_path / "song.wav"
+    soundfile.write(song, tone(), SR)
+    for argv in (["export", model, song, "-k", 2, "-o", tmp_path / "dance.pc2", "--force"],
+                 ["spectrum", song, "-o", song, "--force"],
+                 ["basis", model, "-k", 2, "-o", model, "--force"]):
+        status, _, err = run(argv, capfd)
+        assert_refused(status, err, tmp_path / "none", "an input is never overwritten")
+    assert model.read_bytes() == before
+    assert sorted(os.listdir(tmp_path)) == ["dance.obj", "song.wav"]
+
+
+CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+
+
+def test_names_from_files_are_printed_without_control_characters(tmp_path, capfd):
+    evil = "up\x1b]0;PWNED\x07\x1b[2J\x9b"
+    path = tmp_path / "evil\x1b[31m.json"
+    path.write_text(skeleton(body={"name": evil}, joint={"bodies": [evil, "lower"]}))
+    status, out, err = run(["modes", path, "-o", tmp_path / "m.npz"], capfd)
+    assert status == 0, err
+    assert "up]0;PWNED[2J" in out  # the name is there, its control characters are not
+    assert not CONTROL.search(out + err), repr(out + err)
+    status, out, err = run(["modes", path, "--joints", tmp_path / "none.json",
+                            "-o", tmp_path / "n.npz"], capfd)
+    assert status == 1 and not CONTROL.search(out + err.rstrip("\n")), repr(err)
+
+
+@pytest.mark.parametrize("argv, advice", [
+    (["modes", "chain"], "fewer bodies and joints"),
+    (["animate-rig", "chain"], "fewer bodies and joints"),
+    (["basis", KNIGHT, "-k", "5"], "smaller -k or mesh")])
+def test_out_of_memory_advice_fits_the_input(tmp_path, capfd, monkeypatch, argv, advice):
+    def exhausted(*_, **__):
+        raise MemoryError
+
+    monkeypatch.setattr("eigendance.cli.rigs.rig_from", exhausted)
+    monkeypatch.setattr("eigendance.cli.harmonics.load_mesh", exhausted)
+    status, _, err = run([*argv, "-o", tmp_path / "o.npz"], capfd)
+    assert_refused(status, err, tmp_path, advice)
+    if argv[0] != "basis":
+        assert "-k" not in err
+
+
+def test_demo_with_a_cache_folder_that_is_a_file_makes_its_music_for_the_run(tmp_path, capfd,
+                                                                             monkeypatch):
+    from eigendance.server.serve import demo_paths
+
+    cache = tmp_path / "cache"
+    cache.write_text("not a folder")
+    monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(cache))
+    mesh, song = demo_paths()
+    _, err = capfd.readouterr()
+    assert os.path.isfile(mesh) and soundfile.info(song).duration > 10
+    assert err.startswith("eigendance: warning: ") and err.count("\n") == 1, err
+    assert "cannot write (Not a directory)" in err and cache.read_text() == "not a folder"

@@ -16,6 +16,11 @@ export default defineConfig({
       },
     },
   },
+  // The live input's AudioWorklet (web/src/live-worklet.ts) is built as its own module.
+  worker: {
+    format: "es",
+    rollupOptions: { output: { entryFileNames: "assets/[name].js" } },
+  },
   test: {
     include: ["test/**/*.test.ts"],
   },

@@ -99,3 +99,59 @@ def test_every_fixture_rig_loads_with_finite_modes_or_says_why():
             assert "\n" not in str(error)
             continue
         check_rig(skeleton)
+
+
+def chain_gltf(joints: int) -> dict:
+    """A glTF of a chain of `joints` joints along y, listed children first (node 0 is the
+    deepest), each carrying two vertices of a strip of triangles."""
+    import base64
+
+    node = [joints - 1 - j for j in range(joints)]  # joint j (depth j) is node node[j]
+    nodes = [None] * joints
+    for j in range(joints):
+        nodes[node[j]] = {"name": f"j{j}", "translation": [0, 0.1 if j else 0, 0],
+                          **({"children": [node[j + 1]]} if j + 1 < joints else {})}
+    y = 0.1 * np.repeat(np.arange(joints), 2)
+    vertices = np.stack([np.tile([-0.05, 0.05], joints), y, 0 * y], axis=1).astype("<f4")
+    a = 2 * np.arange(joints - 1)[:, None]
+    faces = np.concatenate([a + [0, 1, 2], a + [1, 3, 2]]).astype("<u4")
+    influences = np.zeros((2 * joints, 4), "<u2")
+    influences[:, 0] = np.repeat(np.arange(joints), 2)
+    weights = np.zeros((2 * joints, 4), "<f4")
+    weights[:, 0] = 1
+    inverse = np.tile(np.eye(4, dtype="<f4"), (joints, 1, 1))
+    inverse[:, 3, 1] = -0.1 * np.arange(joints)  # column-major: the translation's y
+    blobs = [vertices.tobytes(), faces.tobytes(), influences.tobytes(), weights.tobytes(),
+             inverse.tobytes()]
+    offsets = np.cumsum([0] + [len(blob) for blob in blobs])
+    kinds = [("VEC3", 5126), ("SCALAR", 5125), ("VEC4", 5123), ("VEC4", 5126), ("MAT4", 5126)]
+    counts = [len(vertices), faces.size, len(influences), len(weights), joints]
+    accessors = [{"bufferView": i, "componentType": kind, "count": count, "type": shape}
+                 for i, ((shape, kind), count) in enumerate(zip(kinds, counts, strict=True))]
+    accessors[0].update(min=vertices.min(0).tolist(), max=vertices.max(0).tolist())
+    nodes.append({"name": "skin", "mesh": 0, "skin": 0})
+    data = b"".join(blobs)
+    return {"asset": {"version": "2.0"}, "scene": 0,
+            "scenes": [{"nodes": [node[0], joints]}], "nodes": nodes,
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "JOINTS_0": 2,
+                                                       "WEIGHTS_0": 3}, "indices": 1}]}],
+            "skins": [{"joints": node, "inverseBindMatrices": 4}], "accessors": accessors,
+            "bufferViews": [{"buffer": 0, "byteOffset": int(offsets[i]),
+                             "byteLength": len(blob)} for i, blob in enumerate(blobs)],
+            "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;"
+                         "base64," + base64.b64encode(data).decode()}]}
+
+
+def test_a_chain_deeper_than_the_recursion_limit_listed_children_first(tmp_path):
+    """1,020 joints listed children first (issue 21: once a RecursionError): the tree is walked
+    whole — the message counts every body — and the rig size limit refuses it in one line."""
+    import sys
+
+    from eigendance.errors import InputError
+    from eigendance.modal.gltf_skin import skeleton_from_gltf
+
+    path = tmp_path / "chain.gltf"
+    path.write_text(json.dumps(chain_gltf(1020)))  # under the 1,024 joints a skin may have
+    assert sys.getrecursionlimit() < 1020
+    with pytest.raises(InputError, match="1020 bodies and 1019 joints; .* at most 256 bodies"):
+        skeleton_from_gltf(path)

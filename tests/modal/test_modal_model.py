@@ -217,3 +217,31 @@ def test_modal_file_round_trip(tmp_path):
     assert (loaded.rigid_modes, loaded.nullspace_dim, loaded.constraint_rank) == (6, 11, 37)
     with pytest.raises(EigendanceError, match="no such file"):
         ModalModel.load(tmp_path / "missing.npz")
+
+
+def test_null_space_of_many_rows_needs_no_square_of_them():
+    """20,000 joints between two bodies: 100,000 constraint rows of 12 columns. The null space
+    is that of AᵀA (eigenvectors of eigenvalue 0, computed independently here), and no LAPACK
+    call sees a 100,000 × 100,000 matrix (it would overflow its 32-bit indices)."""
+    from eigendance.modal.model import null_space
+
+    rng = np.random.default_rng(0)
+    rows = rng.standard_normal((5, 12))
+    matrix = np.tile(rows, (20000, 1)) * rng.uniform(0.5, 2, (100000, 1))
+    basis = null_space(matrix, 12)
+    values, vectors = np.linalg.eigh(matrix.T @ matrix)
+    expected = vectors[:, values < 1e-9 * values.max()]
+    assert basis.shape == (12, 7) == expected.shape
+    assert np.allclose(basis @ basis.T, expected @ expected.T, atol=1e-10)  # same subspace
+
+
+def test_stiffness_beyond_the_range_of_numbers_is_one_clear_error():
+    from eigendance.errors import InputError
+    from eigendance.modal.model import ModalModel
+    from eigendance.modal.sample_rigs import load_rig
+
+    skeleton = load_rig("chain")
+    with pytest.raises(InputError, match="beyond the range of numbers"):
+        ModalModel.from_skeleton(skeleton, stiffness=1e300)
+    finite = ModalModel.from_skeleton(skeleton, stiffness=1e60)  # about 1e30 Hz
+    assert np.isfinite(finite.frequencies).all()

@@ -60,6 +60,18 @@ def test_committed_rhythm_fixtures_match_the_python_reference():
                                            err_msg=key)
 
 
+def test_committed_live_fixture_matches_the_python_reference():
+    """live.json: the offline spectrogram and onset envelope that Vitest holds the live
+    analysis (web/src/live-analysis.ts) to, at 44.1, 48 and 96 kHz."""
+    fresh = json.loads(build()["live.json"])
+    with open(os.path.join(FOLDER, "live.json")) as file:
+        committed = json.load(file)
+    for old, new in zip(committed["cases"], fresh["cases"], strict=True):
+        assert old["sample_rate"] == new["sample_rate"] and old["frames"] == new["frames"]
+        for key in ("values", "onset", "edges"):
+            np.testing.assert_allclose(old[key], new[key], rtol=1e-5, atol=2e-6, err_msg=key)
+
+
 # Axes along which a regenerated bundle may differ by sign: an eigenvector (a harmonic, a
 # vibration mode) is defined up to its sign, and the solver's choice follows round-off.
 SIGNED = {"harmonics": -1, "coefficients": 0, "tau": None, "rho": None, "body_twists": 0}

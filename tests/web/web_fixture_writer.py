@@ -36,6 +36,11 @@ TIMES = [0.0, 0.137, 0.5, 1.2345, 1.99]
 
 
 def build():
+    """Every fixture: name → bytes."""
+    return {**build_harmonics(), **live_reference()}
+
+
+def build_harmonics():
     sphere = trimesh.creation.icosphere(1)
     vertices = sphere.vertices * [1.0, 0.8, 0.6]  # an ellipsoid: distinct eigenvalues
     mesh = Mesh.from_arrays(vertices, sphere.faces, name="ellipsoid")
@@ -157,6 +162,33 @@ def rhythm_reference(basis):
                  "cases": cases, "rig_cases": rig_cases}
     return {"rhythm.json": json.dumps(reference, indent=0).encode(),
             "rhythm.bin": spectrogram_bundle(song, "clicks-6s")}
+
+
+LIVE_RATES = (44100, 48000, 96000)
+LIVE_EVERY = 7  # frames kept in live.json
+
+
+def live_signal(sample_rate: int, seconds: float = 1.0) -> np.ndarray:
+    """The live analysis's test signal (web/test/live.test.ts computes the same formula): a
+    220 Hz tone, a chirp from 300 Hz entering at 0.3 s and a 6 kHz tone at 0.6 s."""
+    t = np.arange(int(seconds * sample_rate)) / sample_rate
+    return (0.4 * np.sin(2 * np.pi * 220 * t)
+            + 0.2 * np.sin(2 * np.pi * (300 * t + 2000 * t * t)) * (t >= 0.3)
+            + 0.1 * np.sin(2 * np.pi * 6000 * t) * (t >= 0.6))
+
+
+def live_reference():
+    """What the live analysis (web/src/live-analysis.ts) must compute: the offline spectrogram
+    and onset envelope of `live_signal` at 44.1, 48 and 96 kHz (every LIVE_EVERY-th frame)."""
+    cases = []
+    for rate in LIVE_RATES:
+        spectrogram = Spectrogram.from_samples(live_signal(rate), rate)
+        frames = list(range(0, len(spectrogram.values), LIVE_EVERY))
+        cases.append({"sample_rate": rate, "frames": frames,
+                      "values": np.round(spectrogram.values[frames], 6).tolist(),
+                      "onset": np.round(spectrogram.rhythm.onset_strength[frames], 5).tolist(),
+                      "edges": spectrogram.band_edges.tolist()})
+    return {"live.json": json.dumps({"cases": cases}, indent=0).encode()}
 
 
 def write(folder=FOLDER):

@@ -110,3 +110,12 @@ export function followJob(jobId: string, onProgress: (job: Job) => void): Promis
     };
   });
 }
+
+/** Keep a live take (recorded audio) as a song of the library (`POST api/takes`, checked as
+ * any upload): the server's reply, with the new song's item. */
+export async function saveTake(audio: Blob, name: string): Promise<{ item: SongInfo }> {
+  const response = await fetch(`api/takes?name=${encodeURIComponent(name)}`, {
+    method: "POST", body: audio,
+  });
+  return (await checked(response)).json();
+}

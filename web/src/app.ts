@@ -12,6 +12,8 @@ import { FrameRateWatch } from "./frame-rate";
 import { GalleryView } from "./gallery-view";
 import { wireHeader } from "./header";
 import { Library } from "./library";
+import { LiveSource } from "./live-source";
+import type { LiveChoice } from "./live-input";
 import { Messages } from "./messages";
 import { Motion } from "./motion";
 import { galleryRule, gallerySize, sizeChoices } from "./options";
@@ -42,6 +44,8 @@ export class App {
   readonly exporter: ExportPanel;
   /** articulated models: their galleries and player, on their own canvas */
   readonly rigs: RigStage;
+  /** live input (microphone, line in, tab audio) in place of the song */
+  readonly live: LiveSource;
   view: View = "gallery";
   /** the server's gallery-size rule; null when `api/config` could not be read */
   rule: GalleryRule | null = null;
@@ -78,6 +82,12 @@ export class App {
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => messages.loading(text, fraction), (text) => messages.error(text));
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
+    this.live = new LiveSource({ transport: this.transport, motion: this.motion,
+      error: (text) => messages.error(text), status, requestDraw: () => this.requestDraws(),
+      restoreSong: () => this.restoreSong(),
+      songAdded: async (id) => { await this.library.refresh(); this.live.fillMenu($<HTMLSelectElement>("song")); },
+      fps: () => this.shownViewer().fps });
+    this.library.onMenus = () => this.live.fillMenu($<HTMLSelectElement>("song"));
     this.rigs = new RigStage(this.motion, this.transport, antialias, {
       status, loading: (text) => messages.loading(text), guard,
       songId: () => this.library.songId }, options.path, options.batch, !options.render,
@@ -195,13 +205,33 @@ export class App {
     return failure;
   }
 
-  /** A new current song, from 0:00, with a first gallery calibrated on it. */
+  /** A new current song, from 0:00, with a first gallery calibrated on it (a live input
+   * playing stops). */
   async changeSong(songId: string): Promise<void> {
+    this.live.stop();
     await this.library.loadSong(songId);
     await this.newGallery();
     await this.rigs.songChanged();
     this.exporter.refresh();
     this.viewer.requestDraw();
+  }
+
+  /** Dance to a live input instead of the song (docs/web.md#live-input): the galleries,
+   * the player and rigs stay, their mappings hear the input. False when it could not be opened
+   * (said in one line; the song plays on). */
+  startLive(choice: LiveChoice): Promise<boolean> {
+    return this.live.start(choice);
+  }
+
+  /** The library's current song again, after a live input (its spectrogram and sound). */
+  private async restoreSong(): Promise<void> {
+    if (this.library.songId) await this.library.loadSong(this.library.songId);
+    this.requestDraws();
+  }
+
+  private requestDraws(): void {
+    this.viewer.requestDraw();
+    if (this.rigs.active) this.rigs.viewer.requestDraw();
   }
 
   /** The viewer drawing now: a rig's, or the harmonics'. */
@@ -242,6 +272,7 @@ export class App {
     this.readoutAt = now;
     if (this.view === "player") this.player.refreshInfo(this.viewer.path);
     this.frameRate.update(now);
+    this.live.refresh();
   }
 
   /** The gallery-size rule from the server: the *tiles* menu, and `?size=` checked against it
@@ -320,6 +351,8 @@ export class App {
     else this.messages.hint(this.notice ? `${this.notice} · ${ready}` : ready,
       this.transport.playing);
     this.notice = "";
+    await this.live.listDevices();
+    if (options.source) await this.startLive({ kind: options.source });
     return true;
   }
 }

@@ -6,6 +6,7 @@ import type { App } from "./app";
 import { $ } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
+import { choiceOf } from "./live-source";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -19,6 +20,8 @@ export function wireHeader(app: App): void {
   });
   $("song").addEventListener("change", (e) => {
     const songId = valueOf(e);
+    const live = choiceOf(songId);
+    if (live) { void app.startLive(live); return; }
     void messages.guard("Could not play this song", () => app.changeSong(songId));
   });
   $("mapping-menu").addEventListener("change", (e) => {
@@ -81,6 +84,10 @@ function toggleMute(app: App): void {
 async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void> {
   const menu = $<HTMLSelectElement>(kind === "mapping" ? "mapping-menu" : kind);
   const rig = kind === "mesh" && menu.value.startsWith("rig:"); // the model menu lists rigs too
+  if (kind === "song" && choiceOf(menu.value)) {
+    app.messages.status("a live input plays: choose a song in the menu to remove it");
+    return;
+  }
   const id = rig ? menu.value.slice(4) : menu.value;
   const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
   await app.messages.guard(`Could not remove ${name}`, async () => {

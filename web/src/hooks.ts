@@ -3,6 +3,7 @@
 import type { App } from "./app";
 import { deformCPU } from "./filter";
 import type { Prepared } from "./filter";
+import { liveHooks } from "./live-hooks";
 import { bodyMatrices } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { toFileUnits } from "./rig-bundle";
@@ -104,6 +105,8 @@ function makeHooks(app: App, ready: Promise<void>) {
     exportRequest: () => app.exporter.request(),
     /** Rigs (docs/web.md#rigs-in-the-page); positions are in the rig file's units. */
     rig: rigHooks(app),
+    /** Live input (docs/web.md#live-input). */
+    liveInput: liveHooks(app),
     /** Time the deformation alone of every tile (ms per frame), GPU or CPU path. */
     timeDeformation(count: number, t0 = 1): { frame: number } {
       const run = (t: number) => {

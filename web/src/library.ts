@@ -18,6 +18,8 @@ export class Library {
   private items: api.Library | null = null;
   /** Called once a new basis is in the motion and the viewer (the views re-prepare mappings). */
   onBasis: () => void = () => {};
+  /** Called when the menus were refilled (the song menu's live entries go back in). */
+  onMenus: () => void = () => {};
 
   /** `busy(text, fraction)` shows the loading indicator (fraction in [0, 1] or null when
    * unknown); `busy(null)` hides it. `problem(text)` shows an error that is not fatal. */
@@ -53,6 +55,7 @@ export class Library {
         + "another before removing it" : `remove this ${kind === "mesh" ? "model" : "song"} from `
         + "the library (its file on disk stays)";
     }
+    this.onMenus();
     return items;
   }
 
@@ -111,7 +114,10 @@ export class Library {
         this.problem(`${name}: this browser cannot play its sound (${messageOf(error)})`);
       }
     } finally {
-      $<HTMLSelectElement>("song").value = this.songId;
+      this.onMenus(); // shows the song, or the live input still playing
+      if (!document.body.classList.contains("live")) {
+        $<HTMLSelectElement>("song").value = this.songId;
+      }
       this.busy(null);
     }
   }

@@ -7,6 +7,8 @@ import {
   filterValues, kickAt, prepare, pulseEvents, shapeValues, shaderWeights, smoothed, spectrumAt,
 } from "./filter";
 import type { Envelope, Mapping, Prepared } from "./filter";
+import { StreamShaper } from "./live-shaping";
+import type { LiveSpectrum } from "./live-take";
 
 /** Smoothed spectrograms kept (each is frames × bands floats): the slider visits many τ. */
 const SMOOTHED_KEPT = 4;
@@ -16,7 +18,13 @@ interface Heard {
   values: Float32Array;
   buffer: Float32Array;
   events: Float32Array;
+  /** a live take's: the shaping carried on frame by frame, and the revision heard */
+  shaper?: StreamShaper;
+  revision?: number;
 }
+
+const isLive = (spectrum: Spectrum): spectrum is LiveSpectrum =>
+  (spectrum as LiveSpectrum).live === true;
 
 export class Motion {
   basis: Basis | null = null;
@@ -65,9 +73,21 @@ export class Motion {
     const spectrum = this.spectrum!;
     let heard = this.heard.get(prepared);
     if (!heard || heard.spectrum !== spectrum) {
-      heard = { spectrum, values: this.valuesFor(prepared),
+      const live = isLive(spectrum);
+      heard = { spectrum, values: live ? spectrum.values : this.valuesFor(prepared),
         buffer: new Float32Array(spectrum.bands), events: pulseEvents(spectrum, prepared.pulse) };
+      if (live && (prepared.smoothing > 0 || !prepared.envelope.identity)) {
+        heard.shaper = new StreamShaper(spectrum.bands, spectrum.rate, prepared.smoothing,
+          prepared.envelope);
+      }
       this.heard.set(prepared, heard);
+    }
+    if (isLive(spectrum) && heard.revision !== spectrum.revision) {
+      // a live take grows: what it heard since, shaped from where it stopped
+      heard.revision = spectrum.revision;
+      heard.values = heard.shaper ? heard.shaper.extend(spectrum.values, spectrum.frames)
+        : spectrum.values;
+      heard.events = pulseEvents(spectrum, prepared.pulse);
     }
     return heard;
   }

@@ -31,6 +31,8 @@ export interface Options {
   batch: number;
   /** `?scale=S`: draw at this fixed render scale (0.1 … 1) instead of dynamic resolution. */
   scale: number | null;
+  /** `?source=mic`: start on the default live input (docs/design.md#live); `tab`: tab audio */
+  source: "mic" | "tab" | null;
 }
 
 /** The render scale `?scale=` asks for, or null (dynamic resolution) when absent or not a
@@ -58,6 +60,7 @@ export function readOptions(search: string): Options {
     path: path === "gpu" || path === "cpu" ? path : null,
     batch: Number(params.get("batch") ?? 8),
     scale: fixedScale(params.get("scale")),
+    source: params.get("source") === "mic" ? "mic" : params.get("source") === "tab" ? "tab" : null,
   };
 }
 

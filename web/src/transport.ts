@@ -32,11 +32,35 @@ export class AudioTransport implements Clock {
   private isPlaying = false;
   private loudness = 1;
   private silenced = false;
+  /** a live input's clock while one plays (docs/design.md#live): time, playing and the end
+   * come from it, and the speakers stay silent (no feedback into a microphone) */
+  private live: Clock | null = null;
 
   /** `createContext` is replaceable so tests can drive a fake clock. */
   constructor(private readonly createContext: () => AudioContext = () => new AudioContext()) {}
 
-  get playing(): boolean { return this.isPlaying; }
+  get playing(): boolean { return this.live ? this.live.playing : this.isPlaying; }
+
+  /** Whether a live input drives the clock. */
+  get following(): boolean { return this.live !== null; }
+
+  /** Let a live input's clock drive the motion (null: the song's again, paused). */
+  follow(clock: Clock | null): void {
+    this.pause();
+    this.live = clock;
+    this.applyVolume();
+    this.onChange(this.playing);
+  }
+
+  /** The AudioContext (made on first use): live input runs in it, on the same clock. */
+  get audioContext(): AudioContext { return this.audio(); }
+
+  /** The node whatever plays goes into (at full level): `record` hears what reaches it, so
+   * a live input connects here too. */
+  get input(): AudioNode {
+    this.audio();
+    return this.mix!;
+  }
 
   /** Playback volume in [0, 1] (the sound only: the motion follows the song, not the volume). */
   get volume(): number { return this.loudness; }
@@ -52,12 +76,14 @@ export class AudioTransport implements Clock {
   }
 
   now(): number {
+    if (this.live) return this.live.now();
     const t = this.isPlaying && this.context ? this.context.currentTime - this.startedAt
       : this.offset;
     return Math.min(t, this.duration);
   }
 
   ended(): boolean {
+    if (this.live) return false;
     return this.isPlaying && this.context !== null
       && this.context.currentTime - this.startedAt >= this.duration;
   }
@@ -74,6 +100,7 @@ export class AudioTransport implements Clock {
   }
 
   play(): void {
+    if (this.live) { void this.audio().resume(); return; } // a live input plays by itself
     if (this.isPlaying || !this.buffer) return;
     const context = this.audio();
     void context.resume();
@@ -97,6 +124,7 @@ export class AudioTransport implements Clock {
   }
 
   seek(t: number): void {
+    if (this.live) return;
     const wasPlaying = this.isPlaying;
     this.pause();
     this.offset = Math.max(0, Math.min(t, this.duration));
@@ -104,6 +132,7 @@ export class AudioTransport implements Clock {
   }
 
   rewind(): void {
+    if (this.live) return;
     this.pause();
     this.offset = 0;
   }
@@ -134,6 +163,6 @@ export class AudioTransport implements Clock {
   }
 
   private applyVolume(): void {
-    if (this.output) this.output.gain.value = this.silenced ? 0 : this.loudness;
+    if (this.output) this.output.gain.value = this.silenced || this.live ? 0 : this.loudness;
   }
 }

@@ -268,6 +268,14 @@ def _skinning(gltf: GltfFile, node, world, column):
             raise gltf.message(f"skin {node.skin} has {len(inverse)} inverse bind matrices for "
                                f"{len(joints)} joints")
         inverse = np.swapaxes(inverse.reshape(-1, 4, 4), 1, 2)  # column-major
+        # An inverse bind matrix must be invertible (all zeros would put the skin at a point).
+        with np.errstate(all="ignore"):
+            scale = np.abs(inverse[:, :3, :3]).max(axis=(1, 2)) ** 3
+            singular = ~(np.abs(np.linalg.det(inverse)) > 1e-12 * scale) | \
+                ~np.isfinite(inverse).all(axis=(1, 2))
+        if singular.any():
+            raise gltf.message(f"skin {node.skin}: inverseBindMatrices[{np.argmax(singular)}] "
+                               "is not an invertible matrix")
     else:
         inverse = np.tile(np.eye(4), (len(joints), 1, 1))
     return np.array([column[j] for j in joints]), world[joints] @ inverse

@@ -17,6 +17,7 @@ from eigendance.cli.options import (
     add_palette_options,
     add_window_options,
     basis_from,
+    input_files,
     number,
     progress_bar,
     say_note,
@@ -182,16 +183,17 @@ def run_export(args) -> None:
     began = time.perf_counter()
     mapping = Mapping.load(args.mapping) if args.mapping else None
     clipped = args.start > 0 or args.duration is not None
+    inputs = input_files(args)
     for path in companion_paths(args.output, format, song_of(args), clipped).values():
         if path is not None:  # before any work: the export would stop at the end
-            refuse_overwrite(path, args.force)
+            refuse_overwrite(path, args.force, inputs)
     dance = dance_from(args, mapping)
     bar, update = progress_bar(None, "frames", unit="frame")
     with bar:
         def step(done, total):
             bar.total = total
             update(done)
-        report = export_dance(dance, args.output, format, args.fps, args.force, step)
+        report = export_dance(dance, args.output, format, args.fps, args.force, step, inputs)
     size, cache = report["bytes"], report["point_cache_bytes"]
     compared = "" if format == "pc2" else \
         f" (as a point cache: {cache / 1e6:.2f} MB, {cache / size:.1f}× the size)"
@@ -274,7 +276,7 @@ def run_render(args) -> None:
             bar.total = total
             update(done)
         report = render_video(args.output, dances, looks, args.audio, args.fps, args.size,
-                              args.force, step)
+                              args.force, step, inputs=input_files(args))
     seconds = time.perf_counter() - began
     print(f"{args.output}: {report['frames']} frames, {args.size[0]}x{args.size[1]} at "
           f"{args.fps:g} fps, {report['duration']:.2f} s of video with the song, "

@@ -9,11 +9,14 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
+import threading
 import warnings
 
 from eigendance import __version__
-from eigendance.cli.exports import add_export, add_render, run_export, run_render
+from eigendance.cli.batch import add_batch, run_batch
+from eigendance.cli.exports import add_export, add_render, is_rig, run_export, run_render
 from eigendance.cli.harmonics import (
     add_animate,
     add_basis,
@@ -24,9 +27,11 @@ from eigendance.cli.harmonics import (
     run_gallery,
     run_spectrum,
 )
+from eigendance.cli.options import check_outputs
 from eigendance.cli.rigs import add_animate_rig, add_modes, run_animate_rig, run_modes
 from eigendance.cli.web import add_demo, add_serve, run_demo, run_serve
 from eigendance.errors import EigendanceError, InputError, ModelWarning, one_line
+from eigendance.files import all_or_nothing
 
 
 class Parser(argparse.ArgumentParser):
@@ -60,6 +65,8 @@ COMMANDS = {
     "export": (add_export, run_export,
                "write the dance for other tools: glTF (.glb), point cache (.pc2 + .obj), USD"),
     "render": (add_render, run_render, "render the dance with its song into a video (.mp4)"),
+    "batch": (add_batch, run_batch, "make many songs × many models from a plan (TOML), on "
+                                    "local processes or Ray; resumable"),
 }
 
 
@@ -79,6 +86,10 @@ def build_parser() -> argparse.ArgumentParser:
         command.set_defaults(run=run_command)
     return parser
 
+
+# Commands that run on and write as they go (a server's cache, a batch's record and outputs):
+# not all-or-nothing as a whole.
+SERVING = ("serve", "demo", "batch")
 
 # How a remedy ({parameter: value}) reads on the command line.
 FLAGS = {"k": "-k"}
@@ -115,6 +126,82 @@ def show_warning(message, category, *_, **__) -> None:
     print(f"eigendance: warning: {one_line(str(message))}", file=sys.stderr)
 
 
+# Control characters (C0, DEL, C1): a name from a file (a skeleton's body, a glTF node, a mesh
+# file's name) printed as it is could set the terminal's title or clear it.
+CONTROL = {code: None for code in [*range(32), *range(127, 160)]}
+
+
+class Printable:
+    """A text stream that drops every control character but those in `keep` from what is
+    written to it (docs/design.md#errors).
+
+    Parameters
+    ----------
+    stream : the stream written to (sys.stdout, sys.stderr).
+    keep : the control characters kept ("\\n\\t", and "\\r" for progress bars).
+
+    Example
+    -------
+    >>> import io
+    >>> out = io.StringIO()
+    >>> _ = Printable(out, "\\n").write("up\\x1b]0;title\\x07\\n")
+    >>> out.getvalue()
+    'up]0;title\\n'
+    """
+
+    def __init__(self, stream, keep: str):
+        self.stream = stream
+        self.table = {code: None for code in CONTROL if chr(code) not in keep}
+
+    def write(self, text: str) -> int:
+        """Write `text` without its control characters.
+
+        Parameters
+        ----------
+        text : what to write.
+
+        Returns
+        -------
+        int, the length of `text` (as a stream's write returns).
+        """
+        self.stream.write(text.translate(self.table))
+        return len(text)
+
+    def __getattr__(self, name):
+        return getattr(self.stream, name)
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, turned into an exception like Ctrl-C's so that every cleanup runs: temporary
+    outputs removed, workers and encoders stopped (docs/design.md#errors)."""
+
+
+def _terminate(number, frame):
+    raise Terminated()
+
+
+def memory_advice(args) -> str:
+    """What may make a command that ran out of memory fit: it depends on what it computes.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    str.
+    """
+    rig = args.command in ("modes", "animate-rig") or (
+        args.command in ("export", "render") and is_rig(args))
+    if rig:
+        return "try a rig of fewer bodies and joints, or a shorter part of the song"
+    if args.command in ("spectrum",):
+        return "try a shorter song or fewer bands"
+    if args.command in ("gallery", "animate", "export", "render", "basis"):
+        return "try a smaller -k or mesh, or a shorter part of the song"
+    return "try smaller inputs"
+
+
 def main(argv=None) -> int:
     """Run one command.
 
@@ -124,9 +211,26 @@ def main(argv=None) -> int:
 
     Returns
     -------
-    int, the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted.
+    int, the exit status: 0 done, 1 bad input, 2 a bug, 130 interrupted (Ctrl-C), 143
+    terminated (SIGTERM).
     """
     args = build_parser().parse_args(argv)
+    previous = None
+    if threading.current_thread() is threading.main_thread() and \
+            signal.getsignal(signal.SIGTERM) == signal.SIG_DFL:
+        previous = signal.signal(signal.SIGTERM, _terminate)
+    streams = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = Printable(sys.stdout, "\n\t"), Printable(sys.stderr, "\n\t\r")
+    try:
+        return _run(args)
+    finally:
+        sys.stdout, sys.stderr = streams
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+
+
+def _run(args) -> int:
+    """Run the parsed command: its exit status, its error on one line."""
     try:
         with warnings.catch_warnings():
             if not os.environ.get("EIGENDANCE_DEBUG"):
@@ -136,15 +240,23 @@ def main(argv=None) -> int:
                 warnings.simplefilter("ignore")
             warnings.simplefilter("always", ModelWarning)  # what a model file loses: one line
             warnings.showwarning = show_warning
-            args.run(args)
+            check_outputs(args)
+            if args.command in SERVING:  # their writes are their own (a cache, a record)
+                args.run(args)
+            else:
+                with all_or_nothing():  # a command that fails leaves none of its outputs
+                    args.run(args)
     except InputError as error:
         print(f"eigendance: error: {error}{hint(error.remedy)}", file=sys.stderr)
         return 1
+    except Terminated:
+        print("eigendance: terminated", file=sys.stderr)
+        return 143
     except KeyboardInterrupt:
         print("eigendance: interrupted", file=sys.stderr)
         return 130
     except MemoryError:
-        print("eigendance: error: out of memory; try a smaller -k or mesh", file=sys.stderr)
+        print(f"eigendance: error: out of memory; {memory_advice(args)}", file=sys.stderr)
         return 1
     except Exception as error:  # noqa: BLE001 - every failure of ours ends in one line
         if os.environ.get("EIGENDANCE_DEBUG"):

@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 
 from tqdm import tqdm
 
 from eigendance import checks
 from eigendance.errors import InputError
+from eigendance.files import refuse_input
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
@@ -80,10 +82,51 @@ def add_output(parser, what: str) -> None:
     what : what the output is, for --help.
     """
     parser.add_argument("-o", "--output", required=True, help=what)
-    parser.add_argument("--force", action="store_true", help="overwrite an existing output")
+    parser.add_argument("--force", action="store_true",
+                        help="overwrite an existing output (never one of the inputs)")
 
 
-def progress_bar(total: int | None, description: str, unit: str = "pair"):
+# The arguments that name files a command writes; every other argument naming a file is an input.
+OUTPUT_ARGUMENTS = ("output", "png", "save_mapping")
+
+
+def input_files(args) -> list[str]:
+    """The existing files the command line names as inputs (never overwritten, `--force` or
+    not: `files.refuse_overwrite`).
+
+    Parameters
+    ----------
+    args : the parsed command line.
+
+    Returns
+    -------
+    list of paths.
+    """
+    found = []
+    for name, value in vars(args).items():
+        if name in OUTPUT_ARGUMENTS or name.startswith("_"):
+            continue
+        for item in value if isinstance(value, list) else [value]:
+            if isinstance(item, str) and item and os.path.isfile(item):
+                found.append(item)
+    return found
+
+
+def check_outputs(args) -> None:
+    """InputError when an output of the command line is one of its inputs.
+
+    Parameters
+    ----------
+    args : the parsed command line.
+    """
+    inputs = input_files(args)
+    for name in OUTPUT_ARGUMENTS:
+        path = getattr(args, name, None)
+        if isinstance(path, str) and path:
+            refuse_input(path, inputs)
+
+
+def progress_bar(total: int | None, description: str, unit: str = "pair", initial: int = 0):
     """A tqdm bar on stderr (silent when stderr is not a terminal) and a callable(done).
 
     Parameters
@@ -92,6 +135,7 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
         count).
     description : the bar's label.
     unit : what is counted.
+    initial : the count done already (not counted in the rate, nor so in the ETA).
 
     Returns
     -------
@@ -102,7 +146,7 @@ def progress_bar(total: int | None, description: str, unit: str = "pair"):
     # when Ctrl-C tears the pool down while they start.
     tqdm.monitor_interval = 0
     bar = tqdm(total=total, desc=description, unit=unit, file=sys.stderr,
-               disable=not sys.stderr.isatty(), leave=False)
+               disable=not sys.stderr.isatty(), leave=False, initial=initial)
 
     def update(done):
         bar.update(max(0, done - bar.n))

@@ -44,6 +44,27 @@ from eigendance.window import Window
 RIG_CHUNK = 64  # frames skinned per batch
 
 
+# The largest coordinate (model units) and body rotation (radians) a dance may reach: far
+# beyond any dance (a mapping's amplification of 1e300 goes past them), well inside float32.
+MAX_COORDINATE, MAX_TURN = 1e30, 1e6
+
+
+def check_motion(values, mapping: str) -> None:
+    """InputError naming the mapping unless every value is finite and at most MAX_COORDINATE in
+    size as a float32 (what every file and the video hold).
+
+    Parameters
+    ----------
+    values : positions (any shape).
+    mapping : the mapping's name, for the message.
+    """
+    values = np.asarray(values)
+    with np.errstate(all="ignore"):
+        if not (np.isfinite(values).all() and np.abs(values).max(initial=0) <= MAX_COORDINATE):
+            raise InputError(f"{mapping}: the motion it asks for leaves the range of numbers a "
+                             "file holds; lower its amplification")
+
+
 def video_times(duration: float, fps: float) -> np.ndarray:
     """Frame i of a video shows time i/fps, i < ⌈duration·fps⌉ (at least one frame): the frames
     cover [0, duration) and the video lasts as long as the song, to within one frame.
@@ -378,7 +399,11 @@ class HarmonicDance(Dance):
         basis = self.basis
         targets = (basis.harmonics(driven).T[:, :, None]
                    * basis.coefficients[driven][:, None, :] * basis.scale)
-        return Morphs(driven, targets, self.phi(times)[:, driven] - 1.0)
+        weights = self.phi(times)[:, driven] - 1.0
+        # What a player computes, Σ weights·targets, must stay a finite float32 too.
+        largest = np.abs(weights).max(initial=0) * np.abs(targets).max(initial=0) * len(driven)
+        check_motion(largest + np.abs(self.rest).max(initial=0), self.mapping.name)
+        return Morphs(driven, targets, weights)
 
     def sample_skin(self, times) -> SampleSkin:
         """The motion of a reduced basis at `times` as a skin on its samples (exact).
@@ -408,6 +433,7 @@ class HarmonicDance(Dance):
         times = self.start + np.asarray(times, dtype=np.float64)
         for first, positions in iter_positions(self.basis, self.spectrogram, self.mapping,
                                                times):
+            check_motion(positions, self.mapping.name)
             yield first, positions, None
 
 
@@ -506,7 +532,14 @@ def rig_dance(rig: Rig, spectrogram: Spectrogram | None, mapping: Mapping | None
         duration = spectrogram.duration if spectrogram is not None else 4.0
 
     def coefficients(times):
-        return rig.coefficients(spectrogram, mapping, times)
+        moving = rig.coefficients(spectrogram, mapping, times)
+        with np.errstate(all="ignore"):  # bounds a body's turn (radians) and shift (units)
+            largest = (np.abs(moving) @ np.abs(rig.model.modes).max(axis=0)).max(initial=0)
+        if not (np.isfinite(moving).all() and largest <= MAX_TURN):
+            name = mapping.name if mapping is not None else "the rig's mapping"
+            raise InputError(f"{name}: the motion it asks for turns or moves a body by more "
+                             f"than {MAX_TURN:g}; lower its amplification")
+        return moving
 
     moving_modes = np.flatnonzero(np.abs(coefficients(np.linspace(0, duration, 64))).max(axis=0))
     info = {"modes": [int(m) for m in moving_modes],

@@ -102,7 +102,7 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
 
 
 def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
-                 fps: float = 30.0, force: bool = False, progress=None) -> dict:
+                 fps: float = 30.0, force: bool = False, progress=None, inputs=()) -> dict:
     """Write `dance` as glTF, point cache or USD, with its song beside it.
 
     Parameters
@@ -111,8 +111,9 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
     path : the file to write; its suffix names the format unless `format` does.
     format : "glb", "pc2" or "usd" (None: by suffix).
     fps : samples per second.
-    force : overwrite existing files.
+    force : overwrite existing files (never one of `inputs`).
     progress : optional callable(frames done, frames in all).
+    inputs : the files the export reads (the model, the mapping): never written over.
 
     Returns
     -------
@@ -135,18 +136,18 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
             os.path.abspath(dance.audio) == os.path.abspath(paths["main"]):
         song_name = os.path.basename(dance.audio)
 
-    planned = planned_bytes(dance, format, len(times))
-    check_output(paths["main"], planned, f"{os.path.basename(paths['main'])}: {len(times)} "
-                 f"frames of {dance.n} vertices", force)
-    if format == "usd":  # usd-core keeps every time sample in memory until it saves
-        check_memory(planned, f"{os.path.basename(paths['main'])}: {len(times)} frames of "
-                     f"{dance.n} vertices in USD")
+    planned = planned_bytes(dance, format, len(times), paths)
+    what = f"{os.path.basename(paths['main'])}: {len(times)} frames of {dance.n} vertices"
 
     def step(done):
         if progress is not None:
             progress(done, len(times))
 
-    with Outputs(written, force) as outputs:
+    outputs = Outputs(written, force, [*inputs, dance.audio])
+    check_output(paths["main"], planned, what, force)  # the free disk, and --force beyond 4 GB
+    if format == "usd":  # usd-core keeps every time sample (12 bytes a vertex) in memory
+        check_memory(12.0 * dance.n * (len(times) + 1), f"{what} in USD")
+    with outputs:
         main = outputs.temporary(paths["main"])
         difference = _write(format, dance, times, fps, main, song_name, step, textures)
         if format == "pc2":
@@ -163,27 +164,45 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
             "skinning_difference": difference, "diagonal": dance.diagonal}
 
 
-def planned_bytes(dance: Dance, format: str, frames: int) -> int:
-    """The size of the main file of an export, known before it is written.
+# Bytes per vertex and frame of a .usda (text: three numbers of about ten characters each).
+USDA_BYTES = 36
+
+
+def planned_bytes(dance: Dance, format: str, frames: int, paths: dict) -> float:
+    """About how many bytes an export writes, known before it is written (checked against the
+    free disk, and beyond 4 GB only with `--force`: `limits.check_output`).
+
+    Point cache: exactly its size, plus the rest OBJ (about 40 bytes a vertex and 30 a
+    triangle). USD: 12 bytes a vertex and frame (.usdc, .usd) or `USDA_BYTES` (.usda), plus the
+    rest points and the faces. glb of a harmonic dance: `gltf.glb_size` (the skin of a reduced
+    basis, else the morph targets); of a rig: its mesh and the skin's animation (28 bytes a body
+    and frame). Plus the song when it is written beside.
 
     Parameters
     ----------
-    dance : the motion.
+    dance : the dance.
     format : "glb", "pc2" or "usd".
-    frames : samples T.
+    frames : how many frames.
+    paths : `companion_paths`.
 
     Returns
     -------
-    int, bytes.
+    float, bytes.
     """
+    n = dance.n
     if format == "pc2":
-        return pc2_size(dance.n, frames)
-    if format == "usd":
-        return 12 * dance.n * (frames + 1) + 12 * len(dance.faces)
-    if isinstance(dance, RigDance):
-        return 60 * dance.n + 12 * len(dance.faces) + 28 * len(dance.body_names) * frames
-    sizes = glb_size(dance, frames)
-    return sizes.get("skin", sizes["morph targets"])
+        planned = pc2_size(n, frames) + 40.0 * n + 30.0 * len(dance.faces)
+    elif format == "usd":
+        per_vertex = USDA_BYTES if suffix_of(paths["main"]) == ".usda" else 12
+        planned = float(per_vertex) * n * (frames + 1) + 12.0 * len(dance.faces)
+    elif isinstance(dance, RigDance):
+        planned = 60.0 * n + 12.0 * len(dance.faces) + 28.0 * len(dance.body_names) * frames
+    else:
+        sizes = glb_size(dance, frames)
+        planned = float(sizes.get("skin", sizes["morph targets"]))
+    if paths.get("song") and dance.audio is not None and os.path.isfile(dance.audio):
+        planned += os.path.getsize(dance.audio)
+    return planned
 
 
 def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: str | None,

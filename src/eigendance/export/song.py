@@ -16,6 +16,8 @@ import subprocess
 import imageio_ffmpeg
 
 from eigendance.errors import InputError, one_line
+from eigendance.export.output import check_space
+from eigendance.processes import die_with_parent
 
 
 def seek_options(start: float, duration: float | None) -> list[str]:
@@ -56,8 +58,9 @@ def cut_song(source: str | os.PathLike, destination: str | os.PathLike, start: f
                "-map_metadata", "-1", "-fflags", "+bitexact", "-flags:a", "+bitexact",
                os.fspath(destination)]
     done = subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                          stderr=subprocess.PIPE, check=False)
+                          stderr=subprocess.PIPE, check=False, preexec_fn=die_with_parent)
     if done.returncode != 0:
         lines = done.stderr.decode(errors="replace").strip().splitlines()
+        check_space(done.stderr.decode(errors="replace"), os.fspath(destination))
         raise InputError(f"{os.path.basename(os.fspath(source))}: cannot cut the song "
                          f"({one_line(lines[-1] if lines else done.returncode)})")

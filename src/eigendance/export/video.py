@@ -12,13 +12,12 @@ or an encoder failure leaves nothing behind.
 
 from __future__ import annotations
 
-import ctypes
+import contextlib
 import math
 import multiprocessing
 import os
 import signal
 import subprocess
-import sys
 import tempfile
 from fractions import Fraction
 
@@ -27,12 +26,15 @@ import numpy as np
 
 from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
-from eigendance.export.output import Outputs
+from eigendance.export.output import Outputs, check_space
 from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
 from eigendance.export.song import seek_options
+from eigendance.limits import check_disk
 from eigendance.music.decode import open_audio
+from eigendance.processes import die_with_parent
 
 MAX_SIDE = 7680  # pixels (8K)
+MIN_FPS = 0.01  # frames per second: one frame every 100 s (a rate of 1/100)
 # Processes drawing frames in turn. llvmpipe transforms and sets up triangles on one thread, which
 # bounds a fine mesh (the bunny: 25 of its 60 ms of CPU per frame); two single-threaded renderers
 # keep both cores busy (measured in benchmarks/bench_render.py).
@@ -244,8 +246,7 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
 def _draw_in_turn(send, dances, looks, times, width, height) -> None:
     """In a render worker: draw `times` and send each frame (or one error line) to the caller."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if sys.platform.startswith("linux"):  # the kernel kills us when the caller dies
-        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    die_with_parent()  # the kernel kills us when the caller dies
     os.environ["LP_NUM_THREADS"] = "1"  # read when llvmpipe starts: one thread per worker
     try:
         for frame in render_frames(dances, looks, times, width, height):
@@ -258,8 +259,10 @@ def _draw_in_turn(send, dances, looks, times, width, height) -> None:
         send.close()
 
 
-def encode(command: list[str], frames, count: int, progress=None) -> None:
+def encode(command: list[str], frames, count: int, progress=None, path: str = "") -> None:
     """Run the encoder and feed it the frames; the encoder's last error line on failure.
+
+    The encoder dies with this process (`processes.die_with_parent`).
 
     Parameters
     ----------
@@ -267,10 +270,11 @@ def encode(command: list[str], frames, count: int, progress=None) -> None:
     frames : iterable of raw RGBA frames (bytes).
     count : how many frames (for `progress`).
     progress : optional callable(frames done, frames in all).
+    path : the video, for messages (a full disk is an InputError naming it).
     """
     log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
     encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                               stderr=log)
+                               stderr=log, preexec_fn=die_with_parent)
     try:
         try:
             for index, frame in enumerate(frames):
@@ -286,6 +290,7 @@ def encode(command: list[str], frames, count: int, progress=None) -> None:
         if encoder.returncode != 0:
             last = one_line(errors.strip().splitlines()[-1] if errors.strip() else
                             f"exit status {encoder.returncode}")
+            check_space(errors, path or command[-1])
             raise InternalError(f"ffmpeg failed: {last}")
     finally:
         if encoder.poll() is None:
@@ -298,9 +303,33 @@ def encode(command: list[str], frames, count: int, progress=None) -> None:
         log.close()
 
 
+# The least bytes of H.264 a pixel of a frame took at CRF 18 (measured: 0.0005 for the knight at
+# 640x360, 0.002 for the teapot at 1280x720) and of AAC a second (3,000 for a mono 8 kHz song,
+# 9,400 for a stereo one): the planned size of a video is a floor, refusing what cannot fit,
+# not what might (a disk that fills anyway is one line too).
+VIDEO_BYTES_PER_PIXEL, AUDIO_BYTES_PER_SECOND = 0.0005, 3000
+
+
+def video_bytes(width: int, height: int, frames: int, duration: float) -> float:
+    """About how many bytes a video takes (checked against the free disk before rendering).
+
+    Parameters
+    ----------
+    width, height : pixels.
+    frames : how many.
+    duration : s.
+
+    Returns
+    -------
+    float, bytes.
+    """
+    return VIDEO_BYTES_PER_PIXEL * width * height * frames + AUDIO_BYTES_PER_SECOND * duration
+
+
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
                  audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
-                 force: bool = False, progress=None) -> dict:
+                 force: bool = False, progress=None, workers: int = WORKERS,
+                 inputs=()) -> dict:
     """Render dances (one, or a gallery of the same mesh) with their song into an MP4.
 
     Parameters
@@ -312,6 +341,9 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     audio : the song's file (any format ffmpeg reads), muxed as AAC.
     fps : frames per second; size : (width, height) in pixels, both even.
     progress : optional callable(frames done, frames in all).
+    workers : processes drawing frames in turn (1: this process draws; a batch, whose workers
+        each have a core, draws so).
+    inputs : the files the render reads besides the song: never written over.
 
     Returns
     -------
@@ -321,8 +353,9 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
         raise InputError("render needs at least one dance and one look per dance")
     width, height = (int(side) for side in size)
     check_size(width, height)
-    if not (math.isfinite(fps) and 0 < fps <= 240):
-        raise InputError(f"frames per second must be in (0, 240], got {fps}")
+    if not (math.isfinite(fps) and MIN_FPS <= fps <= 240):
+        raise InputError(f"video: frames per second must be from {MIN_FPS:g} to 240 (the "
+                         f"encoder's frame rate is a fraction of denominator ≤ 1001), got {fps:g}")
     audio = check_song(audio)
     duration = max(dance.duration for dance in dances)
     start = dances[0].start
@@ -331,10 +364,16 @@ def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look]
     clipped = any(dance.clipped for dance in dances)
     times = video_times(duration, fps)
     path = os.fspath(path)
-    with Outputs([path], force) as outputs:
+    outputs = Outputs([path], force, [*inputs, audio])
+    check_disk(path, video_bytes(width, height, len(times), duration),
+               f"{os.path.basename(path)}: {len(times)} frames of {width}x{height}")
+    with outputs:
         command = ffmpeg_command(width, height, fps, audio, outputs.temporary(path), start,
                                  duration if clipped else None)
-        encode(command, frames_in_turn(dances, looks, times, width, height), len(times),
-               progress)
+        # closing: an interruption stops the drawing workers here, before `outputs` cleans up
+        # (a generator left to the garbage collector keeps them, and the pipes they inherited).
+        with contextlib.closing(frames_in_turn(dances, looks, times, width, height,
+                                               workers)) as frames:
+            encode(command, frames, len(times), progress, path)
     return {"path": path, "frames": len(times), "fps": fps, "size": (width, height),
             "duration": duration}

@@ -146,7 +146,7 @@ class DiskCache:
         arrays : {name: array}.
         """
         try:
-            atomic_save_npz(self.path(key), **arrays, **{KEY: np.array(key),
+            atomic_save_npz(self.path(key), alone=True, **arrays, **{KEY: np.array(key),
                                                          CHECKSUM: np.array(checksum(arrays))})
         except InputError:
             pass  # a read-only or full cache folder must not fail the computation

@@ -10,14 +10,10 @@ Both return (eigenvalues (k,) ascending, eigenvectors (n, k)) with Uᵀ M U = I.
 
 from __future__ import annotations
 
-import ctypes
 import math
 import multiprocessing
 import os
-import signal
-import sys
 import threading
-import time
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
@@ -32,6 +28,7 @@ from threadpoolctl import threadpool_limits
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.lanczos import lanczos_extreme
 from eigendance.harmonic.mass import as_mass
+from eigendance.processes import start_worker
 
 SOLVERS = ("bands", "eigsh")
 SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
@@ -538,7 +535,7 @@ class _Workers:
             if method == "forkserver":
                 context.set_forkserver_preload([__name__])
             self.pool = ProcessPoolExecutor(self.workers, mp_context=context,
-                                            initializer=_start_worker, initargs=(os.getpid(),))
+                                            initializer=start_worker, initargs=(os.getpid(),))
         return list(self.pool.map(_band_worker, arguments))
 
     def __exit__(self, kind, *exception):
@@ -552,29 +549,6 @@ class _Workers:
             if (calls := getattr(self.pool, "_call_queue", None)) is not None:
                 calls.cancel_join_thread()
         self.pool.shutdown(wait=kind is None, cancel_futures=True)
-
-
-def _start_worker(caller: int) -> None:
-    """In a band worker: leave Ctrl-C to the caller, and exit when the caller is gone."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    parent = os.getppid()
-    if sys.platform.startswith("linux"):  # the kernel kills us when our parent (the server) dies
-        PR_SET_PDEATHSIG = 1
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
-
-    def watch():  # elsewhere, and as a second guard: poll the caller and the parent
-        while True:
-            time.sleep(0.5)
-            try:
-                os.kill(caller, 0)
-            except ProcessLookupError:
-                os._exit(1)
-            except PermissionError:
-                pass
-            if os.getppid() != parent:
-                os._exit(1)
-
-    threading.Thread(target=watch, name="watch-caller", daemon=True).start()
 
 
 def _assemble(pieces, k: int, n: int):

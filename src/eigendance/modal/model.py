@@ -110,6 +110,10 @@ def null_space(matrix: np.ndarray, n_columns: int) -> np.ndarray:
         return np.eye(n_columns)
     # numpy's SVD, not scipy.linalg.null_space: numpy lets other threads run meanwhile (scipy's
     # LAPACK wrappers hold the GIL, and the server's event loop waited seconds for them).
+    if matrix.shape[0] > n_columns:
+        # Many rows (20,000 joints between two bodies): R of A = QR has A's null space and
+        # singular values, and its SVD never asks LAPACK for a rows × rows matrix.
+        matrix = np.linalg.qr(matrix, mode="r")
     _, singular, rows = np.linalg.svd(matrix, full_matrices=True)
     rank = int(np.sum(singular > RANK_TOLERANCE * singular[0])) if singular.size else 0
     return rows[rank:].T.copy()
@@ -254,6 +258,10 @@ class ModalModel:
                                                     * deflection_reduced)
         reduced_mass = (reduced_mass + reduced_mass.T) / 2
         reduced_stiffness = (reduced_stiffness + reduced_stiffness.T) / 2
+        scaled = "joint stiffness" + (f" × {stiffness:g}" if stiffness != 1 else "")
+        if not np.isfinite(reduced_stiffness).all():  # the product overflowed
+            raise InputError(f"{skeleton.name}: {scaled} is beyond the range of numbers (the "
+                             "stiffness matrix overflows); give smaller stiffnesses")
         dimension = basis.shape[1]
         if dimension:
             eigenvalues, vectors = generalized_eigh(reduced_stiffness, reduced_mass)
@@ -263,6 +271,10 @@ class ModalModel:
         rigid = dimension - matrix_rank(deflection_reduced[elastic]) if dimension else 0
         modes = basis @ vectors[:, rigid:]
         frequencies = np.sqrt(np.clip(eigenvalues[rigid:], 0, None)) / (2 * math.pi)
+        # The page's bundle and the files hold them as float32: beyond its range is infinite.
+        if not (np.all(frequencies <= np.finfo(np.float32).max) and np.isfinite(modes).all()):
+            raise InputError(f"{skeleton.name}: {scaled} gives frequencies beyond the range "
+                             "of numbers (of 32-bit floats); give smaller stiffnesses")
         model = cls(frequencies, modes, rigid, dimension, constraints.shape[0], rank,
                     skeleton.body_names, skeleton.centers, skeleton.rotations, mass,
                     skeleton.joint_pairs,

@@ -9,6 +9,7 @@ comes from a fixed seed, so every call returns the same samples.
 
 from __future__ import annotations
 
+import io
 import os
 
 import numpy as np
@@ -114,5 +115,6 @@ def write_demo_wav(path: str | os.PathLike, duration: float = 30.0) -> None:
     duration : s.
     """
     samples, sample_rate = demo_track(duration)
-    atomic_write(path, lambda file: soundfile.write(file, samples, sample_rate, format="WAV",
-                                                    subtype="PCM_16"))
+    wav = io.BytesIO()  # encoded first: a full disk is then an OSError, not libsndfile's own
+    soundfile.write(wav, samples, sample_rate, format="WAV", subtype="PCM_16")
+    atomic_write(path, lambda file: file.write(wav.getvalue()), alone=True)

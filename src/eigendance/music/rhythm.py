@@ -29,13 +29,15 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import checked_array
+from eigendance.music.constants import ANALYSIS
 
-MEL_BANDS = 128  # bands of the onset envelope's mel spectrum
-MEL_FMAX = 11025.0  # Hz: librosa's default analysis (22050 Hz) sees no higher
-FLOOR_DB = -100.0  # dB of full scale: the mel power's floor
-LAG = 0.02  # s: the flux compares a frame with the one this much earlier
+# From analysis.json, which the page's live analysis reads too:
+MEL_BANDS = int(ANALYSIS["onset"]["mel_bands"])  # bands of the onset envelope's mel spectrum
+MEL_FMAX = float(ANALYSIS["onset"]["mel_fmax"])  # Hz: librosa's default analysis sees no higher
+FLOOR_DB = float(ANALYSIS["onset"]["floor_db"])  # dB of full scale: the mel power's floor
+LAG = float(ANALYSIS["onset"]["lag"])  # s: the flux compares a frame with the one this earlier
 CHUNK_SECONDS = 60.0  # the tempogram is averaged over chunks this long
-BASS_FMAX = 200.0  # Hz: the bass envelope's mel bands are centred below this
+BASS_FMAX = float(ANALYSIS["onset"]["bass_fmax"])  # Hz: the bass mel bands are centred below
 OFFBEAT_RATIO = 1.5  # beats move half a beat when the bass hits there this much harder
 FAST = 160.0  # BPM: above this, every other beat is kept when the bass marks one parity
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)

@@ -29,6 +29,7 @@ from scipy.fft import rfft
 
 from eigendance.errors import InputError
 from eigendance.files import atomic_save_npz, atomic_write, checked_array, load_npz
+from eigendance.music.constants import ANALYSIS
 from eigendance.music.decode import CHUNK_SAMPLES, mono, open_audio
 from eigendance.music.rhythm import (
     OnsetEnvelope,
@@ -42,8 +43,12 @@ FORMAT_KEYS = ("times", "band_edges", "values", "rate", "sample_rate", "duration
 FILE_VERSION = 2  # written (with the rhythm); version 1 (no `version` field, no rhythm) is read
 FRAME_BATCH = 1024  # analysis frames per batched FFT
 # Defaults of docs/design.md#spectrogram: frames per second, bands, band range (Hz), loudness
-# floor (dB) and smoothing time constant (s).
-RATE, BANDS, FMIN, FMAX, FLOOR_DB, SMOOTHING = 100.0, 64, 20.0, 16000.0, -80.0, 0.08
+# floor (dB), smoothing time constant (s) and window length (s), from analysis.json, which the
+# page's live analysis (web/src/live-analysis.ts) reads too.
+RATE, BANDS, FMIN, FMAX, FLOOR_DB, SMOOTHING, WINDOW_SECONDS = (
+    float(ANALYSIS["rate"]), int(ANALYSIS["bands"]), float(ANALYSIS["fmin"]),
+    float(ANALYSIS["fmax"]), float(ANALYSIS["floor_db"]), float(ANALYSIS["smoothing"]),
+    float(ANALYSIS["window_seconds"]))
 # Bounds that keep every allocation proportional to the audio, not to a header or an option:
 # the window grows with the sample rate, the result with frames × bands, frame times with
 # duration × frames per second.
@@ -66,7 +71,7 @@ def window_length(sample_rate: float) -> int:
     -------
     int.
     """
-    return 1 << max(0, math.ceil(math.log2(0.046 * sample_rate)))
+    return 1 << max(0, math.ceil(math.log2(WINDOW_SECONDS * sample_rate)))
 
 
 def frame_count(sample_count: int, sample_rate: int, rate: float) -> int:

@@ -54,6 +54,7 @@ from eigendance.server.routes import (
     job_events,
     removal,
     save_mapping,
+    take,
     upload,
 )
 
@@ -159,6 +160,7 @@ API_ROUTES = [
     Route("/api/jobs/{id}", get_job),
     Route("/api/jobs/{id}/events", job_events),
     Route("/api/upload", upload, methods=["POST"]),
+    Route("/api/takes", take, methods=["POST"]),
     Route("/api/gallery", gallery, methods=["POST"]),
     Route("/api/breed", breed_route, methods=["POST"]),
     Route("/api/mappings", save_mapping, methods=["POST"]),

@@ -75,6 +75,8 @@ def sniff(name: str, head: bytes) -> str | None:
                                        and head[1] & 0xE0 == 0xE0),
         ".ogg": head[:4] == b"OggS", ".oga": head[:4] == b"OggS", ".opus": head[:4] == b"OggS",
         ".flac": head[:4] == b"fLaC", ".m4a": head[4:8] == b"ftyp",
+        # Matroska/WebM (EBML): what a browser records, a live take among them
+        ".webm": head[:4] == b"\x1aE\xdf\xa3", ".mka": head[:4] == b"\x1aE\xdf\xa3",
         ".json": text_like and head.lstrip()[:1] == b"{",
         ".zip": head[:2] == b"PK",  # a model in several files (server.archive)
         # read through Blender when it is installed; else the reader says how to convert them
@@ -281,6 +283,26 @@ async def upload(request: Request):
         if item.rig in library.rigs:  # a glTF with a skin is a rig too
             reply["rig"] = library.rigs[item.rig].as_json()
     return JSONResponse(reply, status_code=201 if new else 200)
+
+
+async def take(request: Request):
+    """POST /api/takes?name=FILE: a live take recorded in the page (docs/design.md#live), kept
+    as a song of the library: checked as any upload (the size limit, the content against its
+    suffix, decoded and analysed), and refused unless it is audio.
+
+    Parameters
+    ----------
+    request : the recorded audio (WebM/Opus from the page) and ?name= with its suffix.
+
+    Returns
+    -------
+    JSONResponse as `upload` ({"kind": "song", "item"}); 415 for a name that is not audio.
+    """
+    name = os.path.basename(request.query_params.get("name", "").replace("\\", "/"))
+    if not name or name.startswith("."):
+        raise HTTPException(400, "a take needs ?name=FILE with a file name and an audio suffix")
+    kind_of(name, ("audio",))  # InputError (415) for anything but audio
+    return await upload(request)
 
 
 async def receive_file(request: Request, library: Library, name: str):

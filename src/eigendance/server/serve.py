@@ -11,6 +11,7 @@ within a second, open connections (server-sent events) included.
 from __future__ import annotations
 
 import asyncio
+import atexit
 import contextlib
 import ctypes
 import errno
@@ -348,7 +349,18 @@ def demo_paths() -> list[str]:
     """
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
     song = os.path.join(cache_folder(), "demo-music", "eigendance-demo-music.wav")
-    os.makedirs(os.path.dirname(song), exist_ok=True)
-    if not os.path.exists(song):
+    if os.path.isfile(song):
+        return [mesh, song]
+    try:
+        os.makedirs(os.path.dirname(song), exist_ok=True)
+        write_demo_wav(song)
+    except (OSError, InputError) as error:  # a cache folder that is a file, read-only, full
+        reason = one_line(error) if isinstance(error, InputError) else \
+            f"{os.path.dirname(song)}: cannot write ({error.strerror or one_line(error)})"
+        folder = tempfile.mkdtemp(prefix="eigendance-demo-")
+        atexit.register(shutil.rmtree, folder, True)
+        print(f"eigendance: warning: {reason}; the demo's music is made for this run only "
+              "(the cache folder cannot be written)", file=sys.stderr)
+        song = os.path.join(folder, "eigendance-demo-music.wav")
         write_demo_wav(song)
     return [mesh, song]

@@ -1,0 +1,132 @@
+// Live rhythm (docs/design.md#live): onsets, a running tempo and beats from the onset-strength
+// envelope as its frames come, with the offline definitions of docs/design.md#rhythm made
+// causal — librosa's peak picking (onset_detect's windows, the envelope normalised by its
+// largest value so far instead of the song's), librosa's tempo (the autocorrelation tempogram
+// averaged over the frames so far, the same log-normal prior around 120 BPM) and beats
+// predicted on that tempo's grid at the phase where the envelope's comb peaks.
+import { RATE } from "./live-analysis";
+
+// librosa.onset.onset_detect's peak-picking windows at 100 frames/s (frames).
+const PRE_MAX = Math.floor(0.03 * RATE);
+const POST_MAX = Math.floor(0.0 * RATE) + 1;
+const PRE_AVG = Math.floor(0.1 * RATE);
+const POST_AVG = Math.floor(0.1 * RATE) + 1;
+const WAIT = Math.floor(0.03 * RATE);
+const DELTA = 0.07;
+/** librosa.feature.tempogram's window (frames) and feature.tempo's prior and ceiling. */
+const WIN = 384;
+const START_BPM = 120;
+const MAX_BPM = 320;
+/** The tempo is re-estimated every this many frames; the tempogram takes every STRIDE-th. */
+const TEMPO_EVERY = 25;
+const STRIDE = 2;
+/** The beat grid's phase is fitted on the envelope's last COMB_SECONDS. */
+const COMB_SECONDS = 6;
+/** Frames kept (the envelope's tail for the tempogram and the comb). */
+const KEEP = 1024;
+
+export class LiveRhythm {
+  /** onset and beat times, s (the stream's clock: frame j at j/RATE) */
+  readonly onsets: number[] = [];
+  readonly beats: number[] = [];
+  /** beats per minute, 0 until estimated */
+  tempo = 0;
+  /** the envelope's last KEEP frames (a ring), and the number of frames seen */
+  private readonly envelope = new Float64Array(KEEP);
+  private count = 0;
+  private largest = 0;
+  private lastOnset = -Infinity;
+  private readonly gram = new Float64Array(WIN);
+  private gramFrames = 0;
+  private readonly window = Float64Array.from({ length: WIN },
+    (_, n) => 0.5 - 0.5 * Math.cos((2 * Math.PI * n) / WIN));
+
+  /** e_j of frame j (in order). Returns whether an onset or a beat was added. */
+  push(onset: number): boolean {
+    const j = this.count++;
+    this.envelope[j % KEEP] = onset;
+    this.largest = Math.max(this.largest, onset);
+    let changed = this.pickPeak(j - POST_AVG + 1);
+    if (j >= WIN / 2 && j % STRIDE === 0) this.addToTempogram(j - WIN / 2);
+    if (j % TEMPO_EVERY === 0 && this.gramFrames) this.tempo = this.estimateTempo();
+    if (this.tempo > 0) changed = this.predictBeat(j) || changed;
+    return changed;
+  }
+
+  private at(j: number): number {
+    return j < 0 || j >= this.count || j <= this.count - KEEP ? 0 : this.envelope[j % KEEP];
+  }
+
+  /** librosa.util.peak_pick at frame n (its windows complete now), on e / max(e so far). */
+  private pickPeak(n: number): boolean {
+    if (n < 0 || !(this.largest > 0)) return false;
+    const x = (j: number) => this.at(j) / this.largest;
+    const value = x(n);
+    for (let j = Math.max(0, n - PRE_MAX); j < n + POST_MAX; j++) if (x(j) > value) return false;
+    let sum = 0, count = 0;
+    for (let j = Math.max(0, n - PRE_AVG); j < Math.min(this.count, n + POST_AVG); j++) {
+      sum += x(j); count++;
+    }
+    if (value < sum / count + DELTA || n - this.lastOnset <= WAIT) return false;
+    this.lastOnset = n;
+    this.onsets.push(n / RATE);
+    return true;
+  }
+
+  /** One column of librosa's autocorrelation tempogram (Hann window of WIN frames centred on
+   * frame c, normalised by its lag-0 value), added to the running sum. */
+  private addToTempogram(c: number): void {
+    const w = new Float64Array(WIN);
+    for (let n = 0; n < WIN; n++) w[n] = this.at(c - WIN / 2 + n) * this.window[n];
+    const column = new Float64Array(WIN);
+    for (let lag = 0; lag < WIN; lag++) {
+      let s = 0;
+      for (let n = lag; n < WIN; n++) s += w[n] * w[n - lag];
+      column[lag] = s;
+    }
+    let peak = 0;
+    for (const v of column) peak = Math.max(peak, Math.abs(v));
+    if (!(peak > 0)) return;
+    for (let lag = 0; lag < WIN; lag++) this.gram[lag] += column[lag] / peak;
+    this.gramFrames++;
+  }
+
+  /** librosa.feature.tempo of the mean tempogram: argmax over lags of log1p(10⁶·tg) + the
+   * log-normal prior (one octave around 120 BPM), tempi ≥ 320 BPM excluded. */
+  private estimateTempo(): number {
+    let best = -Infinity, bestBpm = 0;
+    for (let lag = 1; lag < WIN; lag++) {
+      const bpm = (60 * RATE) / lag;
+      if (bpm >= MAX_BPM) continue;
+      const prior = -0.5 * (Math.log2(bpm) - Math.log2(START_BPM)) ** 2;
+      const score = Math.log1p(1e6 * (this.gram[lag] / this.gramFrames)) + prior;
+      if (score > best) { best = score; bestBpm = bpm; }
+    }
+    return bestBpm;
+  }
+
+  /** The next beat of the grid (period 60/tempo) whose phase makes the envelope's comb over the
+   * last COMB_SECONDS largest, added when it is at most one frame ahead of frame j and at least
+   * 0.6 periods after the last beat: beats come as the music does. */
+  private predictBeat(j: number): boolean {
+    const period = (60 * RATE) / this.tempo; // frames
+    const last = this.beats.length ? this.beats[this.beats.length - 1] * RATE : -Infinity;
+    if (j - last < 0.6 * period) return false;
+    const span = Math.min(COMB_SECONDS * RATE, j);
+    let bestPhase = 0, best = -1;
+    for (let phase = 0; phase < period; phase += 1) {
+      let score = 0;
+      for (let g = j - phase; g > j - span; g -= period) {
+        const r = Math.round(g);
+        score += Math.max(this.at(r), this.at(r - 1), this.at(r + 1));
+      }
+      if (score > best) { best = score; bestPhase = phase; }
+    }
+    if (!(best > 0)) return false;
+    const next = j - bestPhase + period; // the grid's next point after frame j
+    const due = bestPhase <= 1 ? j - bestPhase : next;
+    if (due > j + 1 || due - last < 0.6 * period) return false;
+    this.beats.push(Math.max(due, j - 1) / RATE);
+    return true;
+  }
+}
