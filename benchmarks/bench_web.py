@@ -1,8 +1,11 @@
 """Web player benchmark: where a frame of the gallery goes in headless Chromium without a GPU.
 
-For each case — the demo (built-in cat, k = 150, the demo music) and the Stanford bunny (shared
-data, k = 300, the demo music) — serves it with `eigendance serve`, opens the gallery with S
-tiles in headless Chromium (SwiftShader WebGL2) and measures, per frame:
+For each case — the demo (built-in cat, k = 150, the demo music), the Stanford bunny (shared
+data, k = 300, the demo music) and, with a reduced basis (docs/design.md#reduced-basis), scans
+of 0.2, 0.5 and 1 M vertices at k = 300 (benchmarks/big_meshes.py) — serves it with `eigendance
+serve`, opens the gallery with S tiles in headless Chromium (SwiftShader WebGL2) and measures
+the load (the page opened until its gallery is ready, with the basis bundle's size) and, per
+frame:
   - deformation: the positions of every tile (GPU positions pass, or the JS CPU path), waited
     for on the GPU;
   - drawing: the surfaces of every tile (studio backdrop, shadow, model), waited for;
@@ -16,8 +19,8 @@ tiles in headless Chromium (SwiftShader WebGL2) and measures, per frame:
 beside the numpy reference for the same deformation (`HarmonicBasis.filter_positions` of S
 filters, one matrix product), measured in the same run. Not run by CI.
 
-    python benchmarks/bench_web.py [--case demo|bunny|all] [-S 8] [--frames 5] [--seconds 4]
-                                   [--settle 14]
+    python benchmarks/bench_web.py [--case demo|bunny|0.2M|0.5M|1M|all] [-S 8] [--frames 5]
+                                   [--seconds 4] [--settle 14]
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ import urllib.request
 import numpy as np
 from playwright.sync_api import sync_playwright
 
+from big_meshes import detailed_obj
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.mapping import Mapping, filters
 from eigendance.music.spectrogram import Spectrogram
@@ -42,7 +46,11 @@ from shared_data import shared_path
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--no-first-run",
                  "--autoplay-policy=no-user-gesture-required"]
-CASES = {"demo": (None, 150), "bunny": (shared_path("meshes", "bunny_stanford.obj"), 300)}
+# name: (mesh file, or a benchmarks/big_meshes.py name; k; construction)
+CASES = {"demo": (None, 150, "exact"),
+         "bunny": (shared_path("meshes", "bunny_stanford.obj"), 300, "exact"),
+         "0.2M": ("armadillo-173k", 300, "reduced"), "0.5M": ("cat-508k", 300, "reduced"),
+         "1M": ("fertility-1.15M", 300, "reduced")}
 
 
 def main() -> None:
@@ -59,18 +67,21 @@ def main() -> None:
     print(f"S = {args.size} tiles, headless Chromium without a GPU, viewport 1280x800; load "
           f"{', '.join(f'{x:.1f}' for x in os.getloadavg())}")
     for name in (CASES if args.case == "all" else [args.case]):
-        mesh, k = CASES[name]
-        run_case(name, mesh or cat, k, song, args)
+        mesh, k, construction = CASES[name]
+        if mesh is not None and not os.path.exists(mesh):
+            mesh = detailed_obj(mesh)
+        run_case(name, mesh or cat, k, construction, song, args)
 
 
-def run_case(name: str, mesh: str, k: int, song: str, args) -> None:
+def run_case(name: str, mesh: str, k: int, construction: str, song: str, args) -> None:
     start = time.perf_counter()
-    basis = HarmonicBasis.from_mesh(mesh, k)  # cached after the first run
+    basis = HarmonicBasis.from_mesh(mesh, k, construction=construction)  # cached after a run
     solved = time.perf_counter() - start
     spectrogram = Spectrogram.from_file(song)
     server = subprocess.Popen(
         [sys.executable, "-m", "eigendance.cli", "serve", mesh, song, "-k", str(k),
-         "--port", str(args.port)], stdout=subprocess.PIPE, text=True)
+         "--port", str(args.port), f"--{construction}", "--max-memory-mb", "16384"],
+        stdout=subprocess.PIPE, text=True)
     try:
         url = server.stdout.readline().split()[-1]
         while True:  # the server's own basis job hits the same cache
@@ -78,6 +89,8 @@ def run_case(name: str, mesh: str, k: int, song: str, args) -> None:
             if library["meshes"][0]["ready"]:
                 break
             time.sleep(0.5)
+        mesh_id = library["meshes"][0]["id"]
+        bundle = len(urllib.request.urlopen(url + f"api/meshes/{mesh_id}/basis.bin").read())
         results = browser_timings(url, args)
     finally:
         server.terminate()
@@ -94,8 +107,12 @@ def run_case(name: str, mesh: str, k: int, song: str, args) -> None:
 
     chosen = results["path"]
     interval = 1000 / results["fps"] if results["fps"] > 0 else float("nan")
-    print(f"\n{name}: {os.path.basename(mesh)}, n = {basis.n}, k = {basis.k} (basis "
-          f"{solved:.1f} s, cached after the first run); {results['renderer']}")
+    how = "exact" if basis.reduced is None else f"reduced, {basis.reduced.count} samples"
+    print(f"\n{name}: {os.path.basename(mesh)}, n = {basis.n}, k = {basis.k} ({how}; basis "
+          f"{solved:.1f} s, cached after the first run); {results['renderer']}; load "
+          f"{os.getloadavg()[0]:.1f}")
+    print(f"  load: basis bundle {bundle / 1e6:.1f} MB, page opened → gallery ready "
+          f"{results['load']:.1f} s")
     print(f"  numpy reference, S filters, one product    {numpy_ms:8.1f} ms/frame")
     for path in ("gpu", "cpu"):
         mark = "  ← the page's choice" if path == chosen else ""
@@ -117,10 +134,12 @@ def browser_timings(url: str, args) -> dict:
         browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
                                              args=CHROMIUM_ARGS)
         page = browser.new_page(viewport={"width": 1280, "height": 800})
+        start = time.perf_counter()
         page.goto(f"{url}?test&size={args.size}&scale=1")
         page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=600_000)
         page.evaluate("window.eigendance.ready")
-        out = {"path": page.evaluate("window.eigendance.info().path"),
+        out = {"load": time.perf_counter() - start,
+               "path": page.evaluate("window.eigendance.info().path"),
                "mappings": page.evaluate("window.eigendance.mappings()"),
                "renderer": page.evaluate("""() => {
                    const gl = document.createElement('canvas').getContext('webgl2');

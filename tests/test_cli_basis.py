@@ -100,3 +100,34 @@ def test_help(argv, capsys):
     with pytest.raises(SystemExit) as exit_info:
         main(argv)
     assert exit_info.value.code == 0 and "usage" in capsys.readouterr().out
+
+
+def test_reduced_and_exact_are_chosen_and_said(tmp_path, capsys, monkeypatch):
+    """`basis --reduced/--exact/--samples` and the rule (docs/design.md#reduced-basis): the line
+    says which construction was used, the file holds it, and a reduced basis's eigenvalues lie
+    above the exact solver's (Rayleigh–Ritz) — the exact ones being independent of the reduction."""
+    knight = fixture_path("meshes", "decimated-knight.off")
+    paths = {name: tmp_path / f"{name}.npz" for name in ("exact", "reduced", "auto", "large")}
+    assert main(["basis", knight, "-k", "12", "--exact", "--no-cache",
+                 "-o", str(paths["exact"])]) == 0
+    assert "(exact)" in capsys.readouterr().out
+    assert main(["basis", knight, "-k", "12", "--reduced", "--samples", "150", "--no-cache",
+                 "-o", str(paths["reduced"])]) == 0
+    reduced = HarmonicBasis.load(paths["reduced"])
+    assert reduced.reduced is not None and 140 <= reduced.reduced.count <= 160
+    assert f"(reduced, {reduced.reduced.count} samples)" in capsys.readouterr().out
+    exact = HarmonicBasis.load(paths["exact"])
+    assert exact.reduced is None
+    assert np.all(reduced.eigenvalues[1:] >= exact.eigenvalues[1:] * (1 - 1e-9))
+    assert main(["basis", knight, "-k", "12", "-o", str(paths["auto"])]) == 0
+    assert "(exact)" in capsys.readouterr().out  # 502 vertices: the exact solve fits
+    monkeypatch.setattr("eigendance.harmonic.basis.EXACT_VALUES", 100)  # as if the mesh were huge
+    assert main(["basis", knight, "-k", "12", "--samples", "150", "--no-cache",
+                 "-o", str(paths["large"])]) == 0
+    assert "(reduced, " in capsys.readouterr().out
+    with pytest.raises(SystemExit) as exit_info:
+        main(["basis", knight, "--reduced", "--exact", "-o", str(tmp_path / "both.npz")])
+    assert exit_info.value.code == 1 and "not allowed with" in capsys.readouterr().err
+    assert main(["basis", knight, "--exact", "--samples", "150",
+                 "-o", str(tmp_path / "both.npz")]) == 1
+    assert "--samples" in capsys.readouterr().err and not (tmp_path / "both.npz").exists()

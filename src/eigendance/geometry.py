@@ -126,8 +126,7 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     [0, 1, 0]
     """
     vertices = np.asarray(vertices, dtype=np.float64)
-    _, first, inverse = np.unique(vertices, axis=0, return_index=True, return_inverse=True)
-    inverse = inverse.reshape(-1)
+    first, inverse = unique_rows(vertices)
     if tolerance > 0 and len(first) > 1:  # exact copies first, then pairs within the distance
         unique = vertices[first]
         pairs = cKDTree(unique).query_pairs(tolerance * (bounding_box_diagonal(vertices) or 1.0),
@@ -144,6 +143,38 @@ def weld(vertices: np.ndarray, tolerance: float = 0.0) -> tuple[np.ndarray, np.n
     rank = np.empty_like(order)
     rank[order] = np.arange(len(order))
     return first[order].astype(np.int64), rank[inverse].astype(np.int64)
+
+
+def unique_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct rows of a 2-D array, as np.unique(rows, axis=0, return_index=True,
+    return_inverse=True) finds them (rows in lexicographic order), several times faster on
+    millions of rows: one lexsort of the columns instead of a sort of row records.
+
+    Parameters
+    ----------
+    rows : (r, c) array.
+
+    Returns
+    -------
+    first : (u,) int64, the index of each distinct row's first occurrence.
+    inverse : (r,) int64, the distinct row of each row: rows == rows[first][inverse].
+
+    Example
+    -------
+    >>> first, inverse = unique_rows(np.array([[2, 1], [0, 5], [2, 1]]))
+    >>> first.tolist(), inverse.tolist()
+    ([1, 0], [1, 0, 1])
+    """
+    rows = np.asarray(rows)
+    if len(rows) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    order = np.lexsort(rows.T[::-1])  # stable: equal rows keep their input order
+    ordered = rows[order]
+    starts = np.ones(len(rows), dtype=bool)
+    starts[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+    inverse = np.empty(len(rows), dtype=np.int64)
+    inverse[order] = np.cumsum(starts) - 1
+    return order[starts].astype(np.int64), inverse
 
 
 def bounding_box_diagonal(vertices: np.ndarray) -> float:
@@ -173,8 +204,10 @@ def face_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     -------
     (m, 3) float64.
     """
-    corners = np.asarray(vertices, dtype=np.float64)[np.asarray(faces, dtype=np.int64)]
-    return cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64)
+    first = vertices[faces[:, 0]]  # three gathers: faster than one (m, 3, 3) gather at 2 M faces
+    return cross(vertices[faces[:, 1]] - first, vertices[faces[:, 2]] - first)
 
 
 def vertex_normals(vertices: np.ndarray, faces: np.ndarray, default=None) -> np.ndarray:

@@ -28,6 +28,17 @@ def basis():
 
 
 @pytest.fixture(scope="session")
+def reduced_harmonic(song):
+    """The bumpy sphere by a reduced basis (docs/design.md#reduced-basis): a skin on its
+    samples in a glb."""
+    mesh = bumpy_sphere(3)
+    moved = Mesh.from_arrays(mesh.original_vertices * 2.5 + [3.0, -1.0, 0.5], mesh.faces)
+    basis = HarmonicBasis.from_mesh(moved, 24, cache=False, construction="reduced", samples=160)
+    mapping = initial_gallery(basis, song, 4)[2]
+    return HarmonicDance(basis, song, mapping, audio=SONG, name="reduced")
+
+
+@pytest.fixture(scope="session")
 def mappings(basis, song):
     return initial_gallery(basis, song, 4)
 

@@ -51,6 +51,7 @@ def from_blender(points: np.ndarray, kind: str) -> np.ndarray:
 
 
 CASES = [("harmonic", "glb"), ("harmonic", "pc2"), ("harmonic", "usd"),
+         ("reduced_harmonic", "glb"),
          ("chain_lbs", "glb"), ("fox_lbs", "glb"), ("chain_lbs", "usd"), ("figure_modal", "pc2"),
          ("cake", "glb"), ("cake", "pc2"), ("cake", "usd"),
          ("gun_lbs", "glb"), ("gun_lbs", "usd"), ("gun_modal", "pc2")]

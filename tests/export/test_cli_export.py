@@ -124,3 +124,20 @@ def test_help_names_the_formats(capsys):
     with pytest.raises(SystemExit):
         main(["export", "--help"])
     assert "glb" in capsys.readouterr().out
+
+
+def test_a_very_large_output_says_its_size_and_needs_force(files, tmp_path, capsys,
+                                                           monkeypatch):
+    """A point cache (or animation file) beyond limits.LARGE_OUTPUT is announced with its size
+    and written only with --force (here the limit is lowered to 10 kB)."""
+    import eigendance.limits as limits
+
+    monkeypatch.setattr(limits, "LARGE_OUTPUT", 1e4)
+    for command, name in (("export", "dance.pc2"), ("animate", "dance.npz")):
+        status, _, err = run(capsys, command, files / "sphere.obj", SONG, "-k", 20, "--mapping",
+                             files / "mapping.json", "-o", tmp_path / name)
+        assert status == 1 and "a very large file; pass --force to write it anyway" in err, err
+        assert f"{name}: " in err and " kB" in err and not (tmp_path / name).exists()
+        status, _, err = run(capsys, command, files / "sphere.obj", SONG, "-k", 20, "--mapping",
+                             files / "mapping.json", "-o", tmp_path / name, "--force")
+        assert status == 0 and (tmp_path / name).exists(), err

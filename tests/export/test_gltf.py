@@ -170,3 +170,38 @@ def test_a_three_minute_song_on_a_fine_mesh_is_20_times_smaller_than_a_point_cac
     assert report["frames"] == 5401 and len(dance.driven()) <= 64
     assert report["point_cache_bytes"] == pc2_size(basis.n, 5401)
     assert report["point_cache_bytes"] >= 20 * report["bytes"], report
+
+
+def test_a_reduced_basis_is_a_skin_on_its_samples_that_replays_the_reference(
+        reduced_harmonic, tmp_path):
+    """Read by the glTF rules: joint matrix = (animated translation of the joint node) × its
+    inverse bind matrix, applied with JOINTS_0/1 and WEIGHTS_0/1 (8 influences)."""
+    dance = reduced_harmonic
+    export_dance(dance, tmp_path / "reduced.glb", fps=15)
+    gltf, read = load(tmp_path / "reduced.glb")
+    skin = gltf.skins[0]
+    samples = dance.basis.reduced.samples
+    assert len(skin.joints) == len(samples) == dance.basis.reduced.count
+    primitive = gltf.meshes[0].primitives[0]
+    rest = read(primitive.attributes.POSITION).astype(np.float64)
+    joints = np.hstack([read(primitive.attributes.JOINTS_0), read(primitive.attributes.JOINTS_1)])
+    weights = np.hstack([read(primitive.attributes.WEIGHTS_0),
+                         read(primitive.attributes.WEIGHTS_1)]).astype(np.float64)
+    assert np.array_equal(weights.sum(axis=1), np.ones(len(rest)))
+    inverse = read(skin.inverseBindMatrices).reshape(-1, 4, 4).transpose(0, 2, 1)
+    animation = gltf.animations[0]
+    times = read(animation.samplers[0].input)
+    translations = np.zeros((len(times), len(skin.joints), 3))
+    for channel in animation.channels:
+        assert channel.target.path == "translation"  # translation-only joints
+        joint = skin.joints.index(channel.target.node)
+        translations[:, joint] = read(animation.samplers[channel.sampler].output)
+    matrices = np.tile(np.eye(4), (len(times), len(skin.joints), 1, 1))
+    matrices[..., :3, 3] = translations
+    matrices = matrices @ inverse[None]  # the joint matrices
+    homogeneous = np.hstack([rest, np.ones((len(rest), 1))])
+    chosen = matrices[:, joints, :3]  # (T, n, 8, 3, 4): each vertex's joints
+    played = np.einsum("is,tisab,ib->tia", weights, chosen, homogeneous)
+    expected = dance.positions(times)
+    check_positions(played, expected, dance.diagonal, 1e-5)
+    assert np.abs(expected[len(times) // 2] - expected[0]).max() > 1e-3 * dance.diagonal

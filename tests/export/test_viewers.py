@@ -31,13 +31,15 @@ LONG_FPS = 5  # the 21 s song
 
 
 @pytest.fixture(scope="module")
-def glbs(tmp_path_factory, harmonic, chain_lbs, figure_modal, fox_lbs, cake, gun_lbs):
+def glbs(tmp_path_factory, harmonic, reduced_harmonic, chain_lbs, figure_modal, fox_lbs,
+         cake, gun_lbs):
     """Every kind of glb the exporter writes: morph targets, and skins of built-in and glTF
-    rigs (linear blend and modal skinning); with a look: the textured, multi-part cake whose
-    morph weights go below 0 and above 1 on a 21 s song, a rig with a gun on its hand."""
+    rigs (linear blend and modal skinning), a reduced basis's skin on its samples; with a
+    look: the textured, multi-part cake whose morph weights go below 0 and above 1 on a 21 s
+    song, a rig with a gun on its hand."""
     folder = tmp_path_factory.mktemp("glbs")
-    dances = {"sphere": harmonic, "chain": chain_lbs, "figure": figure_modal, "fox": fox_lbs,
-              "cake": cake, "gun": gun_lbs}
+    dances = {"sphere": harmonic, "reduced": reduced_harmonic, "chain": chain_lbs,
+              "figure": figure_modal, "fox": fox_lbs, "cake": cake, "gun": gun_lbs}
     for name, dance in dances.items():
         export_dance(dance, folder / f"{name}.glb", fps=fps_of(dance))
     return folder, dances
@@ -83,7 +85,7 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
 
 
 @pytest.mark.web
-@pytest.mark.parametrize("name", ["sphere", "chain", "figure", "fox", "cake", "gun"])
+@pytest.mark.parametrize("name", ["sphere", "reduced", "chain", "figure", "fox", "cake", "gun"])
 def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromium, name):
     """At three sample times (first, middle, last but one: the mixer loops at the end)."""
     _, dances = glbs
@@ -104,6 +106,9 @@ def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromiu
     if name in ("sphere", "cake"):
         expected = dance.positions(times)
         assert result["targets"] == len(dance.driven())
+    elif name == "reduced":  # three.js's joint matrices, both sets of four influences
+        expected = dance.positions(times)
+        assert result["skinned"] and result["influences"] == 8
     else:
         expected = dance.blend_positions(np.array(times))  # what a glTF skin plays
         assert result["skinned"]

@@ -3,7 +3,8 @@
 
 export interface Bundle {
   meta: Record<string, any>;
-  arrays: Record<string, { data: Float32Array | Uint32Array | Uint8Array; shape: number[] }>;
+  arrays: Record<string, { data: Float32Array | Uint32Array | Uint16Array | Uint8Array;
+    shape: number[] }>;
 }
 
 let halfTable: Float32Array | null = null;
@@ -34,7 +35,8 @@ export function parseBundle(buffer: ArrayBuffer): Bundle {
   for (const [name, entry] of Object.entries<any>(header.arrays)) {
     const count = entry.shape.reduce((a: number, b: number) => a * b, 1);
     const offset = start + entry.offset;
-    const size = entry.dtype === "float16" ? 2 : entry.dtype === "uint8" ? 1 : 4;
+    const size = entry.dtype === "float16" || entry.dtype === "uint16" ? 2
+      : entry.dtype === "uint8" ? 1 : 4;
     if (offset + size * count > buffer.byteLength) {
       throw new Error(`bundle array ${name} truncated`);
     }
@@ -46,8 +48,8 @@ export function parseBundle(buffer: ArrayBuffer): Bundle {
       arrays[name] = { data, shape: entry.shape };
       continue;
     }
-    const Type = entry.dtype === "uint32" ? Uint32Array : entry.dtype === "uint8" ? Uint8Array
-      : Float32Array;
+    const Type = entry.dtype === "uint32" ? Uint32Array : entry.dtype === "uint16" ? Uint16Array
+      : entry.dtype === "uint8" ? Uint8Array : Float32Array;
     arrays[name] = { data: new Type(buffer, offset, count), shape: entry.shape };
   }
   return { meta: header.meta, arrays };
@@ -63,19 +65,39 @@ export interface Basis {
   faces: Uint32Array; // m*3
   eigenvalues: Float32Array; // k
   coefficients: Float32Array; // k*3
-  harmonics: Float32Array; // n * 4*k4, four harmonics per texel
+  /** four harmonics per texel: n * 4*k4 of the vertices, or (reduced) m * 4*k4 of the samples */
+  harmonics: Float32Array;
+  /** a reduced basis (docs/design.md#reduced-basis): U = P U_r, `harmonics` holding U_r */
+  reduced?: Interpolation;
+}
+
+/** P of a reduced basis: vertex i = Σ_j weights[8i + j] · sample indices[8i + j]. */
+export interface Interpolation {
+  /** samples m: the rows of `harmonics` */
+  m: number;
+  /** n*8, ≥ 0, each vertex's summing to 1 (multiples of 2⁻¹¹: exact in float16) */
+  weights: Float32Array;
+  indices: Uint16Array | Uint32Array; // n*8 sample rows
+}
+
+/** Rows of a basis's harmonics texture: the vertices, or the samples of a reduced basis. */
+export function harmonicRows(basis: Basis): number {
+  return basis.reduced ? basis.reduced.m : basis.n;
 }
 
 export function basisFromBundle(bundle: Bundle): Basis {
   const a = bundle.arrays;
   const n = a.vertices.shape[0];
   const k = a.eigenvalues.shape[0];
+  const harmonics = a.harmonics ?? a.coarse; // a reduced basis sends U_r as `coarse`
   return {
-    name: bundle.meta.name ?? "mesh", n, k, k4: a.harmonics.shape[1] / 4,
+    name: bundle.meta.name ?? "mesh", n, k, k4: harmonics.shape[1] / 4,
     vertices: a.vertices.data as Float32Array, faces: a.faces.data as Uint32Array,
     eigenvalues: a.eigenvalues.data as Float32Array,
     coefficients: a.coefficients.data as Float32Array,
-    harmonics: a.harmonics.data as Float32Array,
+    harmonics: harmonics.data as Float32Array,
+    reduced: a.coarse ? { m: a.coarse.shape[0], weights: a.weights.data as Float32Array,
+      indices: a.indices.data as Uint16Array | Uint32Array } : undefined,
   };
 }
 

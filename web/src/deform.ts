@@ -1,15 +1,19 @@
 // GPU deformation (docs/design.md#rendering): U packed four harmonics per RGBA32F texel in a float texture,
 // per tile only the k filter values change, uploaded as a uniform array of weights
 // (φ − 1) ⊙ X̃ (see filter.ts shaderWeights). A CPU path gives the same numbers.
-// The GLSL is in shaders.ts, the batched positions pass in positions-pass.ts. A model with
-// materials is drawn by its DrawnLook (look.ts) from the same positions.
+// The GLSL is in shaders.ts, the batched positions pass in positions-pass.ts. A reduced basis
+// (reduced.ts) runs the positions pass over its samples and gathers in the surface pass (the
+// REDUCED define of the shared surface shader). A model with materials is drawn by its
+// DrawnLook (look.ts) from the same positions.
 import * as THREE from "three";
+import { harmonicRows } from "./bundle";
 import type { Basis } from "./bundle";
 import { simplifiedFaces } from "./detail";
 import { DrawnLook } from "./look";
 import type { Appearance } from "./look";
 import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
 import type { HarmonicsSource } from "./positions-pass";
+import { GatherPass, gatherAttributes, reducedHarmonic, sampleGeometry } from "./reduced";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX, TEXELS } from "./shaders";
 
 /** The models' colour (sRGB): one studio clay for every tile and the player, so tiles differ
@@ -54,6 +58,9 @@ export class Deformer implements HarmonicsSource {
   readonly batch: number;
   private single: PositionsPass | null = null;
   private batched: PositionsPass | null = null;
+  /** a reduced basis: what the positions pass runs over (the samples), and the read-back gather */
+  private readonly samples: HarmonicsSource | null = null;
+  private gather: GatherPass | null = null;
   /** the triangles of each detail level drawn so far (detail.ts); 1 is the mesh's own */
   private readonly detailIndex = new Map<number, THREE.BufferAttribute>();
   useCPU = false;
@@ -61,7 +68,7 @@ export class Deformer implements HarmonicsSource {
   constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer, maxBatch = 8) {
     const gl = renderer.getContext();
     const maxSize = gl.getParameter(gl.MAX_TEXTURE_SIZE) as number;
-    const texels = basis.n * basis.k4;
+    const texels = harmonicRows(basis) * basis.k4;
     const width = Math.min(maxSize, 4096, texels);
     const height = Math.ceil(texels / width);
     this.textureWidth = width;
@@ -84,8 +91,16 @@ export class Deformer implements HarmonicsSource {
     const displaced = new THREE.BufferAttribute(new Float32Array(basis.vertices), 3);
     displaced.setUsage(THREE.DynamicDrawUsage);
     this.geometry.setAttribute("displaced", displaced);
+    if (basis.reduced) {
+      for (const [name, attribute] of Object.entries(gatherAttributes(basis.reduced))) {
+        this.geometry.setAttribute(name, attribute);
+      }
+      this.samples = { basis: { ...basis, n: basis.reduced.m }, renderer, texture: this.texture,
+        textureWidth: width, geometry: sampleGeometry(basis.reduced.m) };
+    }
 
-    const defines = { K4: basis.k4, HARMONICS: 1 };
+    const defines: Record<string, number> = basis.reduced
+      ? { K4: basis.k4, HARMONICS: 1, REDUCED: 1 } : { K4: basis.k4, HARMONICS: 1 };
     const uniforms = () => ({
       harmonics: { value: this.texture }, texWidth: { value: width },
       colorHarmonic: { value: -1 }, colorScale: { value: 1 },
@@ -100,7 +115,8 @@ export class Deformer implements HarmonicsSource {
     this.gpuMaterial = make({});
     this.cpuMaterial = make({ CPU_PATH: 1 });
     this.gpuMaterial.uniforms.deformed = { value: null };
-    this.gpuMaterial.uniforms.deformedWidth = { value: Math.min(basis.n, TARGET_WIDTH) };
+    this.gpuMaterial.uniforms.deformedWidth = { value: Math.min(harmonicRows(basis),
+      TARGET_WIDTH) };
     const vectors = gl.getParameter(gl.MAX_VERTEX_UNIFORM_VECTORS) as number;
     const buffers = gl.getParameter((gl as WebGL2RenderingContext).MAX_DRAW_BUFFERS) as number;
     // Up to 1024 uniform vectors of weights per pass: larger uniform arrays made SwiftShader
@@ -175,13 +191,15 @@ export class Deformer implements HarmonicsSource {
   }
 
   /** GPU pass 1: deformed positions of every tile into float render targets, `batch` tiles per
-   * pass (one harmonic fetch serves them all); returns one positions texture per tile. */
+   * pass (one harmonic fetch serves them all); returns one positions texture per tile. A
+   * reduced basis: the displacements of its samples (the surface pass gathers them). */
   computePositions(weights: Float32Array[]): THREE.Texture[] {
+    const source = this.samples ?? this;
     if (weights.length === 1) {
-      this.single ??= new PositionsPass(this, 1);
+      this.single ??= new PositionsPass(source, 1);
       return this.single.run(weights);
     }
-    this.batched ??= new PositionsPass(this, this.batch);
+    this.batched ??= new PositionsPass(source, this.batch);
     const textures: THREE.Texture[] = [];
     for (let start = 0, index = 0; start < weights.length; start += this.batch, index++) {
       textures.push(...this.batched.run(weights.slice(start, start + this.batch), index));
@@ -192,7 +210,8 @@ export class Deformer implements HarmonicsSource {
   /** Positions (n*3, normalised) computed by the GPU shader and read back from the float target.
    * With several weights, tile `tile` of a batched pass over all of them is read. */
   readPositions(weights: Float32Array[], tile = 0): Float32Array {
-    this.computePositions(weights);
+    const textures = this.computePositions(weights);
+    if (this.samples) return this.gathered(textures[tile]);
     if (weights.length === 1) return this.single!.read(0);
     return this.batched!.read(tile % this.batch, Math.floor(tile / this.batch));
   }
@@ -200,16 +219,28 @@ export class Deformer implements HarmonicsSource {
   /** Positions of every model of `weights` from one batched computation, as drawn. */
   readAll(weights: Float32Array[]): Float32Array[] {
     if (weights.length === 1) return [this.readPositions(weights)];
-    this.computePositions(weights);
+    const textures = this.computePositions(weights);
+    if (this.samples) return textures.map((texture) => this.gathered(texture));
     return weights.map((_, tile) => this.batched!.read(tile % this.batch,
       Math.floor(tile / this.batch)));
+  }
+
+  /** A reduced basis: the surface pass's gather of one tile, read back (n*3). */
+  private gathered(displacements: THREE.Texture): Float32Array {
+    this.gather ??= new GatherPass(this.geometry, this.basis.n, TARGET_WIDTH,
+      Math.min(harmonicRows(this.basis), TARGET_WIDTH), this.texture, this.textureWidth,
+      this.basis.k4);
+    return this.gather.read(this.renderer, displacements);
   }
 
   /** Largest |U[:, ν]| for the harmonics explorer's colour scale. */
   harmonicScale(index: number): number {
     const { n, k4, harmonics } = this.basis;
+    const values = this.basis.reduced ? reducedHarmonic(this.basis, index) : null;
     let largest = 0;
-    for (let i = 0; i < n; i++) largest = Math.max(largest, Math.abs(harmonics[i * 4 * k4 + index]));
+    for (let i = 0; i < n; i++) {
+      largest = Math.max(largest, Math.abs(values ? values[i] : harmonics[i * 4 * k4 + index]));
+    }
     return largest > 0 ? 1 / largest : 1;
   }
 
@@ -221,5 +252,7 @@ export class Deformer implements HarmonicsSource {
     this.look?.dispose();
     this.single?.dispose();
     this.batched?.dispose();
+    this.samples?.geometry.dispose();
+    this.gather?.dispose();
   }
 }

@@ -1,6 +1,7 @@
 // The filter of docs/design.md#mapping, evaluated per frame in the browser; the same numbers as the Python
 // reference (eigendance.music.mapping / eigendance.harmonic.motion).
 import type { Basis, Spectrum } from "./bundle";
+import { deformReducedCPU } from "./reduced";
 
 export type Shading = "smooth" | "flat" | "wireframe";
 
@@ -362,6 +363,7 @@ function harmonicColumn(basis: Basis, v: number): Float32Array {
  * vertex for a few vertices. */
 export function deformCPU(basis: Basis, weights: Float32Array, out?: Float32Array,
                           vertices?: Int32Array): Float32Array {
+  if (basis.reduced) return deformReducedCPU(basis, weights, out, vertices);
   const count = vertices ? vertices.length : basis.n;
   const positions = out ?? new Float32Array(count * 3);
   const U = basis.harmonics, W = 4 * basis.k4, X = basis.vertices;

@@ -9,6 +9,7 @@ import type { Basis } from "./bundle";
 import { parseBundle } from "./bundle";
 import { DETAIL_ERROR, simplifierReady } from "./detail";
 import { MeshoptSimplifier } from "meshoptimizer";
+import { gatherAttributes } from "./reduced";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX } from "./shaders";
 
 /** How the shared surface shader draws one material (`material_shading`). */
@@ -82,6 +83,8 @@ export class DrawnLook {
   private readonly shared: Record<string, THREE.IUniform>;
   /** each detail level's triangles (all parts, one after the other) and each part's count */
   private readonly detail = new Map<number, { index: THREE.BufferAttribute; counts: number[] }>();
+  /** REDUCED for a reduced basis: each drawn vertex gathers its welded vertex's samples */
+  private readonly reduced: Record<string, number>;
 
   constructor(readonly appearance: Appearance, basis: Basis, deformedWidth: number) {
     this.geometry = this.drawnGeometry(basis.vertices);
@@ -91,10 +94,16 @@ export class DrawnLook {
       new Float32Array(this.geometry.getAttribute("position").array), 3);
     displaced.setUsage(THREE.DynamicDrawUsage);
     this.geometry.setAttribute("displaced", displaced);
+    this.reduced = basis.reduced ? { REDUCED: 1 } : {};
+    if (basis.reduced) {
+      for (const [name, attribute] of Object.entries(gatherAttributes(basis.reduced,
+        appearance.welded))) this.geometry.setAttribute(name, attribute);
+    }
     this.useDetail(1);
     this.shared = { deformed: { value: null }, deformedWidth: { value: deformedWidth },
       deformedNormalWeight: { value: 0.4 }, wire: { value: false } };
-    this.gpuMaterials = appearance.parts.map((part) => this.material(part.material, {}));
+    this.gpuMaterials = appearance.parts.map((part) => this.material(part.material,
+      this.reduced));
     this.cpuMaterials = appearance.parts.map((part) => this.material(part.material,
       { CPU_PATH: 1 }));
     this.mesh = new THREE.Mesh(this.geometry, this.gpuMaterials);
@@ -142,7 +151,7 @@ export class DrawnLook {
   }
 
   /** Before drawing a tile: its positions (GPU: the positions pass's texture of the welded
-   * vertices; CPU: the welded positions n*3, gathered here) and the flat normal's weight. */
+   * vertices, or of a reduced basis's samples; CPU: the welded positions n*3, gathered here) and the flat normal's weight. */
   setTile(positions: THREE.Texture | null, cpu: Float32Array | null, normalWeight: number):
       void {
     this.mesh.material = cpu ? this.cpuMaterials : this.gpuMaterials;

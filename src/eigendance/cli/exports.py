@@ -27,6 +27,7 @@ from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
 from eigendance.export.files import companion_paths, export_dance, format_of
+from eigendance.export.gltf import glb_size
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.files import refuse_overwrite, suffix_of
@@ -198,6 +199,10 @@ def run_export(args) -> None:
         f" (as a point cache: {cache / 1e6:.2f} MB, {cache / size:.1f}× the size)"
     print(f"{args.output}: {report['frames']} frames of {dance.n} vertices at {args.fps:g} "
           f"fps, {size / 1e6:.2f} MB{compared}, {time.perf_counter() - began:.1f} s")
+    if format == "glb" and getattr(getattr(dance, "basis", None), "reduced", None) is not None:
+        morphs = glb_size(dance, report["frames"])["morph targets"]
+        print(f"{args.output}: a skin on the {dance.basis.reduced.count} samples of the reduced "
+              f"basis; as morph targets it would be about {morphs / 1e6:.2f} MB")
     if report["skinning_difference"] is not None:
         print(f"{args.output}: the skin plays linear blend skinning; modal skinning differs "
               f"by at most {report['skinning_difference']:.4g} "

@@ -11,6 +11,7 @@ import numpy as np
 from eigendance.cli.options import (
     FPS,
     HARMONICS,
+    add_construction,
     add_output,
     add_window_options,
     basis_from,
@@ -20,6 +21,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.errors import InputError
 from eigendance.files import refuse_overwrite
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
@@ -54,6 +56,9 @@ def add_basis(parser):
     parser.add_argument("--solver", choices=SOLVERS, default="bands",
                         help="bands (default, spectrum slicing) or eigsh (naive baseline)")
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
+    add_construction(parser)
+    parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
+                        help="samples of a reduced basis (default 24·k, at least 2000)")
     add_output(parser, "basis file to write (.npz)")
 
 
@@ -64,6 +69,9 @@ def run_basis(args) -> None:
     ----------
     args : the parsed command line.
     """
+    if args.construction == "exact" and args.samples is not None:
+        raise InputError("--samples sets the samples of a reduced basis; it has no meaning "
+                         "with --exact")
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
     mesh = load_mesh(args.mesh)
@@ -73,9 +81,12 @@ def run_basis(args) -> None:
     with bar:
         basis = HarmonicBasis.from_mesh(mesh, args.k, laplacian=args.laplacian,
                                         solver=args.solver, cache=not args.no_cache,
-                                        progress=update)
+                                        progress=update,
+                                        construction=args.construction or "auto",
+                                        samples=args.samples)
     basis.save(args.output)
-    print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics, "
+    how = "exact" if basis.reduced is None else f"reduced, {basis.reduced.count} samples"
+    print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics ({how}), "
           f"largest eigenvalue {basis.eigenvalues[-1]:.6g}, "
           f"{time.perf_counter() - start:.1f} s")
 
@@ -241,6 +252,6 @@ def run_animate(args) -> None:
     frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
-                                progress=update, window=window)
+                                progress=update, window=window, force=args.force)
     print(f"{args.output}: {count} frames of {basis.n} vertices at {args.fps:g} fps, "
           f"{time.perf_counter() - began:.1f} s")

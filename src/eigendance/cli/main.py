@@ -107,8 +107,9 @@ def hint(remedy: dict) -> str:
     str, '' for no remedy.
     """
     if remedy.get("force"):
-        return "; pass --force to overwrite it"
-    flags = [f"{FLAGS.get(name, '--' + name.replace('_', '-'))} {value}"
+        reason = remedy["force"] if isinstance(remedy["force"], str) else "overwrite it"
+        return f"; pass --force to {reason}"
+    flags = [FLAGS.get(name, "--" + name.replace("_", "-")) + ("" if value is True else f" {value}")
              for name, value in remedy.items()]
     return f"; try {' '.join(flags)}" if flags else ""
 

@@ -57,6 +57,22 @@ FPS = number(0, 1000, above=True)
 PORT = number(0, 65535, integer=True)
 
 
+def add_construction(parser) -> None:
+    """--reduced / --exact (docs/design.md#reduced-basis); args.construction None: the rule.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    construction = parser.add_mutually_exclusive_group()
+    construction.add_argument("--reduced", dest="construction", action="store_const",
+                              const="reduced", help="the reduced basis (samples and sparse "
+                              "interpolation: large meshes); default: exact when it fits the "
+                              "time and memory rule, else reduced")
+    construction.add_argument("--exact", dest="construction", action="store_const",
+                              const="exact", help="the exact basis, whatever the mesh's size")
+
+
 def add_output(parser, what: str) -> None:
     """-o/--output and --force, as every command that writes has them.
 

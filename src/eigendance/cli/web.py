@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from eigendance.cli.options import HARMONICS, PORT, number
+from eigendance.cli.options import HARMONICS, PORT, add_construction, number
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.serve import (
@@ -40,6 +40,7 @@ def add_server_options(parser, k: int, k_help: str) -> None:
     parser.add_argument("--max-memory-mb", type=number(16, 1 << 22, integer=True), default=4096,
                         help="memory the library's meshes, songs and rigs may keep, MiB; the "
                              "least recently used are removed beyond it (default 4096)")
+    add_construction(parser)
 
 
 def add_serve(parser):
@@ -102,7 +103,8 @@ def serve(args, paths, announce: str) -> None:
     if warning := exposure_warning(args.host):
         print(warning, file=sys.stderr)
     with library_session(k=args.k, max_upload_bytes=args.max_upload_mb << 20,
-                         memory_budget=args.max_memory_mb << 20) as library:
+                         memory_budget=args.max_memory_mb << 20,
+                         construction=args.construction or "auto") as library:
         terminal_progress(library)
         for path in paths():
             library.add_path(path)

@@ -7,7 +7,9 @@ file's coordinates:
 - `HarmonicDance`: X_φ(t) = X + Σ_ν (φ_ν(t) − 1)·U[:,ν]·X̃_ν (docs/design.md#harmonic-motion).
   Only the harmonics the mapping drives move (ν(ξ) for some band ξ, with a non-zero
   amplification: at most B = 64 of them), so the motion is exactly a set of morph targets
-  D_ν = U[:,ν]·X̃_ν·scale (n×3, original units) with weights φ_ν(t) − 1 (`morphs`).
+  D_ν = U[:,ν]·X̃_ν·scale (n×3, original units) with weights φ_ν(t) − 1 (`morphs`). With a
+  reduced basis (U = P U_r, docs/design.md#reduced-basis) it is exactly linear blend skinning
+  with translation-only joints at the samples: x_i(t) = rest_i + Σ_j w_ij D_j(t) (`sample_skin`).
 - `RigDance`: a `modal.rig.Rig` moving in its modes: bodies by world transforms T_b(t) (4×4,
   rest pose → posed), the skin by linear blend skinning x′ = Σ_b w_ib T_b(t)x (exactly what a
   glTF skin plays) or by modal skinning (docs/design.md#skinning), both asked of the rig.
@@ -97,6 +99,54 @@ class Morphs:
     harmonics: np.ndarray
     targets: np.ndarray
     weights: np.ndarray
+
+
+@dataclass
+class SampleSkin:
+    """A reduced harmonic dance as a skin: joint j sits at sample j's rest position c_j and
+    moves by translation only, D_j(t) = Σ_ν (φ_ν(t) − 1)·C_jν; vertex i moves by
+    Σ_j w_ij D_j(t) (docs/design.md#exports).
+
+    Parameters
+    ----------
+    joints : (m, 3) c_j, original units.
+    indices, weights : (n, 8) each vertex's samples and weights (≥ 0, summing to 1, largest
+        first).
+    coarse : (d, m, 3) C_jν for the d driven harmonics, original units.
+    amplitudes : (T, d) φ_ν(t_i) − 1.
+    """
+
+    joints: np.ndarray
+    indices: np.ndarray
+    weights: np.ndarray
+    coarse: np.ndarray
+    amplitudes: np.ndarray
+
+    def translations(self, joint: int) -> np.ndarray:
+        """Joint `joint`'s position c_j + D_j(t_i) at every sample time.
+
+        Parameters
+        ----------
+        joint : j.
+
+        Returns
+        -------
+        (T, 3) float32.
+        """
+        moved = self.amplitudes @ self.coarse[:, joint, :]
+        return (self.joints[joint] + moved).astype("<f4")
+
+    def positions(self) -> np.ndarray:
+        """What a viewer playing the skin shows (tests, short clips).
+
+        Returns
+        -------
+        (T, n, 3) float64.
+        """
+        moved = np.einsum("td,djc->tjc", self.amplitudes, self.coarse)  # (T, m, 3)
+        rest = np.einsum("ij,ijc->ic", self.weights, self.joints[self.indices])
+        offsets = np.einsum("ij,tijc->tic", self.weights, moved[:, self.indices])
+        return rest + offsets
 
 
 class Dance:
@@ -347,13 +397,37 @@ class HarmonicDance(Dance):
         """
         driven = self.driven()
         basis = self.basis
-        targets = (basis.eigenvectors[:, driven].T[:, :, None]
+        targets = (basis.harmonics(driven).T[:, :, None]
                    * basis.coefficients[driven][:, None, :] * basis.scale)
         weights = self.phi(times)[:, driven] - 1.0
         # What a player computes, Σ weights·targets, must stay a finite float32 too.
         largest = np.abs(weights).max(initial=0) * np.abs(targets).max(initial=0) * len(driven)
         check_motion(largest + np.abs(self.rest).max(initial=0), self.mapping.name)
         return Morphs(driven, targets, weights)
+
+    def sample_skin(self, times) -> SampleSkin:
+        """The motion of a reduced basis at `times` as a skin on its samples (exact).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        SampleSkin.
+        """
+        reduced = self.basis.reduced
+        if reduced is None:
+            raise ValueError("only a reduced basis moves as a skin on its samples")
+        driven = self.driven()
+        coarse = reduced.coarse[:, driven].T[:, :, None] * \
+            (self.basis.coefficients[driven] * self.basis.scale)[:, None, :]
+        order = np.argsort(-reduced.interpolation.weights, axis=1, kind="stable")
+        weights = np.take_along_axis(reduced.interpolation.weights, order, axis=1)
+        indices = np.where(weights > 0, np.take_along_axis(
+            reduced.interpolation.indices, order, axis=1), 0)
+        return SampleSkin(self.rest[reduced.samples], indices, weights, coarse,
+                          self.phi(times)[:, driven] - 1.0)
 
     def frames(self, times):
         times = self.start + np.asarray(times, dtype=np.float64)

@@ -20,7 +20,7 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance
-from eigendance.export.gltf import glb_bytes
+from eigendance.export.gltf import glb_size, write_glb
 from eigendance.export.look_files import mtl_text, texture_files, write_textures
 from eigendance.export.look_files import obj_text as obj_text_with_look
 from eigendance.export.output import Outputs
@@ -28,7 +28,7 @@ from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
-from eigendance.limits import check_disk
+from eigendance.limits import check_memory, check_output
 from eigendance.music.spectrogram import frame_times
 
 FORMATS = {"glb": (".glb",), "pc2": (".pc2",), "usd": (".usd", ".usdc", ".usda")}
@@ -136,13 +136,17 @@ def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = Non
             os.path.abspath(dance.audio) == os.path.abspath(paths["main"]):
         song_name = os.path.basename(dance.audio)
 
+    planned = planned_bytes(dance, format, len(times), paths)
+    what = f"{os.path.basename(paths['main'])}: {len(times)} frames of {dance.n} vertices"
+
     def step(done):
         if progress is not None:
             progress(done, len(times))
 
     outputs = Outputs(written, force, [*inputs, dance.audio])
-    check_disk(paths["main"], planned_bytes(dance, format, len(times), paths),
-               f"{os.path.basename(paths['main'])}: {len(times)} frames of {dance.n} vertices")
+    check_output(paths["main"], planned, what, force)  # the free disk, and --force beyond 4 GB
+    if format == "usd":  # usd-core keeps every time sample (12 bytes a vertex) in memory
+        check_memory(12.0 * dance.n * (len(times) + 1), f"{what} in USD")
     with outputs:
         main = outputs.temporary(paths["main"])
         difference = _write(format, dance, times, fps, main, song_name, step, textures)
@@ -165,12 +169,14 @@ USDA_BYTES = 36
 
 
 def planned_bytes(dance: Dance, format: str, frames: int, paths: dict) -> float:
-    """About how many bytes an export writes (checked against the free disk before it starts).
+    """About how many bytes an export writes, known before it is written (checked against the
+    free disk, and beyond 4 GB only with `--force`: `limits.check_output`).
 
     Point cache: exactly its size, plus the rest OBJ (about 40 bytes a vertex and 30 a
-    triangle). USD: 12 bytes a vertex and frame (.usdc, .usd) or `USDA_BYTES` (.usda). glb: the
-    morph targets (12 bytes a vertex and driven harmonic, 4 a frame and harmonic) or the skin's
-    animation (28 bytes a body and frame). Plus the song when it is written beside.
+    triangle). USD: 12 bytes a vertex and frame (.usdc, .usd) or `USDA_BYTES` (.usda), plus the
+    rest points and the faces. glb of a harmonic dance: `gltf.glb_size` (the skin of a reduced
+    basis, else the morph targets); of a rig: its mesh and the skin's animation (28 bytes a body
+    and frame). Plus the song when it is written beside.
 
     Parameters
     ----------
@@ -188,11 +194,12 @@ def planned_bytes(dance: Dance, format: str, frames: int, paths: dict) -> float:
         planned = pc2_size(n, frames) + 40.0 * n + 30.0 * len(dance.faces)
     elif format == "usd":
         per_vertex = USDA_BYTES if suffix_of(paths["main"]) == ".usda" else 12
-        planned = float(per_vertex) * n * frames
+        planned = float(per_vertex) * n * (frames + 1) + 12.0 * len(dance.faces)
     elif isinstance(dance, RigDance):
-        planned = 28.0 * len(dance.body_names) * frames
+        planned = 60.0 * n + 12.0 * len(dance.faces) + 28.0 * len(dance.body_names) * frames
     else:
-        planned = 12.0 * n * 64 + 4.0 * frames * 64  # at most 64 driven harmonics
+        sizes = glb_size(dance, frames)
+        planned = float(sizes.get("skin", sizes["morph targets"]))
     if paths.get("song") and dance.audio is not None and os.path.isfile(dance.audio):
         planned += os.path.getsize(dance.audio)
     return planned
@@ -206,7 +213,7 @@ def _write(format: str, dance: Dance, times, fps: float, path: str, song_name: s
         extras = {"audio": song_name, "fps": fps, "frames": len(times),
                   "duration": dance.duration, "start": dance.start, **dance.info}
         with open(path, "wb") as file:
-            file.write(glb_bytes(dance, times, extras))
+            write_glb(file, dance, times, extras)
         step(len(times))
         if isinstance(dance, RigDance) and dance.skinning == "modal":
             return skinning_difference(dance, times)

@@ -10,6 +10,12 @@
   (w_ν − lo_ν)/(hi_ν − lo_ν) ∈ [0, 1] (LINEAR), the mesh's initial weights −lo_ν/(hi_ν − lo_ν)
   (the file at rest shows the rest shape). At every sample base + Σ weight·target = rest +
   Σ w_ν D_ν = X_φ(t_i) exactly (up to float32), since X_φ is linear in φ.
+- A `HarmonicDance` of a reduced basis (docs/design.md#reduced-basis) becomes a skin whose joints
+  are the samples: joint j at the sample's rest position c_j (inverse bind matrix: translation
+  by −c_j), one translation channel c_j + D_j(t_i) each, and every vertex's 8 samples and weights
+  as JOINTS_0/1, WEIGHTS_0/1: the joint matrix is a translation by D_j(t), so a viewer plays
+  rest + Σ_j w_ij D_j(t) — the reduced dance exactly. Its size is m·T translations instead of
+  d·n displacements; the translations are computed joint by joint as the file is written.
 - A `RigDance` becomes a skin: one joint node per body, bound in the body's rest frame B_b
   (inverse bind matrix B_b⁻¹), animated by translation and rotation channels so that its world
   transform is T_b(t_i)·B_b; a viewer's joint matrix T_b·B_b·B_b⁻¹ = T_b then plays linear blend
@@ -21,12 +27,15 @@ The song's file name, the sample rate and what moved are in the root `extras.eig
 
 from __future__ import annotations
 
+import io
 import math
+import struct
 
 import numpy as np
 import pygltflib
 from scipy.spatial.transform import Rotation
 
+from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, RigDance
 from eigendance.export.gltf_look import drawn_attributes, write_look
 
@@ -60,8 +69,25 @@ class _Builder:
 
     def __init__(self, gltf: pygltflib.GLTF2):
         self.gltf = gltf
-        self.chunks: list[bytes] = []
+        self.chunks: list = []  # bytes, or callables making them as the file is written
         self.length = 0
+
+    def streamed(self, count: int, width: int, dtype: str, produce) -> int:
+        """An accessor of `count` elements whose bytes `produce()` makes only when the file is
+        written (long animations are never held in memory)."""
+        dtype = np.dtype(dtype)
+        length = count * width * dtype.itemsize
+        self.gltf.bufferViews.append(pygltflib.BufferView(buffer=0, byteOffset=self.length,
+                                                          byteLength=length))
+        self.chunks.append(produce)
+        self.length += length
+        padding = -self.length % 4
+        self.chunks.append(b"\0" * padding)
+        self.length += padding
+        self.gltf.accessors.append(pygltflib.Accessor(
+            bufferView=len(self.gltf.bufferViews) - 1, byteOffset=0,
+            componentType=self.COMPONENTS[dtype], count=count, type=self.TYPES[width]))
+        return len(self.gltf.accessors) - 1
 
     def accessor(self, array: np.ndarray, width: int, target: int | None = None,
                  bounds: bool = False) -> int:
@@ -97,25 +123,52 @@ class _Builder:
         self.length += len(data) + padding
         return len(self.gltf.bufferViews) - 1
 
-    def finish(self) -> bytes:
-        blob = b"".join(self.chunks)
-        self.gltf.buffers.append(pygltflib.Buffer(byteLength=len(blob)))
-        self.gltf.set_binary_blob(blob)
-        return blob
+    def write(self, file) -> int:
+        """Write the GLB container (header, JSON chunk, binary chunk) to an open binary file,
+        making the streamed accessors' bytes one at a time; returns the bytes written."""
+        self.gltf.buffers = [pygltflib.Buffer(byteLength=self.length)]
+        text = self.gltf.gltf_to_json(separators=(",", ":"), indent=None).encode("utf-8")
+        text += b" " * (-len(text) % 4)
+        total = 12 + 8 + len(text) + 8 + self.length
+        file.write(b"glTF" + struct.pack("<II", 2, total))
+        file.write(struct.pack("<I", len(text)) + b"JSON" + text)
+        file.write(struct.pack("<I", self.length) + b"BIN\0")
+        for chunk in self.chunks:
+            data = chunk() if callable(chunk) else chunk
+            file.write(data if isinstance(data, bytes) else memoryview(data).cast("B"))
+        return total
 
 
 def glb_bytes(dance: Dance, times, extras: dict) -> bytes:
-    """The .glb of `dance` sampled at `times` (s), with `extras` under extras.eigendance.
+    """The .glb of `dance` sampled at `times` (s) as bytes (`write_glb` streams it to a file).
 
     Parameters
     ----------
-    dance : a `HarmonicDance` (morph targets) or a `RigDance` (skin).
+    dance, times, extras : as for `write_glb`.
+
+    Returns
+    -------
+    bytes.
+    """
+    buffer = io.BytesIO()
+    write_glb(buffer, dance, times, extras)
+    return buffer.getvalue()
+
+
+def write_glb(file, dance: Dance, times, extras: dict) -> int:
+    """Write the .glb of `dance` sampled at `times` (s), with `extras` under extras.eigendance.
+
+    Parameters
+    ----------
+    file : a binary file open for writing.
+    dance : a `HarmonicDance` (morph targets; a skin on its samples for a reduced basis) or a
+        `RigDance` (skin).
     times : (T,) sample times, ascending.
     extras : JSON-ready facts stored in the file (the song's name, fps, …).
 
     Returns
     -------
-    The file's bytes.
+    The bytes written.
     """
     times = np.asarray(times, dtype=np.float64)
     gltf = pygltflib.GLTF2(asset=pygltflib.Asset(version="2.0", generator="eigendance"))
@@ -136,15 +189,16 @@ def glb_bytes(dance: Dance, times, extras: dict) -> bytes:
     gltf.scene = 0
     sample_input = builder.accessor(times.astype("<f4"), 1, bounds=True)
     base = dance.rest[welded]
-    if isinstance(dance, HarmonicDance):
+    if isinstance(dance, HarmonicDance) and dance.basis.reduced is not None:
+        _sample_skin(dance, times, builder, attributes, welded, sample_input)
+    elif isinstance(dance, HarmonicDance):
         base = _morph_targets(dance, times, builder, mesh, welded, sample_input)
     elif isinstance(dance, RigDance):
         _skin(dance, times, builder, attributes, welded, sample_input)
     else:
         raise TypeError(f"cannot write {type(dance).__name__} as glTF")
     attributes.POSITION = builder.accessor(base.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, True)
-    builder.finish()
-    return b"".join(gltf.save_to_bytes())
+    return builder.write(file)
 
 
 def _surface(dance: Dance, look, builder, attributes) -> list[tuple]:
@@ -254,6 +308,74 @@ def _skin(dance: RigDance, times, builder, attributes, welded, sample_input):
                                                        interpolation=pygltflib.ANIM_LINEAR))
     gltf.animations.append(pygltflib.Animation(name="dance", samplers=samplers,
                                                channels=channels))
+
+
+def _sample_skin(dance: HarmonicDance, times, builder, attributes, welded, sample_input):
+    """The reduced dance as a skin on its samples (module docstring)."""
+    skin = dance.sample_skin(times)
+    gltf = builder.gltf
+    count = len(skin.joints)
+    if count > 1 << 16:
+        raise InputError(f"{dance.name}: a glTF skin has at most 65536 joints; this reduced "
+                         f"basis has {count} samples", remedy={"samples": 1 << 16})
+    first_joint = len(gltf.nodes) + 1
+    joints = list(range(first_joint, first_joint + count))
+    gltf.nodes.append(pygltflib.Node(name="samples", children=joints))
+    gltf.scenes[0].nodes.append(first_joint - 1)
+    for index, position in enumerate(skin.joints):
+        gltf.nodes.append(pygltflib.Node(name=f"sample {index}",
+                                         translation=[float(x) for x in position]))
+    inverse = np.tile(np.eye(4), (count, 1, 1))
+    inverse[:, :3, 3] = -skin.joints  # translation by −c_j, stored column-major below
+    gltf.skins.append(pygltflib.Skin(name=dance.name, joints=joints, skeleton=first_joint - 1,
+                                     inverseBindMatrices=builder.accessor(
+                                         inverse.transpose(0, 2, 1).astype("<f4")
+                                         .reshape(-1, 16), 16)))
+    gltf.nodes[0].skin = 0
+    for set_index in range(skin.indices.shape[1] // 4):
+        columns = slice(4 * set_index, 4 * set_index + 4)
+        setattr(attributes, f"JOINTS_{set_index}", builder.accessor(
+            skin.indices[welded, columns].astype("<u2"), 4, pygltflib.ARRAY_BUFFER))
+        setattr(attributes, f"WEIGHTS_{set_index}", builder.accessor(
+            skin.weights[welded, columns].astype("<f4"), 4, pygltflib.ARRAY_BUFFER))
+    samplers, channels = [], []
+    frames = len(skin.amplitudes)
+    for joint in range(count):
+        output = builder.streamed(frames, 3, "<f4",
+                                  lambda joint=joint: skin.translations(joint))
+        channels.append(pygltflib.AnimationChannel(
+            sampler=joint, target=pygltflib.AnimationChannelTarget(node=joints[joint],
+                                                                  path="translation")))
+        samplers.append(pygltflib.AnimationSampler(input=sample_input, output=output,
+                                                   interpolation=pygltflib.ANIM_LINEAR))
+    gltf.animations.append(pygltflib.Animation(name="dance", samplers=samplers,
+                                               channels=channels))
+
+
+def glb_size(dance: Dance, frames: int) -> dict[str, int]:
+    """Bytes of the binary data of a harmonic dance's glb as written (`skin` of a reduced basis,
+    else `morph targets`) and of the other form, for `frames` samples: vertices, normals and
+    faces, plus per driven harmonic n displacements and T weights (morph targets) or per
+    vertex 8 joints and weights and per sample T translations (skin). The JSON is not
+    counted (≈ 0.2 kB per joint).
+
+    Parameters
+    ----------
+    dance : a `HarmonicDance`.
+    frames : samples T.
+
+    Returns
+    -------
+    {"morph targets": bytes, "skin": bytes (a reduced basis only)}.
+    """
+    n, faces = dance.n, len(dance.faces)
+    base = 24 * n + faces * 3 * (2 if n <= 65535 else 4) + 4 * frames
+    driven = len(dance.driven())
+    sizes = {"morph targets": base + driven * (12 * n + 4 * frames)}
+    if dance.basis.reduced is not None:
+        count = dance.basis.reduced.count
+        sizes["skin"] = base + 48 * n + count * (64 + 12 * frames)
+    return sizes
 
 
 def _rotation_translation(rotations, translations):

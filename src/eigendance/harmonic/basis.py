@@ -2,6 +2,7 @@
 
 U = [u_0 … u_{k-1}] solves L u = λ M u with Uᵀ M U = I. The coefficients X̃ = Uᵀ M X (k×3) and
 the remainder D = X − U X̃ give filtered positions X_φ = X + U((φ − 1) ⊙ X̃); φ ≡ 1 returns X.
+A large mesh gets a reduced basis (docs/design.md#reduced-basis): U = P U_r, never formed.
 """
 
 from __future__ import annotations
@@ -22,10 +23,24 @@ from eigendance.harmonic.eigensolver import RESIDUAL_TOLERANCE, SOLVER_VERSION, 
 from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.laplacian import laplacian as build_laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.harmonic.reduced import (
+    REDUCED_KEYS,
+    ReducedHarmonics,
+    check_reduced,
+    reduced_arrays,
+    reduced_from_arrays,
+    reduced_harmonics,
+    reduced_key,
+    reduced_pairs_fit,
+    sample_count,
+    solve_bytes,
+)
 from eigendance.limits import check_memory, memory_budget
 
 FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
                "coefficients", "residual", "laplacian")
+# A reduced basis file holds REDUCED_KEYS instead of the eigenvectors.
+COMMON_KEYS = tuple(name for name in FORMAT_KEYS if name != "eigenvectors")
 # A cached solve is used only if its pairs pass the solver's own test with this slack
 # (‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, and Uᵀ M U = I within tol).
 CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
@@ -33,6 +48,34 @@ CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
 # eigenvectors, the solver's band blocks and their copies while stitching. Measured peaks: 18
 # (armadillo, k = 2376) to 21 (bunny, k = 1070); README's performance table.
 SOLVE_BYTES_PER_VALUE = 24
+CONSTRUCTIONS = ("auto", "exact", "reduced")
+# The exact solve is chosen by "auto" up to this many values n·k: its time grows as n·k
+# (≈ 0.5 µs per value on this 2-core machine when it is quiet: bunny k = 300, 1.0·10⁷ values,
+# 5.3 s; the armadillo ×4, 5.2·10⁷ values, 55–132 s on the shared host under a load of 4–11),
+# so 6·10⁷ (200k vertices at k = 300) keeps it near half a minute on a quiet machine; the
+# reduced basis of 1.15 M vertices at k = 300 takes 39 s (benchmarks/bench_reduced.py;
+# docs/design.md#reduced-basis).
+EXACT_VALUES = 6e7
+
+
+def choose_construction(n: int, k: int, samples: int | None = None) -> str:
+    """Which basis `from_mesh` makes by default (docs/design.md#reduced-basis).
+
+    Parameters
+    ----------
+    n : vertices.
+    k : harmonics.
+    samples : the samples a reduced basis would have (default `reduced.sample_count`).
+
+    Returns
+    -------
+    "exact" when the exact solve fits the time rule (n·k ≤ EXACT_VALUES) and the memory
+    available now (or the mesh has too few vertices to reduce), else "reduced".
+    """
+    if (sample_count(n, k) if samples is None else samples) >= n:  # too few vertices to reduce
+        return "exact"
+    fits = SOLVE_BYTES_PER_VALUE * n * k <= memory_budget()
+    return "exact" if fits and n * k <= EXACT_VALUES else "reduced"
 
 
 @dataclass
@@ -74,6 +117,7 @@ class HarmonicBasis:
     laplacian: str = "cotan"
     seconds: float = 0.0  # time the eigen-solve took (not saved; 0 when it came from the cache)
     appearance: object = None  # the mesh's assets.Appearance (not saved; docs/design.md#appearance)
+    reduced: ReducedHarmonics | None = None  # a reduced basis: U = P U_r; eigenvectors is None
 
     @property
     def k(self) -> int:
@@ -86,36 +130,69 @@ class HarmonicBasis:
         return len(self.vertices)
 
     @property
+    def construction(self) -> str:
+        """"exact" or "reduced" (docs/design.md#reduced-basis)."""
+        return "exact" if self.reduced is None else "reduced"
+
+    @property
+    def vectors(self):
+        """U as the deformation kernel takes it: the (n, k) array, or the `ReducedHarmonics`."""
+        return self.eigenvectors if self.reduced is None else self.reduced
+
+    def harmonics(self, targets) -> np.ndarray:
+        """U[:, targets], for an exact or a reduced basis (only these columns are formed).
+
+        Parameters
+        ----------
+        targets : (t,) harmonic indices.
+
+        Returns
+        -------
+        (n, t).
+        """
+        if self.reduced is None:
+            return self.eigenvectors[:, np.asarray(targets, dtype=np.int64)]
+        return self.reduced.columns(targets)
+
+    @property
     def frequencies(self) -> np.ndarray:
         """Mesh frequency √λ_ν of each harmonic (length^-1)."""
         return np.sqrt(np.maximum(self.eigenvalues, 0))
 
     @classmethod
     def from_arrays(cls, mesh: Mesh, eigenvalues, eigenvectors, mass, laplacian="cotan",
-                    seconds=0.0) -> HarmonicBasis:
+                    seconds=0.0, reduced: ReducedHarmonics | None = None) -> HarmonicBasis:
         """The basis of `mesh` from a solve's eigenpairs: X̃ = Uᵀ M X, D = X − U X̃.
 
         Parameters
         ----------
         mesh : the normalised mesh.
         eigenvalues : (k,).
-        eigenvectors : (n, k), M-orthonormal.
+        eigenvectors : (n, k), M-orthonormal; None for a reduced basis.
         mass : (n,).
         laplacian : "cotan" or "robust".
         seconds : how long the solve took.
+        reduced : a reduced basis's `ReducedHarmonics` (U = P U_r), or None.
 
         Returns
         -------
         HarmonicBasis.
         """
-        coefficients = eigenvectors.T @ (mass[:, None] * mesh.vertices)
-        residual = mesh.vertices - eigenvectors @ coefficients
+        weighted = mass[:, None] * mesh.vertices
+        if reduced is None:
+            coefficients = eigenvectors.T @ weighted
+            residual = mesh.vertices - eigenvectors @ coefficients
+        else:
+            coefficients = reduced.transpose_lift(weighted)
+            residual = mesh.vertices - reduced.lift(coefficients)
         return cls(mesh.vertices, mesh.faces, mesh.center, mesh.scale, mass, eigenvalues,
-                   eigenvectors, coefficients, residual, laplacian, seconds, mesh.appearance)
+                   eigenvectors, coefficients, residual, laplacian, seconds, mesh.appearance,
+                   reduced)
 
     @classmethod
     def from_mesh(cls, mesh: Mesh | str | os.PathLike, k: int, laplacian: str = "cotan",
-                  solver: str = "bands", cache: bool = True, progress=None) -> HarmonicBasis:
+                  solver: str = "bands", cache: bool = True, progress=None,
+                  construction: str = "auto", samples: int | None = None) -> HarmonicBasis:
         """Compute (or fetch from the disk cache) the first k harmonics of a mesh or mesh file.
 
         Parameters
@@ -123,20 +200,31 @@ class HarmonicBasis:
         mesh : a `Mesh` or the path of a mesh file (OBJ, PLY, OFF, STL, glTF/GLB).
         k : number of harmonics, 1 ≤ k < n.
         laplacian : "cotan" (needs a manifold mesh) or "robust".
-        solver : "bands" (spectrum slicing) or "eigsh" (the naive baseline).
-        cache : read and write the disk cache (`basis_key` names the entry).
+        solver : "bands" (spectrum slicing) or "eigsh" (the naive baseline); exact bases only.
+        cache : read and write the disk cache (`basis_key`, `reduced_key` name the entry).
         progress : optional callable(done) told how many eigenpairs are accepted so far.
+        construction : "exact", "reduced" (docs/design.md#reduced-basis) or "auto"
+            (`choose_construction`: exact when it fits the time and memory rule).
+        samples : samples of a reduced basis (default `reduced.sample_count`).
 
         Returns
         -------
-        HarmonicBasis with k harmonics, verified: L u = λ M u and Uᵀ M U = I.
+        HarmonicBasis with k harmonics, verified: L u = λ M u and Uᵀ M U = I (a reduced basis:
+        L_r c = λ M_r c and Uᵀ M U = U_rᵀ M_r U_r = I).
         """
+        if construction not in CONSTRUCTIONS:
+            raise InputError(f"unknown construction '{construction}' (expected one of "
+                             f"{', '.join(CONSTRUCTIONS)})")
         if not isinstance(mesh, Mesh):
             mesh = load_mesh(mesh)
         if laplacian == "cotan" and (count := mesh.non_manifold_edge_count()):
             raise InputError(f"{mesh.name}: {count} non-manifold edges (shared by more than two "
                              "triangles); the cotangent Laplacian needs a manifold mesh",
                              remedy={"laplacian": "robust"})
+        if construction == "auto":
+            construction = choose_construction(mesh.n, k, samples)
+        if construction == "reduced":
+            return cls._reduced(mesh, k, laplacian, cache, progress, samples)
         per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
         fits = int(memory_budget() // per_harmonic)
         check_memory(per_harmonic * k, f"{mesh.name}: {k} harmonics of {mesh.n} vertices",
@@ -169,6 +257,45 @@ class HarmonicBasis:
         return cls.from_arrays(mesh, eigenvalues, eigenvectors, mass, laplacian,
                                timing["seconds"])
 
+    @classmethod
+    def _reduced(cls, mesh: Mesh, k: int, laplacian: str, cache: bool, progress,
+                 samples: int | None) -> HarmonicBasis:
+        """The reduced basis of `mesh` (docs/design.md#reduced-basis), through the cache."""
+        count = sample_count(mesh.n, k) if samples is None else int(samples)
+        if not k < count <= mesh.n:
+            raise InputError(f"{mesh.name}: a reduced basis of k = {k} harmonics needs more "
+                             f"than k samples and at most one per vertex ({mesh.n}); asked "
+                             f"for {count}", remedy={"samples": 4 * k} if 4 * k <= mesh.n
+                             else {"exact": True})
+        check_memory(solve_bytes(mesh.n, len(mesh.faces), k, count, laplacian),
+                     f"{mesh.name}: a reduced basis of {k} harmonics of {mesh.n} vertices")
+        timing = {"seconds": 0.0}
+        operators = {}
+
+        def stiffness_and_mass():
+            if not operators:
+                operators["L, M"] = build_laplacian(mesh.vertices, mesh.faces, laplacian)
+            return operators["L, M"]
+
+        def solved() -> dict[str, np.ndarray]:
+            stiffness, mass = stiffness_and_mass()
+            start = time.perf_counter()
+            eigenvalues, reduced = reduced_harmonics(stiffness, mass, mesh.vertices, mesh.faces,
+                                                     k, count, progress)
+            timing["seconds"] = time.perf_counter() - start
+            return {"eigenvalues": eigenvalues, "mass": mass, **reduced_arrays(reduced)}
+
+        if cache:
+            key = reduced_key(basis_key(mesh, k, laplacian, "bands"), count)
+            arrays = basis_cache().get(key, solved, lambda found: reduced_pairs_fit(
+                *stiffness_and_mass(), k, found))
+        else:
+            arrays = solved()
+        if progress is not None:
+            progress(k)
+        return cls.from_arrays(mesh, arrays["eigenvalues"], None, arrays["mass"], laplacian,
+                               timing["seconds"], reduced_from_arrays(arrays))
+
     @property
     def diagonal(self) -> float:
         """Bounding-box diagonal of the normalised mesh (≤ 2√3)."""
@@ -185,7 +312,7 @@ class HarmonicBasis:
         -------
         (S, n, 3).
         """
-        return Deformer(self.eigenvectors, self.coefficients)(phi)
+        return Deformer(self.vectors, self.coefficients)(phi)
 
     def motion_gram(self, targets) -> np.ndarray:
         """G_νμ = mean over vertices of ⟨D_ν(x), D_μ(x)⟩ for the harmonics `targets` (T,) → (T, T).
@@ -203,9 +330,12 @@ class HarmonicBasis:
         (T, T), normalised units squared.
         """
         targets = np.asarray(targets, dtype=np.int64)
-        columns = self.eigenvectors[:, targets]
-        return (columns.T @ columns) * (self.coefficients[targets] @
-                                        self.coefficients[targets].T) / self.n
+        if self.reduced is None:
+            columns = self.eigenvectors[:, targets]
+            overlaps = columns.T @ columns
+        else:
+            overlaps = self.reduced.gram(targets)
+        return overlaps * (self.coefficients[targets] @ self.coefficients[targets].T) / self.n
 
     def deformer(self, original: bool = False) -> Deformer:
         """The deformation kernel for this basis, in normalised or original coordinates.
@@ -219,9 +349,9 @@ class HarmonicBasis:
         Deformer.
         """
         if original:
-            return Deformer(self.eigenvectors, self.coefficients * self.scale,
+            return Deformer(self.vectors, self.coefficients * self.scale,
                             self.to_original(self.vertices))
-        return Deformer(self.eigenvectors, self.coefficients, self.vertices)
+        return Deformer(self.vectors, self.coefficients, self.vertices)
 
     def filter_positions(self, phi) -> np.ndarray:
         """Filtered normalised positions X + U((φ − 1) ⊙ X̃) for φ of shape (..., k) → (..., n, 3).
@@ -263,7 +393,12 @@ class HarmonicBasis:
         ----------
         path : the .npz to write.
         """
-        atomic_save_npz(path, **{name: getattr(self, name) for name in FORMAT_KEYS})
+        arrays = {name: getattr(self, name) for name in COMMON_KEYS}
+        if self.reduced is None:
+            arrays["eigenvectors"] = self.eigenvectors
+        else:
+            arrays.update(reduced_arrays(self.reduced))
+        atomic_save_npz(path, **arrays)
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> HarmonicBasis:
@@ -280,7 +415,7 @@ class HarmonicBasis:
         HarmonicBasis.
         """
         path = os.fspath(path)
-        data = load_npz(path, FORMAT_KEYS)
+        data = load_npz(path, COMMON_KEYS)
         fields = {"vertices": checked_array(data, "vertices", path, shape=(None, 3)),
                   "eigenvalues": checked_array(data, "eigenvalues", path, shape=(None,))}
         n, k = len(fields["vertices"]), len(fields["eigenvalues"])
@@ -288,8 +423,7 @@ class HarmonicBasis:
             raise InputError(f"{path}: a basis needs at least 3 vertices and 1 harmonic, "
                              f"has {n} and {k}")
         for name, shape in (("center", (3,)), ("scale", ()), ("mass", (n,)),
-                            ("eigenvectors", (n, k)), ("coefficients", (k, 3)),
-                            ("residual", (n, 3))):
+                            ("coefficients", (k, 3)), ("residual", (n, 3))):
             fields[name] = checked_array(data, name, path, shape=shape)
         fields["faces"] = faces = checked_array(data, "faces", path, "int", (None, 3))
         fields["laplacian"] = checked_array(data, "laplacian", path, "str")
@@ -300,18 +434,42 @@ class HarmonicBasis:
             raise InputError(f"{path}: laplacian must be one of {', '.join(LAPLACIANS)}")
         if not fields["scale"] > 0 or not np.all(fields["mass"] > 0):
             raise InputError(f"{path}: scale and mass must be positive")
+        fields["eigenvectors"], fields["reduced"] = _load_vectors(data, path, n, k)
         basis = cls(**fields)
         if not np.abs(basis.to_original(basis.vertices)).max() <= MAX_COORDINATE:
             raise InputError(f"{path}: original coordinates (vertices·scale + center) beyond "
                              f"±{MAX_COORDINATE:.0e}")
-        coefficients = basis.eigenvectors.T @ (basis.mass[:, None] * basis.vertices)
-        residual = basis.vertices - basis.eigenvectors @ coefficients
-        for name, expected in (("coefficients", coefficients), ("residual", residual)):
-            stored = getattr(basis, name)
-            if not np.abs(stored - expected).max() <= 1e-8 * (1 + np.abs(expected).max()):
+        expected = cls.from_arrays(Mesh(basis.vertices, basis.faces, basis.center, basis.scale,
+                                        np.arange(n)), basis.eigenvalues, basis.eigenvectors,
+                                   basis.mass, reduced=basis.reduced)
+        for name in ("coefficients", "residual"):
+            stored, rebuilt = getattr(basis, name), getattr(expected, name)
+            if not np.abs(stored - rebuilt).max() <= 1e-8 * (1 + np.abs(rebuilt).max()):
                 raise InputError(f"{path}: {name} do not follow from the vertices, mass and "
                                  "eigenvectors (not a basis file written by eigendance)")
         return basis
+
+
+def _load_vectors(data: dict, path: str, n: int, k: int):
+    """(eigenvectors, None) of an exact basis file or (None, ReducedHarmonics) of a reduced
+    one, checked."""
+    if "eigenvectors" in data:
+        return checked_array(data, "eigenvectors", path, shape=(n, k)), None
+    missing = [name for name in REDUCED_KEYS if name not in data]
+    if missing:
+        raise InputError(f"{path}: missing eigenvectors (or {', '.join(missing)} of a reduced "
+                         "basis); not an eigendance basis file")
+    arrays = {"samples": checked_array(data, "samples", path, "int", (None,)),
+              "interpolation_indices": checked_array(data, "interpolation_indices", path,
+                                                     "int", (n, None)),
+              "interpolation_weights": checked_array(data, "interpolation_weights", path,
+                                                     shape=(n, None)),
+              "coarse_eigenvectors": checked_array(data, "coarse_eigenvectors", path,
+                                                   shape=(None, k))}
+    problem = check_reduced(arrays, n, k)
+    if problem:
+        raise InputError(f"{path}: reduced basis: {problem}")
+    return None, reduced_from_arrays(arrays)
 
 
 def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:

@@ -1,4 +1,7 @@
-"""Eigen-solvers for L u = λ M u with M diagonal (docs/design.md#eigensolver).
+"""Eigen-solvers for L u = λ M u (docs/design.md#eigensolver).
+
+M is diagonal (a mesh's vertex areas) or, for a reduced basis, a sparse SPD matrix
+(`eigendance.harmonic.mass`).
 
 `solve_eigsh` is the naive one-shot shift-invert `scipy.sparse.linalg.eigsh`, the baseline of
 every benchmark. `solve_bands` (the default) slices the spectrum into bands solved one by one.
@@ -24,6 +27,7 @@ from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.lanczos import lanczos_extreme
+from eigendance.harmonic.mass import as_mass
 from eigendance.processes import start_worker
 
 SOLVERS = ("bands", "eigsh")
@@ -65,9 +69,10 @@ def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
     """
     n = stiffness.shape[0]
     check_request(n, k)
+    mass = as_mass(mass)
     if n <= 500:
         return _dense(stiffness, mass, k)
-    values, vectors = sla.eigsh(sp.csc_matrix(stiffness), k=k, M=sp.diags(mass).tocsc(),
+    values, vectors = sla.eigsh(sp.csc_matrix(stiffness), k=k, M=mass.sparse(),
                                 sigma=BASELINE_SHIFT, which="LM")
     if progress is not None:
         progress(k)
@@ -75,8 +80,13 @@ def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
 
 
 def _dense(stiffness, mass, k):
-    """Small problems: dense symmetric solve of M^-1/2 L M^-1/2."""
-    root = 1 / np.sqrt(mass)
+    """Small problems: dense symmetric solve of M^-1/2 L M^-1/2 (or L u = λ M u)."""
+    mass = as_mass(mass)
+    if mass.diagonal is None:
+        values, vectors = scipy.linalg.eigh(stiffness.toarray(), mass.sparse().toarray(),
+                                            subset_by_index=[0, k - 1])
+        return values, vectors
+    root = 1 / np.sqrt(mass.diagonal)
     values, vectors = np.linalg.eigh(root[:, None] * stiffness.toarray() * root[None, :])
     return values[:k], root[:, None] * vectors[:, :k]
 
@@ -84,7 +94,7 @@ def _dense(stiffness, mass, k):
 def _sorted_m_normalised(values, vectors, mass):
     order = np.argsort(values)
     values, vectors = values[order], vectors[:, order]
-    vectors = vectors / np.sqrt(np.einsum("ij,i,ij->j", vectors, mass, vectors))
+    vectors = vectors / np.sqrt(as_mass(mass).norms(vectors))
     return values, vectors
 
 
@@ -131,7 +141,8 @@ class Band:
 
 
 class _ShiftInvert:
-    """(A − σI)^-1 for A = M^-½ L M^-½, via an LDLᵀ (qdldl) or LU (SuperLU) factorisation.
+    """(A − σI)^-1 = Rᵀ(L − σM)⁻¹R for A = R⁻¹ L R⁻ᵀ (M = R Rᵀ, `harmonic.mass`), via an LDLᵀ
+    (qdldl) or LU (SuperLU) factorisation.
 
     L − σM has the same sparsity for every σ, so each process keeps its last LDLᵀ and only
     redoes the numeric part (half the time); the operator it belonged to stops working.
@@ -140,8 +151,8 @@ class _ShiftInvert:
     _last = None  # per process: (pattern key, qdldl.Solver, the _ShiftInvert using it)
 
     def __init__(self, stiffness, mass, shift):
-        self.root = np.sqrt(mass)
-        shifted = (stiffness - shift * sp.diags(mass)).tocsc()
+        self.mass = as_mass(mass)
+        shifted = self.mass.shifted(stiffness, shift)
         self.below = None
         try:
             factor = self._factorise(shifted)
@@ -172,7 +183,7 @@ class _ShiftInvert:
 
     def __call__(self, x):
         x = np.asarray(x).reshape(-1)
-        return self.root * self._solve(self.root * x)
+        return self.mass.to_y(self._solve(self.mass.factor_times(x)))
 
 
 def _solve_band(stiffness, mass, shift: float, count: int, null: np.ndarray) -> Band:
@@ -184,7 +195,7 @@ def _solve_band(stiffness, mass, shift: float, count: int, null: np.ndarray) -> 
     """
     n = stiffness.shape[0]
     operator = _ShiftInvert(stiffness, mass, shift)
-    known = null * operator.root  # y = M^½ u: orthonormal rows
+    known = operator.mass.to_y(null.T).T  # y = Rᵀ u: orthonormal rows
     found = lanczos_extreme(operator, n, count, deflate=known)
     if found is None:
         def deflated(x):
@@ -197,7 +208,7 @@ def _solve_band(stiffness, mass, shift: float, count: int, null: np.ndarray) -> 
     theta, vectors = found
     eigenvalues = shift + 1 / theta
     radius = _trusted_radius(np.abs(eigenvalues - shift))
-    rows = vectors.T / operator.root
+    rows = operator.mass.from_y(vectors).T
     if abs(shift) < radius:
         eigenvalues = np.concatenate([np.zeros(len(null)), eigenvalues])
         rows = np.concatenate([null, rows])
@@ -239,9 +250,9 @@ def _refine(stiffness, mass, vectors):
     |λ − σ₀| / |λ_j − σ₀| along every other eigenvector j) and a Rayleigh–Ritz fix that.
     """
     operator = _ShiftInvert(stiffness, mass, BASELINE_SHIFT)
-    refined = np.column_stack([operator(column) for column in (vectors * operator.root[:, None]).T])
-    refined /= operator.root[:, None]
-    gram = refined.T @ (mass[:, None] * refined)
+    refined = np.column_stack([operator(column) for column in operator.mass.to_y(vectors).T])
+    refined = operator.mass.from_y(refined)
+    gram = refined.T @ operator.mass.times(refined)
     energy = refined.T @ (stiffness @ refined)
     values, mixing = scipy.linalg.eigh((energy + energy.T) / 2, (gram + gram.T) / 2)
     return values, refined @ mixing
@@ -255,7 +266,7 @@ def _complete_band(stiffness, mass, band: Band, missing: int) -> Band:
     """
     n = stiffness.shape[0]
     operator = _ShiftInvert(stiffness, mass, band.shift)
-    known = band.eigenvectors.T * operator.root  # y = M^½ u: orthonormal rows
+    known = operator.mass.to_y(band.eigenvectors).T  # y = Rᵀ u: orthonormal rows
     # The copies may sit next to eigenvalues just outside the window: allow a long run.
     found = lanczos_extreme(operator, n, missing + 4, deflate=known, seed=len(known),
                             max_steps=3 * missing + 300)
@@ -266,7 +277,8 @@ def _complete_band(stiffness, mass, band: Band, missing: int) -> Band:
     inside = np.abs(eigenvalues - band.shift) < band.radius
     return _band(stiffness, mass, band.shift, band.radius,
                  np.concatenate([band.eigenvalues, eigenvalues[inside]]),
-                 np.concatenate([band.eigenvectors.T, vectors.T[inside] / operator.root]),
+                 np.concatenate([band.eigenvectors.T,
+                                 operator.mass.from_y(vectors[:, inside]).T]),
                  band.below)
 
 
@@ -286,14 +298,15 @@ def null_space(stiffness, mass, most: int) -> np.ndarray:
     -------
     (p, n).
     """
+    mass = as_mass(mass)
     graph = sp.csr_matrix(stiffness, copy=True)
     graph.eliminate_zeros()
     count, labels = connected_components(graph, directed=False)
     count = min(count, most)
-    rows = np.zeros((count, len(mass)))
+    rows = np.zeros((count, mass.n))
     inside = labels < count
     rows[labels[inside], np.flatnonzero(inside)] = 1
-    return rows / np.sqrt(rows @ mass)[:, None]
+    return rows / np.sqrt(mass.norms(rows.T))[:, None]
 
 
 def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
@@ -302,7 +315,7 @@ def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
     Parameters
     ----------
     stiffness : L.
-    mass : (n,).
+    mass : (n,) areas, or a sparse mass (`harmonic.mass`).
     eigenvalues : (k,).
     eigenvectors : (n, k).
 
@@ -310,10 +323,11 @@ def residuals(stiffness, mass, eigenvalues, eigenvectors) -> np.ndarray:
     -------
     (k,).
     """
+    mass = as_mass(mass)
     result = np.empty(len(eigenvalues))
     for start in range(0, len(eigenvalues), 256):
         block, value = eigenvectors[:, start:start + 256], eigenvalues[start:start + 256]
-        weighted = mass[:, None] * block
+        weighted = mass.times(block)
         residual = np.linalg.norm(stiffness @ block - weighted * value, axis=0)
         scale = np.maximum(np.abs(value), 1) * np.linalg.norm(weighted, axis=0)
         result[start:start + 256] = residual / scale
@@ -446,6 +460,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     """
     n = stiffness.shape[0]
     check_request(n, k)
+    mass = as_mass(mass)
     if n <= 600:
         return _dense(stiffness, mass, k)
     null = null_space(stiffness, mass, k)
@@ -483,7 +498,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 if rounds > most:  # e.g. copies of a multiple eigenvalue at every band's edge
                     raise InternalError(f"eigen-solver: the bands do not close after {most} "
                                         "rounds", remedy={"solver": "eigsh"})
-                shifts = _next_shifts(pieces, gap, k, count, workers, mass.sum())
+                shifts = _next_shifts(pieces, gap, k, count, workers, mass.total)
                 bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
             bands.sort(key=lambda band: band.shift)
     _verify(values, pieces, bands)

@@ -20,7 +20,13 @@ from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
 from eigendance.files import check_suffix
-from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal, face_normals, weld
+from eigendance.geometry import (
+    MAX_COORDINATE,
+    bounding_box_diagonal,
+    face_normals,
+    unique_rows,
+    weld,
+)
 
 # A triangle whose area is below this fraction of the squared bounding-box diagonal is degenerate.
 ZERO_AREA = 1e-14
@@ -119,7 +125,7 @@ class Mesh:
         int.
         """
         edges = np.sort(self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
-        _, counts = np.unique(edges, axis=0, return_counts=True)
+        _, counts = np.unique(edges[:, 0] * np.int64(self.n) + edges[:, 1], return_counts=True)
         return int((counts > 2).sum())
 
     def describe_cleanup(self) -> str:
@@ -247,7 +253,7 @@ def _cleaned(vertices, faces, name, tolerance=0.0):
     if len(faces) == 0:
         raise InputError(f"{name}: every triangle has zero area")
 
-    _, first = np.unique(np.sort(faces, axis=1), axis=0, return_index=True)
+    first, _ = unique_rows(np.sort(faces, axis=1))
     repeated_faces = len(faces) - len(first)
     faces = faces[np.sort(first)]
 

@@ -21,7 +21,7 @@ import numpy as np
 
 from eigendance.files import OUT_OF_RANGE, atomic_write, check_finite, load_npz
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.limits import check_disk
+from eigendance.limits import check_output
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 from eigendance.window import Window
@@ -104,13 +104,15 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
 
 
 def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: float = 30.0,
-                    progress=None, window: Window | None = None) -> int:
+                    progress=None, window: Window | None = None, force: bool = False) -> int:
     """Write the animation file (see the module docstring) atomically.
 
     Frames are computed chunk by chunk and streamed into the .npy member of the zip, so neither
     the positions nor the file are ever held in memory; a writer thread stores (CRC + write) one
     chunk while the next is computed. A chunk that is not finite (an amplification or a model
-    too large for float32) ends the write with an InputError, and no file is left.
+    too large for float32) ends the write with an InputError, and no file is left. Its size is
+    checked first: it must fit on the disk, and beyond `limits.LARGE_OUTPUT` it is written only
+    with `force`.
 
     Parameters
     ----------
@@ -120,6 +122,7 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
     progress : optional callable(done frames).
     window : the part of the song (`window.Window`; None: the whole song): the file's times
         start at 0 and its frame at time t is the song's at window.start + t.
+    force : write a file beyond `limits.LARGE_OUTPUT`.
 
     Returns
     -------
@@ -127,8 +130,8 @@ def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: f
     """
     window = window or Window(0.0, spectrogram.duration)
     times = frame_times(window.duration, fps)
-    check_disk(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
-               f"{len(times)} frames of {basis.n} vertices")
+    check_output(path, 12.0 * len(times) * basis.n, f"{os.path.basename(os.fspath(path))}: "
+                 f"{len(times)} frames of {basis.n} vertices", force)
     header = {"descr": np.lib.format.dtype_to_descr(np.dtype("<f4")), "fortran_order": False,
               "shape": (len(times), basis.n, 3)}
 

@@ -2,12 +2,15 @@
 
 Layout (little-endian): b"EDB1", uint32 header length H, H bytes of UTF-8 JSON padded with
 spaces to a multiple of 4, then the arrays, each starting at a multiple of 4 bytes. The header is
-``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32"|"uint8", "shape":
-[...], "offset": bytes from the start of the data}}}``.
+``{"meta": {...}, "arrays": {name: {"dtype": "float32"|"float16"|"uint32"|"uint16"|"uint8",
+"shape": [...], "offset": bytes from the start of the data}}}``.
 
 Basis bundle (`basis_bundle`): vertices (n,3) f32 normalised, faces (m,3) u32, eigenvalues (k,)
 f32, coefficients (k,3) f32 and `harmonics` (n, 4·⌈k/4⌉) f32 (or f16 on request) — the eigenvectors
-packed four harmonics per RGBA texel (zero padded), ready for a float texture.
+packed four harmonics per RGBA texel (zero padded), ready for a float texture. A reduced basis
+(docs/design.md#reduced-basis; meta `construction` "reduced", `samples` m) sends instead
+`coarse` (m, 4·⌈k/4⌉) f32 (always: it is small), U_r packed the same way, and P:
+`weights` (n, 8) f16 (exact: multiples of 2⁻¹¹) and `indices` (n, 8) u16 (u32 when m > 65536).
 Spectrogram bundle (`spectrogram_bundle`): times (T,) f32, values (T,B) f32, band_edges (B+1,)
 f32, beats (n_b,) and onsets (n_o,) f32 seconds (the song's rhythm, docs/design.md#rhythm;
 empty without it), meta rate/sample_rate/duration and tempo (beats per minute, 0: no beat).
@@ -37,12 +40,12 @@ from eigendance.shaders.programs import material_shading
 
 MAGIC = b"EDB1"
 DTYPES = {"float32": np.dtype("<f4"), "uint32": np.dtype("<u4"), "float16": np.dtype("<f2"),
-          "uint8": np.dtype("u1")}
+          "uint16": np.dtype("<u2"), "uint8": np.dtype("u1")}
 
 
 def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) -> bytes:
-    """Bundle the arrays: bytes (uint8) as they are, other integers as uint32, floats as
-    float32 (float16 for names in `half`).
+    """Bundle the arrays: bytes (uint8) and uint16 arrays as they are, other integers as uint32,
+    floats as float32 (float16 arrays, and names in `half`, as float16).
 
     Parameters
     ----------
@@ -56,12 +59,15 @@ def pack(meta: dict, arrays: dict[str, np.ndarray], half: tuple[str, ...] = ()) 
     """
     entries, blobs, offset = {}, [], 0
     for name, array in arrays.items():
-        if np.asarray(array).dtype == np.uint8:
+        kind = np.asarray(array).dtype
+        if kind == np.uint8:
             dtype = "uint8"
-        elif np.issubdtype(np.asarray(array).dtype, np.integer):
+        elif kind == np.uint16:
+            dtype = "uint16"
+        elif np.issubdtype(kind, np.integer):
             dtype = "uint32"
         else:
-            dtype = "float16" if name in half else "float32"
+            dtype = "float16" if name in half or kind == np.float16 else "float32"
         data = memoryview(np.ascontiguousarray(array, dtype=DTYPES[dtype]).reshape(-1)).cast("B")
         entries[name] = {"dtype": dtype, "shape": list(np.shape(array)), "offset": offset}
         padding = (-len(data)) % 4
@@ -123,19 +129,29 @@ def basis_bundle(basis, name: str = "mesh", half: bool = False) -> bytes:
     basis : the mesh's `HarmonicBasis`.
     name : how the page calls the mesh.
     half : send the harmonics as float16 (half the bytes, ≈ 1e-3 relative rounding of each
-        eigenvector entry).
+        eigenvector entry); a reduced basis's coarse basis is always float32 (it is small).
 
     Returns
     -------
-    bytes of the bundle: vertices, faces, eigenvalues, coefficients, harmonics.
+    bytes of the bundle: vertices, faces, eigenvalues, coefficients, harmonics (a reduced
+    basis: its coarse basis and interpolation instead, module docstring).
     """
     meta = {"kind": "basis", "name": name, "n": basis.n, "k": basis.k,
             "faces": int(len(basis.faces)), "laplacian": basis.laplacian,
-            "scale": float(basis.scale), "center": [float(c) for c in basis.center]}
-    return pack(meta, {
-        "vertices": basis.vertices, "faces": basis.faces.astype(np.uint32),
-        "eigenvalues": basis.eigenvalues, "coefficients": basis.coefficients,
-        "harmonics": packed_harmonics(basis.eigenvectors)}, half=("harmonics",) if half else ())
+            "scale": float(basis.scale), "center": [float(c) for c in basis.center],
+            "construction": basis.construction}
+    arrays = {"vertices": basis.vertices, "faces": basis.faces.astype(np.uint32),
+              "eigenvalues": basis.eigenvalues, "coefficients": basis.coefficients}
+    if basis.reduced is None:
+        arrays["harmonics"] = packed_harmonics(basis.eigenvectors)
+        return pack(meta, arrays, half=("harmonics",) if half else ())
+    reduced = basis.reduced
+    meta["samples"] = reduced.count
+    indices = reduced.interpolation.indices
+    arrays.update(coarse=packed_harmonics(reduced.coarse),
+                  weights=reduced.interpolation.weights.astype(np.float16),  # exact
+                  indices=indices.astype(np.uint16 if reduced.count <= 1 << 16 else np.uint32))
+    return pack(meta, arrays)  # `half` does not apply: the coarse basis is small
 
 
 def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:

@@ -20,6 +20,7 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import check_readable, kind_of, read_json, suffix_of
+from eigendance.harmonic.basis import choose_construction
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.rig import Rig
@@ -48,12 +49,15 @@ class Intake:
     solver : the queue that computes mesh bases.
     k : harmonics per mesh basis.
     spectrogram_options : options of `Spectrogram.from_file`.
+    construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
     unpacked_limit : the most bytes a model's zip may unpack to.
     """
 
     def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,
-                 spectrogram_options: dict | None = None, unpacked_limit: int = 256 << 20):
+                 spectrogram_options: dict | None = None, construction: str = "auto",
+                 unpacked_limit: int = 256 << 20):
         self.shelf, self.solver, self.k = shelf, solver, k
+        self.construction = construction
         self.spectrogram_options = spectrogram_options or {}
         self.unpacked_limit = unpacked_limit
 
@@ -196,8 +200,10 @@ class Intake:
         mesh = dataclasses.replace(load_mesh(path), name=name)
         laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
+        construction = choose_construction(mesh.n, k) if self.construction == "auto" \
+            else self.construction
         item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
-                        appearance=mesh.appearance)
+                        construction=construction, appearance=mesh.appearance)
         item.job = Job(new_id(), "basis", k, name)
         self.shelf.admit(item, self.shelf.meshes, f"{name}: a basis of {k} harmonics of "
                                       f"{len(mesh.vertices)} vertices")

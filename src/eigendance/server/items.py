@@ -14,6 +14,7 @@ import threading
 import time
 from dataclasses import dataclass, field
 
+from eigendance.harmonic.reduced import sample_count
 from eigendance.modal.rig import Rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.server.memory import footprint
@@ -22,6 +23,9 @@ from eigendance.server.memory import footprint
 # and the float16 bundle the page may ask for.
 BYTES_PER_ENTRY = 8 + 4 + 2
 BYTES_PER_VERTEX = 256  # vertices, mass, faces (≈ 2 per vertex) in the basis and the bundles
+# A reduced basis (docs/design.md#reduced-basis) keeps per vertex its interpolation (indices,
+# weights, P as a matrix, the bundle's float16 and uint16 copies) instead of k entries.
+REDUCED_BYTES_PER_VERTEX = 320
 
 
 def new_id() -> str:
@@ -106,6 +110,7 @@ class MeshItem:
     rig : the id of the rig item of the same file (a glTF with a skin), or None.
     content : its content key.
     removed : taken out of the library (its solve stops).
+    construction : "exact" or "reduced" (docs/design.md#reduced-basis).
     appearance : its look (`assets.Appearance`: materials, drawn vertices), None for clay.
     look_bundle : its appearance bundle, made when first asked for (`server.binary`).
     """
@@ -122,6 +127,7 @@ class MeshItem:
     rig: str | None = None  # id of the rig item of the same file (a glTF with a skin)
     content: tuple | None = None  # the key of its content (server.contents)
     removed: bool = False
+    construction: str = "exact"
     appearance: object = None
     look_bundle: bytes | None = None
 
@@ -130,10 +136,11 @@ class MeshItem:
 
         Returns
         -------
-        {"id", "name", "k", "vertices", "ready", "job", "rig", "look" (`look_summary`)}.
+        {"id", "name", "k", "vertices", "ready", "construction", "job", "rig", "look"
+        (`look_summary`)}.
         """
         return {"id": self.id, "name": self.name, "k": self.k, "vertices": self.vertices,
-                "ready": self.basis is not None,
+                "ready": self.basis is not None, "construction": self.construction,
                 "job": self.job.as_json() if self.job else None, "rig": self.rig,
                 "look": look_summary(self.appearance)}
 
@@ -146,6 +153,9 @@ class MeshItem:
         int, bytes.
         """
         look = footprint(self.appearance, self.look_bundle)
+        if self.basis is None and self.construction == "reduced":
+            return self.vertices * (REDUCED_BYTES_PER_VERTEX + BYTES_PER_VERTEX) + \
+                sample_count(self.vertices, self.k) * self.k * BYTES_PER_ENTRY + look
         if self.basis is None:
             return self.vertices * (self.k * BYTES_PER_ENTRY + BYTES_PER_VERTEX) + look
         return footprint(self.basis, self.bundle, self.half_bundle, self.appearance,

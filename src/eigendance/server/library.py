@@ -41,19 +41,22 @@ class Library:
     max_upload_bytes : the largest upload.
     memory_budget : bytes the items may keep in memory (`server.memory`).
     spectrogram_options : options of `Spectrogram.from_file`.
+    construction : how mesh bases are solved: "auto" (docs/design.md#reduced-basis), "exact" or
+        "reduced".
 
     Attributes: shelf, intake, solver (the parts); folder, k, max_upload_bytes; meshes, songs,
     mappings, rigs ({id: item}) and budget, as the shelf holds them.
     """
 
     def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
-                 memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None):
+                 memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None,
+                 construction: str = "auto"):
         os.makedirs(folder, exist_ok=True)
         self.folder, self.k, self.max_upload_bytes = folder, k, max_upload_bytes
         self.shelf = Shelf(folder, Budget(memory_budget))
         self.solver = BasisSolver(self.shelf.recharge, self.shelf.public)
         self.shelf.removed = self.solver.forget
-        self.intake = Intake(self.shelf, self.solver, k, spectrogram_options,
+        self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
                              UNPACKED_FACTOR * max_upload_bytes)
         self.meshes, self.songs = self.shelf.meshes, self.shelf.songs
         self.mappings, self.rigs, self.budget = self.shelf.mappings, self.shelf.rigs, \

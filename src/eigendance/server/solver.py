@@ -18,6 +18,7 @@ from collections.abc import Callable
 
 from eigendance.errors import EigendanceError, one_line
 from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
+from eigendance.harmonic.reduced import reduced_key, sample_count
 from eigendance.server.binary import basis_bundle
 from eigendance.server.items import Job, MeshItem
 
@@ -84,7 +85,10 @@ class BasisSolver:
         if item.removed or self.stopping.is_set():
             job.update(state="error", message=f"{item.name}: removed from the library")
             return
-        job.cached = os.path.isfile(basis_cache().path(basis_key(mesh, item.k, laplacian)))
+        key = basis_key(mesh, item.k, laplacian)
+        if item.construction == "reduced":
+            key = reduced_key(key, sample_count(mesh.n, item.k))
+        job.cached = os.path.isfile(basis_cache().path(key))
         self.solving, self.solve_children = item, set(multiprocessing.active_children())
         job.update(state="running")
         self.tell(job)
@@ -96,7 +100,8 @@ class BasisSolver:
             self.tell(job)
 
         try:
-            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress)
+            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress,
+                                            construction=item.construction)
             if item.removed or self.stopping.is_set():
                 raise Stopped
             item.bundle = basis_bundle(basis, item.name)

@@ -1,0 +1,126 @@
+"""A reduced basis in the page (docs/design.md#reduced-basis): `eigendance serve --reduced`
+sends the coarse basis and the interpolation; the GPU gathers each vertex's samples as skinning
+does, the CPU path gives the same numbers, and both equal Python's positions; the gallery,
+the player and breeding run on it.
+
+Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import urllib.request
+
+import numpy as np
+import pytest
+from test_look_page import MODEL as LOOK_MODEL
+from test_look_page import page_picture
+from web_helpers import CAT, E2E_K, open_app, running_server
+
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.motion import positions_at
+from eigendance.music.mapping import Mapping
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.server.binary import unpack
+
+pytestmark = pytest.mark.web
+SAMPLES = 2000  # the default for k = 24 (at least 2000): the grid places it within 5%
+
+
+@pytest.fixture(scope="module")
+def reduced_server(web_files, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("reduced-server")
+    with running_server([CAT, web_files["song"], "-k", str(E2E_K), "--reduced"], folder,
+                        web_files["cache"]) as server:
+        yield server
+
+
+@pytest.fixture(scope="module")
+def reduced_page(browser, reduced_server):
+    page = open_app(browser, reduced_server["url"], "?render&size=4")
+    yield page
+    assert not page.errors, page.errors
+    page.close()
+
+
+def test_the_bundle_holds_the_interpolation_not_the_harmonics(reduced_server, reduced_page):
+    with urllib.request.urlopen(reduced_server["url"] + "api/library") as answer:
+        mesh = json.load(answer)["meshes"][0]
+    assert mesh["construction"] == "reduced"
+    with urllib.request.urlopen(reduced_server["url"] + f"api/meshes/{mesh['id']}/basis.bin") \
+            as answer:
+        meta, arrays = unpack(answer.read())
+    n, m = meta["n"], meta["samples"]
+    assert "harmonics" not in arrays and abs(m - SAMPLES) <= 0.05 * SAMPLES
+    assert arrays["coarse"].shape == (m, 4 * ((E2E_K + 3) // 4))
+    assert arrays["weights"].dtype == np.float16 and arrays["weights"].shape == (n, 8)
+    assert arrays["indices"].dtype == np.uint16 and arrays["indices"].max() < m
+    assert np.array_equal(arrays["weights"].astype(np.float64).sum(axis=1), np.ones(n))
+
+
+def test_gpu_and_cpu_positions_equal_python_on_a_reduced_basis(reduced_page, web_files):
+    os.environ["EIGENDANCE_CACHE_DIR"] = web_files["cache"]
+    basis = HarmonicBasis.from_mesh(CAT, E2E_K, construction="reduced")  # the server's, cached
+    assert abs(basis.reduced.count - SAMPLES) <= 0.05 * SAMPLES
+    spectrogram = Spectrogram.from_file(web_files["song"])
+    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
+
+    def error(positions, expected):
+        return np.abs(basis.to_original(np.array(positions).reshape(-1, 3)) - expected).max() \
+            / diagonal
+
+    mappings = reduced_page.evaluate("window.eigendance.mappings()")
+    for tile in (0, 3):
+        mapping = Mapping.from_json(mappings[tile])
+        for t in (0.5, 4.2):
+            expected = positions_at(basis, spectrogram, mapping, t)
+            assert np.abs(expected - basis.to_original(basis.vertices)).max() > 1e-3 * diagonal
+            for how in (f"readPositions({tile}, {t})", f"readPositions({tile}, {t}, true)",
+                        f"cpuPositions({tile}, {t})"):
+                found = reduced_page.evaluate(f"window.eigendance.{how}")
+                assert error(found, expected) < 1e-4, (how, error(found, expected))
+
+
+def test_the_player_and_breeding_work_on_a_reduced_basis(reduced_page, web_files):
+    os.environ["EIGENDANCE_CACHE_DIR"] = web_files["cache"]
+    basis = HarmonicBasis.from_mesh(CAT, E2E_K, construction="reduced")
+    spectrogram = Spectrogram.from_file(web_files["song"])
+    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
+    reduced_page.click(".tile[data-index='0'] .view")
+    reduced_page.click(".tile[data-index='2'] .view")
+    reduced_page.evaluate("window.eigendance.breed(5)")
+    assert reduced_page.evaluate("window.eigendance.info().generation") == 1
+    child = Mapping.from_json(reduced_page.evaluate("window.eigendance.mappings()")[1])
+    reduced_page.evaluate("window.eigendance.open(1)")
+    shown = np.array(reduced_page.evaluate("window.eigendance.readPositions('player', 2.0)"))
+    expected = positions_at(basis, spectrogram, child, 2.0)
+    assert np.abs(basis.to_original(shown.reshape(-1, 3)) - expected).max() / diagonal < 1e-4
+    reduced_page.evaluate("window.eigendance.setView('gallery')")
+
+
+@pytest.fixture(scope="module")
+def reduced_look_server(web_files, tmp_path_factory):
+    """A model with materials (MorphStressTest) served on a reduced basis."""
+    folder = tmp_path_factory.mktemp("reduced-look")
+    Mapping(np.linspace(0, 1, 64), np.zeros(24), name="still.json").save(folder / "still.json")
+    with running_server([LOOK_MODEL, web_files["song"], str(folder / "still.json"), "-k", "24",
+                         "--reduced"], folder, web_files["cache"]) as server:
+        yield server
+
+
+def test_a_model_with_materials_dances_alike_on_both_paths_of_a_reduced_basis(
+        browser, reduced_look_server):
+    """The drawn vertices gather their welded vertex's samples (the REDUCED define of the shared
+    surface shader) on the GPU, or take the CPU path's positions: the same dancing picture."""
+    url = reduced_look_server["url"]
+    with urllib.request.urlopen(url + "api/library") as answer:
+        library = json.load(answer)
+    assert library["meshes"][0]["construction"] == "reduced"
+    mapping_id = library["mappings"][0]["id"]
+    gpu = page_picture(browser, url, mapping_id, True, "gpu", 1.5, tile=1)
+    cpu = page_picture(browser, url, mapping_id, True, "cpu", 1.5, tile=1)
+    still = page_picture(browser, url, mapping_id, True, "cpu", 1.5)
+    assert np.mean(np.abs(cpu - still).max(axis=2) * 255 > 24) > 0.01  # it dances
+    difference = np.abs(gpu - cpu).max(axis=2) * 255
+    assert np.mean(difference > 2) < 0.002
