@@ -301,6 +301,8 @@ export class App {
     if (!failure) {
       this.messages.hint(this.options.render ? "render mode" : READY, this.transport.playing);
     }
+    await this.live.listDevices();
+    if (this.options.source) await this.startLive({ kind: this.options.source });
     return true;
   }
 
