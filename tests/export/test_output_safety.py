@@ -27,7 +27,7 @@ import eigendance.export.video
 from eigendance.cli import main
 from eigendance.export.output import Outputs
 from eigendance.files import TEMPORARY_NAME
-from helpers import fixture_path, parents, start
+from helpers import descendants, fixture_path, parents, start
 
 KNIGHT = fixture_path("meshes", "decimated-knight.off")
 
@@ -114,14 +114,6 @@ def test_outputs_never_overwrite_an_input(tmp_path):
 
 
 # --- kills ---------------------------------------------------------------------------------
-
-def descendants(pid: int) -> set[int]:
-    table, found, frontier = parents(), set(), {pid}
-    while frontier:
-        frontier = {child for child, parent in table.items() if parent in frontier} - found
-        found |= frontier
-    return found
-
 
 def command_name(pid: int) -> str:
     try:
