@@ -189,7 +189,7 @@ def test_the_server_charges_an_analysis_before_it_and_releases_it_after_a_failur
             - {key for key, item in library.rigs.items() if item.origin == "built-in"}
         seen = []
 
-        def failing(item, rig, original=None):
+        def failing(item, skeleton, run, original=None, dtype=None):
             seen.append(library.budget.used)  # charged while the analysis runs
             raise InputError("analysis failed")
 

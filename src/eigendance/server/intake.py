@@ -8,27 +8,21 @@ item per distinct content (`server.contents`): the same bytes again answer the i
 there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
+Files are read and analysed through `run` (`server.analysis` in the server's worker processes).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import json
 import os
 import shutil
 
-from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.files import check_readable, kind_of, read_json, suffix_of
+from eigendance.errors import EigendanceError, InputError
+from eigendance.files import check_readable, kind_of, suffix_of
 from eigendance.harmonic.basis import choose_construction
-from eigendance.harmonic.mesh import load_mesh
-from eigendance.modal.gltf_skin import has_skin
-from eigendance.modal.rig import Rig
-from eigendance.modal.sample_rigs import load_rig
-from eigendance.music.spectrogram import Spectrogram
-from eigendance.server import rigs
+from eigendance.server import analysis, rigs
 from eigendance.server.archive import is_archive, unpack
-from eigendance.server.binary import spectrogram_bundle
 from eigendance.server.contents import file_digest
 from eigendance.server.items import Job, MappingItem, MeshItem, RigItem, SongItem, new_id
 from eigendance.server.requests import mapping_from
@@ -51,12 +45,13 @@ class Intake:
     spectrogram_options : options of `Spectrogram.from_file`.
     construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
     unpacked_limit : the most bytes a model's zip may unpack to.
+    run : how to call `server.analysis` (`workers.Processes.run`; default `rigs.direct`: here).
     """
 
     def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,
                  spectrogram_options: dict | None = None, construction: str = "auto",
-                 unpacked_limit: int = 256 << 20):
-        self.shelf, self.solver, self.k = shelf, solver, k
+                 unpacked_limit: int = 256 << 20, run: rigs.Run = rigs.direct):
+        self.shelf, self.solver, self.k, self.run = shelf, solver, k, run
         self.construction = construction
         self.spectrogram_options = spectrogram_options or {}
         self.unpacked_limit = unpacked_limit
@@ -154,12 +149,8 @@ class Intake:
         """The item of a file (new, or the one with the same content) and whether it is new."""
         suffix = suffix_of(name)
         document = None
-        if kind == "mapping":  # a skeleton JSON is a rig, any other JSON a mapping
-            document = read_json(path, name)
-            if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
-                kind = "rig"
-        elif kind == "mesh" and suffix in (".glb", ".gltf") and has_skin(path):
-            kind = "rig"  # a skinned glTF is a rig (its skin the mesh the modes move)
+        if kind == "mapping" or suffix in (".glb", ".gltf"):
+            kind, document = self.run(analysis.classify, path, name, kind)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
             return self.add_mapping(document, name, origin)
@@ -197,8 +188,7 @@ class Intake:
         -------
         MeshItem; EigendanceError when the mesh cannot be read, InputError when it cannot fit.
         """
-        mesh = dataclasses.replace(load_mesh(path), name=name)
-        laplacian = "robust" if mesh.non_manifold_edge_count() else "cotan"
+        mesh, laplacian = self.run(analysis.read_mesh, path, name)
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
         construction = choose_construction(mesh.n, k) if self.construction == "auto" \
             else self.construction
@@ -223,14 +213,10 @@ class Intake:
         -------
         SongItem; InputError when the audio cannot be decoded or cannot fit.
         """
-        try:
-            spectrogram = Spectrogram.from_file(path, **self.spectrogram_options)
-        except EigendanceError:
-            raise
-        except Exception as error:  # noqa: BLE001 - decoders raise many types
-            raise InputError(f"{name}: cannot decode the audio ({one_line(error)})") from None
+        spectrogram, bundle = self.run(analysis.read_song, path, name,
+                                       self.spectrogram_options)
         item = SongItem(new_id(), name, path, spectrogram, content=content)
-        item.bundle = spectrogram_bundle(spectrogram, name)
+        item.bundle = bundle
         self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")
         return item
 
@@ -273,10 +259,10 @@ class Intake:
         RigItem; InputError when it is not a rig that can be analysed, or cannot fit (its
         planned memory is charged before the analysis: `rigs.planned_bytes`).
         """
-        skeleton = load_rig(path, name)
+        skeleton = self.run(analysis.read_rig, path, name)
         item = RigItem(new_id(), name, origin, path, content=content)
         with self.shelf.reserving(item.id, rigs.planned_bytes(skeleton),
                                   f"{name}: the analysis of {skeleton.n_bodies} bodies"):
-            rigs.analyse(item, Rig(skeleton))
+            rigs.analyse(item, skeleton, self.run)
             self.shelf.admit(item, self.shelf.rigs, f"{name}: the rig")
         return item

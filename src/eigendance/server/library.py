@@ -8,7 +8,9 @@ The library is the front of single-purpose parts, as trimesh's caching.py splits
 - `server.shelf`: the items by kind, charged within the memory budget (`server.memory`: what
   an item holds, least recently used first out), lookups and removal;
 - `server.solver`: the queue of bases computed one at a time;
-- `server.rigs`: rig analysis and edits.
+- `server.rigs`: rig analysis and edits;
+- `server.workers.Processes`: the worker processes that read and analyse files
+  (`server.analysis`), off the server's interpreter lock.
 
 A skinned glTF is listed once, as a rig (as a mesh if its skin cannot be analysed). `first` is
 the first model given to the server (a mesh or a rig): what the page opens first.
@@ -20,7 +22,6 @@ import os
 import threading
 
 from eigendance.errors import InputError
-from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs
 from eigendance.server.binary import appearance_bundle, basis_bundle
@@ -29,6 +30,7 @@ from eigendance.server.items import Job, MeshItem, RigItem, new_id
 from eigendance.server.memory import DEFAULT_BUDGET, Budget
 from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
+from eigendance.server.workers import Processes
 
 
 class Library:
@@ -44,8 +46,8 @@ class Library:
     construction : how mesh bases are solved: "auto" (docs/design.md#reduced-basis), "exact" or
         "reduced".
 
-    Attributes: shelf, intake, solver (the parts); folder, k, max_upload_bytes; meshes, songs,
-    mappings, rigs ({id: item}) and budget, as the shelf holds them.
+    Attributes: shelf, intake, solver, processes (the parts); folder, k, max_upload_bytes;
+    meshes, songs, mappings, rigs ({id: item}) and budget, as the shelf holds them.
     """
 
     def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
@@ -54,10 +56,11 @@ class Library:
         os.makedirs(folder, exist_ok=True)
         self.folder, self.k, self.max_upload_bytes = folder, k, max_upload_bytes
         self.shelf = Shelf(folder, Budget(memory_budget))
+        self.processes = Processes()
         self.solver = BasisSolver(self.shelf.recharge, self.shelf.public)
         self.shelf.removed = self.solver.forget
         self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
-                             UNPACKED_FACTOR * max_upload_bytes)
+                             UNPACKED_FACTOR * max_upload_bytes, self.processes.run)
         self.meshes, self.songs = self.shelf.meshes, self.shelf.songs
         self.mappings, self.rigs, self.budget = self.shelf.mappings, self.shelf.rigs, \
             self.shelf.budget
@@ -171,7 +174,7 @@ class Library:
         -------
         The item; InputError (409) when it could not be analysed.
         """
-        rigs.ready(item, self.shelf.public)
+        rigs.ready(item, self.shelf.public, self.processes.run)
         self.shelf.recharge(item)  # after the item's lock: _drop takes the library's lock first
         return item
 
@@ -181,7 +184,8 @@ class Library:
         Parameters
         ----------
         item : a rig item of this library.
-        change : rig → edited rig (`Rig.with_stiffness`, `Rig.rotate_joint`).
+        change : skeleton → edited skeleton (`Skeleton.with_stiffness`,
+            `Skeleton.rotate_joint`), analysed anew in a worker process.
 
         Returns
         -------
@@ -190,7 +194,7 @@ class Library:
         self.ready_rig(item)
         with self.shelf.reserving(f"{item.id}/edit", rigs.planned_bytes(item.rig.skeleton),
                                   f"{item.name}: an edit"):
-            bundle = rigs.edit(item, change)
+            bundle = rigs.edit(item, change, self.processes.run)
         self.shelf.budget.release(f"{item.id}/edit")
         self.shelf.recharge(item)
         return bundle
@@ -206,7 +210,7 @@ class Library:
         -------
         bytes: its rig bundle.
         """
-        return self.edit_rig(item, lambda rig: Rig(item.original, rig.dtype))
+        return self.edit_rig(item, lambda skeleton: item.original)
 
     # --- the end --------------------------------------------------------------------------------
     def wait(self, timeout: float | None = None) -> bool:
@@ -223,9 +227,11 @@ class Library:
         return self.solver.wait(timeout)
 
     def stop(self) -> None:
-        """End the work in progress at once: the solve (its workers are killed) and the queued
-        ones. Safe to call from any thread, more than once."""
+        """End the work in progress at once: the solve (its workers are killed), the queued
+        ones and the analyses (their worker processes are killed). Safe to call from any thread,
+        more than once."""
         self.solver.stop()
+        self.processes.close()
 
     def close(self, timeout: float = 2.0) -> None:
         """`stop`, then give the solve thread `timeout` seconds to end.
@@ -234,4 +240,5 @@ class Library:
         ----------
         timeout : seconds.
         """
+        self.processes.close()
         self.solver.close(timeout)

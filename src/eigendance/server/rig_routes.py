@@ -97,7 +97,7 @@ async def rig_stiffness(request: Request):
 
     Returns
     -------
-    Response, the new rig bundle (`Rig.with_stiffness`); 400 naming a bad value.
+    Response, the new rig bundle (`Skeleton.with_stiffness`); 400 naming a bad value.
     """
     rig_of(request)
     body = await json_body(request)
@@ -108,7 +108,7 @@ async def rig_stiffness(request: Request):
     item = await ready_rig(request)
     values = body.get("joints", {})
     bundle = await in_worker(library_of(request).edit_rig, item,
-                                     lambda rig: rig.with_stiffness(values, scale))
+                                     lambda skeleton: skeleton.with_stiffness(values, scale))
     return bundle_response(bundle)
 
 
@@ -121,7 +121,7 @@ async def rig_pose(request: Request):
 
     Returns
     -------
-    Response, the new rig bundle (`Rig.rotate_joint`); 400 for a joint closing a loop.
+    Response, the new rig bundle (`Skeleton.rotate_joint`); 400 for a joint closing a loop.
     """
     rig_of(request)
     body = await json_body(request)
@@ -134,7 +134,7 @@ async def rig_pose(request: Request):
     rotation = vector(rotation, "rotation (a rotation vector, radians)").tolist()
     item = await ready_rig(request)
     bundle = await in_worker(library_of(request).edit_rig, item,
-                                     lambda rig: rig.rotate_joint(joint, rotation))
+                                     lambda skeleton: skeleton.rotate_joint(joint, rotation))
     return bundle_response(bundle)
 
 

@@ -2,8 +2,9 @@
 
 The built-in rigs are listed from the start and analysed on first use; a skeleton JSON, or a
 glTF file with a skin (which is also a mesh), is analysed when added. Each rig item keeps its
-original skeleton and the current `Rig` (stiffness and rest-pose edits); every edit asks the
-current `Rig` for a new one (`Rig.with_stiffness`, `Rig.rotate_joint`), makes its bundle and
+original skeleton and the current `Rig` (stiffness and rest-pose edits); every edit changes the
+current rig's skeleton (`Skeleton.with_stiffness`, `Skeleton.rotate_joint`), analyses it anew
+and makes its bundle (`analysis.analyse_rig`, in a worker process: `workers.Processes`), and
 bumps the revision. A failed edit leaves the item as it was.
 """
 
@@ -11,13 +12,30 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+import numpy as np
+
 from eigendance.errors import EigendanceError, InputError
-from eigendance.modal.rig import Rig
-from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import skin_bytes
-from eigendance.server.binary import rig_bundle
+from eigendance.server import analysis
 from eigendance.server.items import RigItem
+
+Run = Callable[..., object]
+
+
+def direct(function, *args):
+    """function(*args) here, in this thread: the `run` of a caller without worker processes.
+
+    Parameters
+    ----------
+    function : what to call.
+    *args : its arguments.
+
+    Returns
+    -------
+    Its result.
+    """
+    return function(*args)
 
 
 def planned_bytes(skeleton: Skeleton) -> int:
@@ -36,24 +54,28 @@ def planned_bytes(skeleton: Skeleton) -> int:
     return skin_bytes(vertices, 6 * skeleton.n_bodies)
 
 
-def analyse(item: RigItem, rig: Rig, original: Skeleton | None = None) -> None:
-    """Give the item a rig and its bundle; set them (and the revision) only when the bundle is
-    made.
+def analyse(item: RigItem, skeleton: Skeleton, run: Run = direct,
+            original: Skeleton | None = None, dtype=np.float32) -> None:
+    """Give the item the rig of a skeleton and its bundle (`analysis.analyse_rig`, through
+    `run`); set them (and the revision) only when the bundle is made.
 
     Parameters
     ----------
     item : the rig item.
-    rig : the rig (loaded, or edited).
-    original : the skeleton as loaded (None: the rig's own).
+    skeleton : the skeleton (loaded, or edited).
+    run : how to call the analysis: `workers.Processes.run` (in a worker process), or `direct`.
+    original : the skeleton as loaded (None: this one).
+    dtype : the modal skin's precision.
     """
-    edited = original is not None and rig.skeleton is not original  # a reset is not an edit
-    bundle = rig_bundle(rig, item.name, item.revision + (item.rig is not None), edited)
+    edited = original is not None and skeleton is not original  # a reset is not an edit
+    rig, bundle = run(analysis.analyse_rig, skeleton, np.dtype(dtype).str, item.name,
+                      item.revision + (item.rig is not None), edited)
     item.original = original or rig.skeleton
     item.revision += item.rig is not None
     item.rig, item.bundle, item.edited = rig, bundle, edited
 
 
-def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
+def ready(item: RigItem, public: Callable[[str], str], run: Run = direct) -> RigItem:
     """The item analysed (a built-in rig is analysed on first use, a file again after its
     analysis was forgotten).
 
@@ -61,6 +83,7 @@ def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
     ----------
     item : the rig item.
     public : a message → the message as the page may see it (`Library.public`).
+    run : how to call the analysis (`analyse`).
 
     Returns
     -------
@@ -69,8 +92,8 @@ def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
     with item.lock:
         if item.rig is None and not item.error:
             try:
-                analyse(item, Rig(sample_rig(item.source) if item.origin == "built-in"
-                                  else load_rig(item.source, item.name)))
+                analyse(item, run(analysis.read_rig, item.source, item.name,
+                                  item.origin == "built-in"), run)
             except EigendanceError as error:
                 item.error = public(str(error))
         if item.error:
@@ -78,20 +101,22 @@ def ready(item: RigItem, public: Callable[[str], str]) -> RigItem:
     return item
 
 
-def edit(item: RigItem, change: Callable[[Rig], Rig]) -> bytes:
-    """Apply `change` to the item's current rig.
+def edit(item: RigItem, change: Callable[[Skeleton], Skeleton], run: Run = direct) -> bytes:
+    """Apply `change` to the skeleton of the item's current rig and analyse it anew.
 
     Parameters
     ----------
     item : an analysed rig item (`ready`).
-    change : rig → edited rig (`Rig.with_stiffness`, `Rig.rotate_joint`, …).
+    change : skeleton → edited skeleton (`Skeleton.with_stiffness`, `Skeleton.rotate_joint`,
+        or the original: a reset).
+    run : how to call the analysis (`analyse`).
 
     Returns
     -------
-    bytes: the new rig bundle; the item is unchanged when `change` raises.
+    bytes: the new rig bundle; the item is unchanged when `change` or the analysis raises.
     """
     with item.lock:
-        analyse(item, change(item.rig), original=item.original)
+        analyse(item, change(item.rig.skeleton), run, item.original, item.rig.dtype)
         return item.bundle
 
 

@@ -1,25 +1,26 @@
-"""The library's solve queue: mesh bases computed one at a time by one daemon thread
-(docs/design.md#server).
+"""The library's solve queue: mesh bases computed one at a time, each in a process of its own,
+by one daemon thread (docs/design.md#server).
 
-Each mesh item's basis is computed through `HarmonicBasis.from_mesh` (and its disk cache); its
-`Job` records the progress for the page (server-sent events) and for `progress_listeners` (the
-terminal). `stop` ends the solve in progress at once (its band worker processes are killed, the
-next progress report raises `Stopped`) and drops the queued ones; `close` also ends the thread.
+Each mesh item's basis is computed through `HarmonicBasis.from_mesh` (and its disk cache) with
+its bundle, in a worker process (`analysis.solve_basis`: the Laplacian's assembly and the
+eigen-solver hold the interpreter's lock for seconds); the thread relays its progress to the
+item's `Job`, for the page (server-sent events) and for `progress_listeners` (the terminal).
+`stop` ends the solve in progress at once (its process is killed, and its band workers with it)
+and drops the queued ones; `close` also ends the thread.
 """
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import queue
 import threading
 import time
 from collections.abc import Callable
 
-from eigendance.errors import EigendanceError, one_line
-from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
+from eigendance.errors import EigendanceError, InternalError, one_line
+from eigendance.harmonic.basis import basis_cache, basis_key
 from eigendance.harmonic.reduced import reduced_key, sample_count
-from eigendance.server.binary import basis_bundle
+from eigendance.server import analysis, workers
 from eigendance.server.items import Job, MeshItem
 
 
@@ -43,7 +44,7 @@ class BasisSolver:
         self.progress_listeners: list[Callable[[Job], None]] = []  # e.g. the terminal's bars
         self.stopping = threading.Event()
         self.solving: MeshItem | None = None
-        self.solve_children: set = set()  # processes that existed before the current solve
+        self.process = None  # the solve's process, while it runs
         self.queue: queue.Queue = queue.Queue()
         self.worker = threading.Thread(target=self._run, name="basis", daemon=True)
         self.worker.start()
@@ -89,7 +90,7 @@ class BasisSolver:
         if item.construction == "reduced":
             key = reduced_key(key, sample_count(mesh.n, item.k))
         job.cached = os.path.isfile(basis_cache().path(key))
-        self.solving, self.solve_children = item, set(multiprocessing.active_children())
+        self.solving = item
         job.update(state="running")
         self.tell(job)
 
@@ -100,11 +101,9 @@ class BasisSolver:
             self.tell(job)
 
         try:
-            basis = HarmonicBasis.from_mesh(mesh, item.k, laplacian=laplacian, progress=progress,
-                                            construction=item.construction)
+            basis, item.bundle = self._compute(item, mesh, laplacian, progress)
             if item.removed or self.stopping.is_set():
                 raise Stopped
-            item.bundle = basis_bundle(basis, item.name)
             item.basis = basis
             job.update(state="done", done=job.total)
             self.solved(item)
@@ -113,6 +112,42 @@ class BasisSolver:
         finally:
             self.solving = None
         self.tell(job)
+
+    def _compute(self, item: MeshItem, mesh, laplacian: str, progress):
+        """(basis, bundle) of a mesh item, computed in a process of its own
+        (`analysis.solve_basis`) while this thread relays its progress; the process is killed
+        when `progress` raises (`Stopped`) or the solve is stopped (`stop_solve`)."""
+        context = workers.context()
+        reader, writer = context.Pipe(duplex=False)
+        process = context.Process(target=analysis.solve_basis, name=f"basis {item.job.id}",
+                                  args=(writer, mesh, item.k, laplacian, item.construction))
+        try:
+            process.start()
+            self.process = process
+            writer.close()
+            if self.stopping.is_set() or item.removed:
+                raise Stopped
+            while True:
+                try:
+                    kind, value = reader.recv()
+                except EOFError:
+                    if item.removed or self.stopping.is_set():
+                        raise Stopped from None
+                    raise InternalError("the solve's process died (killed, or out of "
+                                        "memory)") from None
+                if kind == "done":
+                    progress(value)
+                elif kind == "error":
+                    raise value
+                else:
+                    return value
+        finally:
+            self.process = None
+            writer.close()
+            reader.close()
+            if process.pid is not None:
+                process.kill()
+                process.join()
 
     def _failure(self, item: MeshItem, error: Exception) -> str:
         if item.removed or self.stopping.is_set():
@@ -134,11 +169,10 @@ class BasisSolver:
             listener(job)
 
     def stop_solve(self) -> None:
-        """Kill the band worker processes of the solve in progress (the processes started
-        since it began): the solve fails at once instead of finishing its bands."""
-        if self.solving is None:
-            return
-        for process in set(multiprocessing.active_children()) - self.solve_children:
+        """Kill the process of the solve in progress (its band workers die with it): the solve
+        fails at once."""
+        process = self.process
+        if process is not None:
             process.kill()
 
     def wait(self, timeout: float | None = None) -> bool:

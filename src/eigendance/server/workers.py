@@ -1,20 +1,36 @@
-"""Worker threads for the app's heavy work (parsing, decoding, galleries, breeding, rig analysis,
-bundles), so that the event loop only routes and streams (docs/design.md#server).
+"""Worker threads and worker processes for the app's heavy work, so that the event loop only
+routes and streams (docs/design.md#server).
 
-`asyncio.to_thread` would do, but its threads are waited for when the process ends: a Ctrl-C
-during a 30-second decoding would take 30 seconds. These are daemon threads: the process ends
-at once, and the work in progress with it (its answer was going nowhere).
+Worker threads (`in_worker`) run every request's work that may block: parsing, galleries,
+breeding, bundles. `asyncio.to_thread` would do, but its threads are waited for when the process
+ends: a Ctrl-C during a 30-second decoding would take 30 seconds. These are daemon threads: the
+process ends at once, and the work in progress with it (its answer was going nowhere).
+
+A thread shares the interpreter's lock (the GIL) with the event loop: pure-Python work (a glTF's
+JSON into dataclasses, trimesh's OBJ parser, a rig's joint graph, `bytes.join` of a bundle)
+makes every request wait, up to 0.8 s at once. The analysis of an added file therefore runs in
+worker processes (`Processes.run`, called from a worker thread, which waits without the lock):
+a mesh file read and cleaned, a rig loaded, analysed and bundled, a song decoded. Their results
+come back pickled and are unpickled by the pool's own thread (numpy arrays by a copy).
 """
 
 from __future__ import annotations
 
 import asyncio
+import multiprocessing
 import os
 import queue
 import threading
-from concurrent.futures import Future
+from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+
+from eigendance.errors import InternalError
+from eigendance.processes import start_worker
 
 THREADS = max(4, os.cpu_count() or 1)
+PROCESSES = 2  # analyses at once; each process holds about 200 MB of imported modules at rest
+# Imported once by the fork server, so that a new worker process starts in milliseconds.
+PRELOAD = ["eigendance.server.analysis", "eigendance.harmonic.eigensolver"]
 
 
 class Workers:
@@ -80,3 +96,97 @@ async def in_worker(function, *args):
     Its result (its exception is raised here).
     """
     return await asyncio.wrap_future(WORKERS.submit(function, *args))
+
+
+class Processes:
+    """`processes` worker processes, started on first use, that die with the server.
+
+    They come from a fork server (a fresh single-threaded interpreter: the server has threads,
+    and forking a process with threads copies locks they may hold), ignore Ctrl-C, and die with
+    their parent (`processes.start_worker`). `close` kills them at once.
+
+    Parameters
+    ----------
+    processes : how many processes.
+    """
+
+    def __init__(self, processes: int = PROCESSES):
+        self.processes, self.pool, self.closed = processes, None, False
+        self.lock = threading.Lock()
+
+    def _pool(self) -> ProcessPoolExecutor:
+        with self.lock:
+            if self.closed:
+                raise InternalError("the server is stopping")
+            if self.pool is None:
+                self.pool = ProcessPoolExecutor(self.processes, mp_context=context(),
+                                                initializer=start, initargs=(os.getpid(),))
+            return self.pool
+
+    def run(self, function, *args):
+        """function(*args) in a worker process; the calling thread waits without the GIL.
+
+        Parameters
+        ----------
+        function : a module-level function (pickled by name).
+        *args : its arguments (pickled).
+
+        Returns
+        -------
+        Its result (its exception is raised here, of the same type and message).
+        InternalError when the process died (killed, or out of memory).
+        """
+        pool = self._pool()
+        try:
+            return pool.submit(function, *args).result()
+        except BrokenProcessPool:
+            with self.lock:
+                if self.pool is pool:
+                    self.pool = None
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise InternalError("the analysis's worker process died (killed, or out of "
+                                "memory)") from None
+
+    def close(self) -> None:
+        """Kill the processes and fail the work in progress at once; safe to call more than
+        once."""
+        with self.lock:
+            pool, self.pool, self.closed = self.pool, None, True
+        if pool is None:
+            return
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.kill()
+        # The call queue's feeder thread may be blocked writing to a pipe the killed processes
+        # no longer read; joining it at exit would hang the interpreter.
+        if (calls := getattr(pool, "_call_queue", None)) is not None:
+            calls.cancel_join_thread()
+        pool.shutdown(wait=False, cancel_futures=True)
+
+
+def context():
+    """The start method of the server's worker processes: a fork server, which has imported
+    PRELOAD (the server has threads: forking it would copy locks they may hold), else spawn.
+
+    Returns
+    -------
+    multiprocessing context.
+    """
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    forkserver = multiprocessing.get_context("forkserver")
+    forkserver.set_forkserver_preload(PRELOAD)
+    return forkserver
+
+
+def start(caller: int) -> None:
+    """In a new worker process: ignore Ctrl-C, die with the server (`processes.start_worker`),
+    and give freed arrays back to the system as the server does (`serve.return_freed_memory`).
+
+    Parameters
+    ----------
+    caller : the server's process id.
+    """
+    from eigendance.server.serve import return_freed_memory
+
+    start_worker(caller)
+    return_freed_memory()

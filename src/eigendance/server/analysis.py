@@ -1,0 +1,159 @@
+"""The analysis of the library's files, as run in the server's worker processes
+(`server.workers.Processes`, docs/design.md#server).
+
+Each function takes and returns picklable values only: what a file holds (a cleaned mesh, a
+skeleton, a spectrogram) or what the page is sent (a rig's analysis with its bundle). Reading a
+mesh or a rig's glTF, a rig's modal analysis and its bundle and a song's decoding are mostly
+pure Python or hold the interpreter's lock in C; in a worker process they never make the event
+loop wait.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import signal
+
+import numpy as np
+
+from eigendance.errors import EigendanceError, InputError, InternalError, one_line
+from eigendance.files import read_json, suffix_of
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.modal.gltf_skin import has_skin
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import load_rig, sample_rig
+from eigendance.modal.skeleton import Skeleton
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.processes import die_with_parent
+from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
+
+
+def classify(path: str, name: str, kind: str) -> tuple[str, object]:
+    """A file's kind by its content: a skeleton JSON is a rig, any other JSON a mapping (its
+    document returned); a skinned glTF is a rig (its skin the mesh the modes move).
+
+    Parameters
+    ----------
+    path : the file.
+    name : its name (its suffix).
+    kind : its kind by suffix (`files.kind_of`).
+
+    Returns
+    -------
+    (kind, document): the mapping's parsed JSON, else None.
+    """
+    if kind == "mapping":
+        document = read_json(path, name)
+        if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
+            return "rig", None
+        return "mapping", document
+    if kind == "mesh" and suffix_of(name) in (".glb", ".gltf") and has_skin(path):
+        return "rig", None
+    return kind, None
+
+
+def read_mesh(path: str, name: str) -> tuple[Mesh, str]:
+    """A mesh file read and cleaned (`load_mesh`), and the Laplacian its basis takes.
+
+    Parameters
+    ----------
+    path : the mesh file.
+    name : how the page calls it.
+
+    Returns
+    -------
+    (mesh, laplacian): the `Mesh` named `name`; "robust" when it has non-manifold edges, else
+    "cotan". EigendanceError when the file cannot be read.
+    """
+    mesh = dataclasses.replace(load_mesh(path), name=name)
+    return mesh, "robust" if mesh.non_manifold_edge_count() else "cotan"
+
+
+def read_rig(source: str, name: str, built_in: bool = False) -> Skeleton:
+    """A rig's skeleton with its skin: a file (skeleton JSON or skinned glTF) or a built-in rig.
+
+    Parameters
+    ----------
+    source : the file, or the built-in rig's name.
+    name : how the page calls it.
+    built_in : whether `source` names a built-in rig (`sample_rig`).
+
+    Returns
+    -------
+    Skeleton; InputError when it is not a rig that can be analysed.
+    """
+    return sample_rig(source) if built_in else load_rig(source, name)
+
+
+def analyse_rig(skeleton: Skeleton, dtype, name: str, revision: int,
+                edited: bool) -> tuple[Rig, bytes]:
+    """A skeleton's modal analysis (`Rig`, its modal skin made) and its bundle for the page.
+
+    Parameters
+    ----------
+    skeleton : bodies, joints and skin.
+    dtype : the modal skin's precision (numpy dtype).
+    name, revision, edited : the bundle's (`binary.rig_bundle`).
+
+    Returns
+    -------
+    (rig, bundle bytes).
+    """
+    rig = Rig(skeleton, np.dtype(dtype))
+    return rig, rig_bundle(rig, name, revision, edited)
+
+
+def read_song(path: str, name: str, options: dict) -> tuple[Spectrogram, bytes]:
+    """A song decoded into its spectrogram, and its bundle for the page.
+
+    Parameters
+    ----------
+    path : the audio file.
+    name : its name.
+    options : those of `Spectrogram.from_file`.
+
+    Returns
+    -------
+    (spectrogram, bundle bytes); InputError when the audio cannot be decoded.
+    """
+    try:
+        spectrogram = Spectrogram.from_file(path, **options)
+    except EigendanceError:
+        raise
+    except Exception as error:  # noqa: BLE001 - decoders raise many types
+        raise InputError(f"{name}: cannot decode the audio ({one_line(error)})") from None
+    return spectrogram, spectrogram_bundle(spectrogram, name)
+
+
+def solve_basis(connection, mesh: Mesh, k: int, laplacian: str,
+                construction: str) -> None:
+    """A mesh's basis and its bundle, in a process of its own (`solver.BasisSolver`): sends
+    ("done", harmonics) as the solve goes, then ("result", (basis, bundle bytes)) or
+    ("error", exception) on `connection`.
+
+    Parameters
+    ----------
+    connection : the writing end of a pipe to the server.
+    mesh : the cleaned mesh (its name names the bundle).
+    k : harmonics.
+    laplacian : "cotan" or "robust".
+    construction : "exact" or "reduced".
+    """
+    # Ctrl-C is the server's; the kernel kills this process when its parent (the fork server,
+    # which ends with the server) dies. No thread watches the server, as `workers.start` does:
+    # single-threaded, this process forks its band workers (`eigensolver`), whose queues hold no
+    # named semaphores that a killed solve would leave to the resource tracker.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    die_with_parent()
+    try:
+        basis = HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian, construction=construction,
+                                        progress=lambda done: connection.send(("done", done)))
+        connection.send(("result", (basis, basis_bundle(basis, mesh.name))))
+    except Exception as error:  # noqa: BLE001 - handed to the server, which reports it
+        try:
+            connection.send(("error", error))
+        except Exception:  # noqa: BLE001 - an exception that cannot be pickled
+            connection.send(("error", InternalError(
+                f"{mesh.name}: the basis failed ({type(error).__name__}: {one_line(error)})")))
+    finally:
+        connection.close()
