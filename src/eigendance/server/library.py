@@ -9,8 +9,8 @@ The library is the front of single-purpose parts, as trimesh's caching.py splits
   an item holds, least recently used first out), lookups and removal;
 - `server.solver`: the queue of bases computed one at a time;
 - `server.rigs`: rig analysis and edits;
-- `server.workers.Processes`: the worker processes that read and analyse files
-  (`server.analysis`), off the server's interpreter lock.
+- `server.workers.PROCESSES_POOL`: the worker processes that read and analyse files
+  (`server.analysis`), off the server's interpreter lock (`run`).
 
 A skinned glTF is listed once, as a rig (as a mesh if its skin cannot be analysed). `first` is
 the first model given to the server (a mesh or a rig): what the page opens first.
@@ -21,7 +21,7 @@ from __future__ import annotations
 import os
 import threading
 
-from eigendance.errors import InputError
+from eigendance.errors import InputError, InternalError
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs
 from eigendance.server.binary import appearance_bundle, basis_bundle
@@ -30,7 +30,7 @@ from eigendance.server.items import Job, MeshItem, RigItem, new_id
 from eigendance.server.memory import DEFAULT_BUDGET, Budget
 from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
-from eigendance.server.workers import Processes
+from eigendance.server.workers import PROCESSES_POOL
 
 
 class Library:
@@ -46,7 +46,7 @@ class Library:
     construction : how mesh bases are solved: "auto" (docs/design.md#reduced-basis), "exact" or
         "reduced".
 
-    Attributes: shelf, intake, solver, processes (the parts); folder, k, max_upload_bytes;
+    Attributes: shelf, intake, solver (the parts); folder, k, max_upload_bytes;
     meshes, songs, mappings, rigs ({id: item}) and budget, as the shelf holds them.
     """
 
@@ -56,11 +56,10 @@ class Library:
         os.makedirs(folder, exist_ok=True)
         self.folder, self.k, self.max_upload_bytes = folder, k, max_upload_bytes
         self.shelf = Shelf(folder, Budget(memory_budget))
-        self.processes = Processes()
         self.solver = BasisSolver(self.shelf.recharge, self.shelf.public)
         self.shelf.removed = self.solver.forget
         self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
-                             UNPACKED_FACTOR * max_upload_bytes, self.processes.run)
+                             UNPACKED_FACTOR * max_upload_bytes, self.run)
         self.meshes, self.songs = self.shelf.meshes, self.shelf.songs
         self.mappings, self.rigs, self.budget = self.shelf.mappings, self.shelf.rigs, \
             self.shelf.budget
@@ -174,7 +173,7 @@ class Library:
         -------
         The item; InputError (409) when it could not be analysed.
         """
-        rigs.ready(item, self.shelf.public, self.processes.run)
+        rigs.ready(item, self.shelf.public, self.run)
         self.shelf.recharge(item)  # after the item's lock: _drop takes the library's lock first
         return item
 
@@ -194,7 +193,7 @@ class Library:
         self.ready_rig(item)
         with self.shelf.reserving(f"{item.id}/edit", rigs.planned_bytes(item.rig.skeleton),
                                   f"{item.name}: an edit"):
-            bundle = rigs.edit(item, change, self.processes.run)
+            bundle = rigs.edit(item, change, self.run)
         self.shelf.budget.release(f"{item.id}/edit")
         self.shelf.recharge(item)
         return bundle
@@ -211,6 +210,23 @@ class Library:
         bytes: its rig bundle.
         """
         return self.edit_rig(item, lambda skeleton: item.original)
+
+    def run(self, function, *args):
+        """function(*args) in a worker process (`workers.PROCESSES_POOL`), unless the library
+        is stopping.
+
+        Parameters
+        ----------
+        function : a function of `server.analysis`.
+        *args : its arguments.
+
+        Returns
+        -------
+        Its result; InternalError once the library is stopping.
+        """
+        if self.stopping.is_set():
+            raise InternalError("the server is stopping")
+        return PROCESSES_POOL.run(function, *args)
 
     # --- the end --------------------------------------------------------------------------------
     def wait(self, timeout: float | None = None) -> bool:
@@ -231,7 +247,7 @@ class Library:
         ones and the analyses (their worker processes are killed). Safe to call from any thread,
         more than once."""
         self.solver.stop()
-        self.processes.close()
+        PROCESSES_POOL.stop()
 
     def close(self, timeout: float = 2.0) -> None:
         """`stop`, then give the solve thread `timeout` seconds to end.
@@ -240,5 +256,5 @@ class Library:
         ----------
         timeout : seconds.
         """
-        self.processes.close()
+        self.stop()
         self.solver.close(timeout)

@@ -38,6 +38,7 @@ from eigendance.music.demo_music import write_demo_wav
 from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
+from eigendance.server.workers import warm
 
 DEFAULT_PORT = 8765
 DEMO_K = 150
@@ -242,6 +243,7 @@ def library_session(**options) -> Iterator[Library]:
                 _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
             fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
             library = Library(folder, **options)
+            warm()  # the worker processes' fork server loads while the server starts
             try:
                 yield library
             finally:

@@ -101,16 +101,17 @@ class BasisSolver:
             self.tell(job)
 
         try:
-            basis, item.bundle = self._compute(item, mesh, laplacian, progress)
+            try:
+                basis, bundle = self._compute(item, mesh, laplacian, progress)
+            finally:
+                self.solving = None  # before the job ends: whoever waits for it sees no solve
             if item.removed or self.stopping.is_set():
                 raise Stopped
-            item.basis = basis
+            item.basis, item.bundle = basis, bundle
             job.update(state="done", done=job.total)
             self.solved(item)
         except Exception as error:  # noqa: BLE001 - reported to the page, never crashes the server
             job.update(state="error", message=self._failure(item, error))
-        finally:
-            self.solving = None
         self.tell(job)
 
     def _compute(self, item: MeshItem, mesh, laplacian: str, progress):

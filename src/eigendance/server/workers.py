@@ -30,7 +30,7 @@ from eigendance.processes import start_worker
 THREADS = max(4, os.cpu_count() or 1)
 PROCESSES = 2  # analyses at once; each process holds about 200 MB of imported modules at rest
 # Imported once by the fork server, so that a new worker process starts in milliseconds.
-PRELOAD = ["eigendance.server.analysis", "eigendance.harmonic.eigensolver"]
+PRELOAD = ["eigendance.server.preload"]
 
 
 class Workers:
@@ -103,7 +103,8 @@ class Processes:
 
     They come from a fork server (a fresh single-threaded interpreter: the server has threads,
     and forking a process with threads copies locks they may hold), ignore Ctrl-C, and die with
-    their parent (`processes.start_worker`). `close` kills them at once.
+    their parent (`processes.start_worker`). `stop` kills them while they work. One pool serves
+    the process (`PROCESSES`): the libraries of one process (tests) share it.
 
     Parameters
     ----------
@@ -111,17 +112,8 @@ class Processes:
     """
 
     def __init__(self, processes: int = PROCESSES):
-        self.processes, self.pool, self.closed = processes, None, False
+        self.processes, self.pool, self.busy = processes, None, 0
         self.lock = threading.Lock()
-
-    def _pool(self) -> ProcessPoolExecutor:
-        with self.lock:
-            if self.closed:
-                raise InternalError("the server is stopping")
-            if self.pool is None:
-                self.pool = ProcessPoolExecutor(self.processes, mp_context=context(),
-                                                initializer=start, initargs=(os.getpid(),))
-            return self.pool
 
     def run(self, function, *args):
         """function(*args) in a worker process; the calling thread waits without the GIL.
@@ -134,26 +126,37 @@ class Processes:
         Returns
         -------
         Its result (its exception is raised here, of the same type and message).
-        InternalError when the process died (killed, or out of memory).
+        InternalError when the process died (killed, out of memory, or `stop`).
         """
-        pool = self._pool()
+        with self.lock:
+            if self.pool is None:
+                self.pool = ProcessPoolExecutor(self.processes, mp_context=context(),
+                                                initializer=start, initargs=(os.getpid(),))
+            pool = self.pool
+            self.busy += 1
         try:
             return pool.submit(function, *args).result()
         except BrokenProcessPool:
-            with self.lock:
-                if self.pool is pool:
-                    self.pool = None
-            pool.shutdown(wait=False, cancel_futures=True)
+            self._drop(pool)
             raise InternalError("the analysis's worker process died (killed, or out of "
                                 "memory)") from None
+        finally:
+            with self.lock:
+                self.busy -= 1
 
-    def close(self) -> None:
-        """Kill the processes and fail the work in progress at once; safe to call more than
-        once."""
+    def stop(self) -> None:
+        """Kill the processes if they work, failing the work in progress at once (an idle pool
+        stays); safe to call more than once."""
         with self.lock:
-            pool, self.pool, self.closed = self.pool, None, True
-        if pool is None:
-            return
+            pool = self.pool if self.busy else None
+        if pool is not None:
+            self._drop(pool)
+
+    def _drop(self, pool: ProcessPoolExecutor) -> None:
+        """Kill the processes of `pool` and forget it (the next `run` starts a new one)."""
+        with self.lock:
+            if self.pool is pool:
+                self.pool = None
         for process in list((getattr(pool, "_processes", None) or {}).values()):
             process.kill()
         # The call queue's feeder thread may be blocked writing to a pipe the killed processes
@@ -161,6 +164,9 @@ class Processes:
         if (calls := getattr(pool, "_call_queue", None)) is not None:
             calls.cancel_join_thread()
         pool.shutdown(wait=False, cancel_futures=True)
+
+
+PROCESSES_POOL = Processes()
 
 
 def context():
@@ -176,6 +182,15 @@ def context():
     forkserver = multiprocessing.get_context("forkserver")
     forkserver.set_forkserver_preload(PRELOAD)
     return forkserver
+
+
+def warm() -> None:
+    """Start the fork server now (it imports PRELOAD in its own process, in about 2 s), so that the
+    first analysis does not wait for it; nothing without a fork server."""
+    if context().get_start_method() == "forkserver":
+        from multiprocessing import forkserver
+
+        forkserver.ensure_running()
 
 
 def start(caller: int) -> None:
