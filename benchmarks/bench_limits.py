@@ -2,9 +2,10 @@
 memory of a rig's analysis by its size, which sets MAX_BODIES and MAX_JOINTS; the peak memory of
 the allocation bombs (a glTF declaring 10⁸ vertices) refused before they allocate (each case in
 a fresh process, its address space capped at 6 GiB). With --part server, against a running
-`eigendance serve`: the worst wait of a cheap request while heavy uploads are analysed (beside
-the same requests with nothing uploaded, measured in the same run), and what 1,100 connections
-that never finish their headers do to the page's requests. Not run by CI.
+`eigendance serve`: the worst wait of a cheap request while heavy uploads are analysed and the
+mesh's basis solved (beside the same requests with nothing uploaded, measured in the same run),
+and what 1,100 connections that never finish their headers do to the page's requests. Not run by
+CI.
 
     python benchmarks/bench_limits.py [--part rigs|bombs|server|all] [--timeout 300]
 """
@@ -112,7 +113,8 @@ def bombs(timeout: float) -> None:
 
 
 def waits(port: int, upload_paths: list[str]) -> list[float]:
-    """Seconds each GET /api/config took while `upload_paths` were uploaded one after another."""
+    """Seconds each GET /api/config took while `upload_paths` were uploaded one after another
+    and the meshes' bases solved."""
     import http.client
 
     times, done = [], threading.Event()
@@ -138,6 +140,11 @@ def waits(port: int, upload_paths: list[str]) -> list[float]:
         response.read()
     if not upload_paths:
         time.sleep(5)
+    deadline = time.monotonic() + 900
+    while time.monotonic() < deadline and not all(  # and while the meshes' bases are solved
+            mesh["ready"] for mesh in json.load(urllib.request.urlopen(
+                f"http://127.0.0.1:{port}/api/library", timeout=300))["meshes"]):
+        time.sleep(0.2)
     done.set()
     ticker.join()
     return sorted(times)

@@ -2,20 +2,20 @@
 (`server.workers.Processes`, docs/design.md#server).
 
 Each function takes and returns picklable values only: what a file holds (a cleaned mesh, a
-skeleton, a spectrogram) or what the page is sent (a rig's analysis with its bundle). Reading a
-mesh or a rig's glTF, a rig's modal analysis and its bundle and a song's decoding are mostly
-pure Python or hold the interpreter's lock in C; in a worker process they never make the event
-loop wait.
+skeleton) or what the page is sent (a rig's analysis, a basis, with their bundles). Reading a
+mesh or a rig's glTF, a rig's modal analysis, a basis's solve and their bundles are mostly pure
+Python or hold the interpreter's lock in C; in a worker process they never make the event loop
+wait. A song is decoded (`read_song`) in a worker thread of the server: librosa's numba kernels
+load once per process, in about 4 s, which a new worker process would pay for every song.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import signal
 
 import numpy as np
 
-from eigendance.errors import EigendanceError, InputError, InternalError, one_line
+from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import read_json, suffix_of
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh, load_mesh
@@ -24,7 +24,6 @@ from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.music.spectrogram import Spectrogram
-from eigendance.processes import die_with_parent
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 
@@ -125,35 +124,22 @@ def read_song(path: str, name: str, options: dict) -> tuple[Spectrogram, bytes]:
     return spectrogram, spectrogram_bundle(spectrogram, name)
 
 
-def solve_basis(connection, mesh: Mesh, k: int, laplacian: str,
-                construction: str) -> None:
-    """A mesh's basis and its bundle, in a process of its own (`solver.BasisSolver`): sends
-    ("done", harmonics) as the solve goes, then ("result", (basis, bundle bytes)) or
-    ("error", exception) on `connection`.
+def solve_basis(mesh: Mesh, k: int, laplacian: str, construction: str,
+                progress=None) -> tuple[HarmonicBasis, bytes]:
+    """A mesh's basis (`HarmonicBasis.from_mesh`, with its disk cache) and its bundle.
 
     Parameters
     ----------
-    connection : the writing end of a pipe to the server.
     mesh : the cleaned mesh (its name names the bundle).
     k : harmonics.
     laplacian : "cotan" or "robust".
     construction : "exact" or "reduced".
+    progress : None, or a callable given the harmonics done.
+
+    Returns
+    -------
+    (basis, bundle bytes).
     """
-    # Ctrl-C is the server's; the kernel kills this process when its parent (the fork server,
-    # which ends with the server) dies. No thread watches the server, as `workers.start` does:
-    # single-threaded, this process forks its band workers (`eigensolver`), whose queues hold no
-    # named semaphores that a killed solve would leave to the resource tracker.
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    die_with_parent()
-    try:
-        basis = HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian, construction=construction,
-                                        progress=lambda done: connection.send(("done", done)))
-        connection.send(("result", (basis, basis_bundle(basis, mesh.name))))
-    except Exception as error:  # noqa: BLE001 - handed to the server, which reports it
-        try:
-            connection.send(("error", error))
-        except Exception:  # noqa: BLE001 - an exception that cannot be pickled
-            connection.send(("error", InternalError(
-                f"{mesh.name}: the basis failed ({type(error).__name__}: {one_line(error)})")))
-    finally:
-        connection.close()
+    basis = HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian, construction=construction,
+                                    progress=progress)
+    return basis, basis_bundle(basis, mesh.name)

@@ -8,7 +8,8 @@ item per distinct content (`server.contents`): the same bytes again answer the i
 there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
-Files are read and analysed through `run` (`server.analysis` in the server's worker processes).
+Files are read and analysed through `run` (`server.analysis` in the server's worker processes;
+songs in the calling worker thread).
 """
 
 from __future__ import annotations
@@ -213,8 +214,9 @@ class Intake:
         -------
         SongItem; InputError when the audio cannot be decoded or cannot fit.
         """
-        spectrogram, bundle = self.run(analysis.read_song, path, name,
-                                       self.spectrogram_options)
+        # In this thread: librosa's numba kernels load once per process (about 4 s), which a
+        # worker process would pay for every song.
+        spectrogram, bundle = analysis.read_song(path, name, self.spectrogram_options)
         item = SongItem(new_id(), name, path, spectrogram, content=content)
         item.bundle = bundle
         self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")

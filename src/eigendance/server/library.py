@@ -9,7 +9,7 @@ The library is the front of single-purpose parts, as trimesh's caching.py splits
   an item holds, least recently used first out), lookups and removal;
 - `server.solver`: the queue of bases computed one at a time;
 - `server.rigs`: rig analysis and edits;
-- `server.workers.PROCESSES_POOL`: the worker processes that read and analyse files
+- `server.workers.run`: the worker processes that read and analyse files
   (`server.analysis`), off the server's interpreter lock (`run`).
 
 A skinned glTF is listed once, as a rig (as a mesh if its skin cannot be analysed). `first` is
@@ -23,14 +23,13 @@ import threading
 
 from eigendance.errors import InputError, InternalError
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
-from eigendance.server import rigs
+from eigendance.server import rigs, workers
 from eigendance.server.binary import appearance_bundle, basis_bundle
 from eigendance.server.intake import UNPACKED_FACTOR, Intake
 from eigendance.server.items import Job, MeshItem, RigItem, new_id
 from eigendance.server.memory import DEFAULT_BUDGET, Budget
 from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
-from eigendance.server.workers import PROCESSES_POOL
 
 
 class Library:
@@ -212,8 +211,8 @@ class Library:
         return self.edit_rig(item, lambda skeleton: item.original)
 
     def run(self, function, *args):
-        """function(*args) in a worker process (`workers.PROCESSES_POOL`), unless the library
-        is stopping.
+        """function(*args) in a worker process (`workers.run`), unless the library is
+        stopping.
 
         Parameters
         ----------
@@ -226,7 +225,7 @@ class Library:
         """
         if self.stopping.is_set():
             raise InternalError("the server is stopping")
-        return PROCESSES_POOL.run(function, *args)
+        return workers.run(function, *args)
 
     # --- the end --------------------------------------------------------------------------------
     def wait(self, timeout: float | None = None) -> bool:
@@ -247,7 +246,7 @@ class Library:
         ones and the analyses (their worker processes are killed). Safe to call from any thread,
         more than once."""
         self.solver.stop()
-        PROCESSES_POOL.stop()
+        workers.stop()
 
     def close(self, timeout: float = 2.0) -> None:
         """`stop`, then give the solve thread `timeout` seconds to end.

@@ -1,12 +1,11 @@
 """What the fork server of the server's worker processes imports once, before it forks any
 (`server.workers.PRELOAD`, docs/design.md#server): the analysis and the eigen-solver, so that
-every worker process starts in a few milliseconds with them. Only the fork server imports this
-module. (librosa's numba kernels are not loaded here: that takes about 4 s even from numba's
-disk cache, which every `serve` would pay at start; a worker pays it at its first song.)
+every worker process starts in a few tens of milliseconds with them. Only the fork server
+imports this module.
 """
 
 from __future__ import annotations
 
 import eigendance.harmonic.eigensolver  # noqa: F401 - imported for the worker processes
 import eigendance.server.analysis  # noqa: F401
-import eigendance.server.serve  # noqa: F401 - workers.start gives freed memory back through it
+import eigendance.server.serve  # noqa: F401 - workers.work gives freed memory back through it

@@ -115,40 +115,21 @@ class BasisSolver:
         self.tell(job)
 
     def _compute(self, item: MeshItem, mesh, laplacian: str, progress):
-        """(basis, bundle) of a mesh item, computed in a process of its own
-        (`analysis.solve_basis`) while this thread relays its progress; the process is killed
-        when `progress` raises (`Stopped`) or the solve is stopped (`stop_solve`)."""
-        context = workers.context()
-        reader, writer = context.Pipe(duplex=False)
-        process = context.Process(target=analysis.solve_basis, name=f"basis {item.job.id}",
-                                  args=(writer, mesh, item.k, laplacian, item.construction))
+        """(basis, bundle) of a mesh item, computed in a worker process (`analysis.solve_basis`)
+        while this thread relays its progress; the process is killed when `progress` raises
+        (`Stopped`) or the solve is stopped (`stop_solve`)."""
+        if self.stopping.is_set() or item.removed:
+            raise Stopped
         try:
-            process.start()
-            self.process = process
-            writer.close()
-            if self.stopping.is_set() or item.removed:
-                raise Stopped
-            while True:
-                try:
-                    kind, value = reader.recv()
-                except EOFError:
-                    if item.removed or self.stopping.is_set():
-                        raise Stopped from None
-                    raise InternalError("the solve's process died (killed, or out of "
-                                        "memory)") from None
-                if kind == "done":
-                    progress(value)
-                elif kind == "error":
-                    raise value
-                else:
-                    return value
+            return workers.run(analysis.solve_basis, mesh, item.k, laplacian,
+                               item.construction, progress=progress,
+                               started=lambda process: setattr(self, "process", process))
+        except InternalError:
+            if item.removed or self.stopping.is_set():
+                raise Stopped from None
+            raise
         finally:
             self.process = None
-            writer.close()
-            reader.close()
-            if process.pid is not None:
-                process.kill()
-                process.join()
 
     def _failure(self, item: MeshItem, error: Exception) -> str:
         if item.removed or self.stopping.is_set():
@@ -174,7 +155,10 @@ class BasisSolver:
         fails at once."""
         process = self.process
         if process is not None:
-            process.kill()
+            try:
+                process.kill()
+            except (ValueError, AttributeError):  # ended meanwhile
+                pass
 
     def wait(self, timeout: float | None = None) -> bool:
         """Block until every job has finished (tests, the command line).

@@ -9,9 +9,9 @@ process ends at once, and the work in progress with it (its answer was going now
 A thread shares the interpreter's lock (the GIL) with the event loop: pure-Python work (a glTF's
 JSON into dataclasses, trimesh's OBJ parser, a rig's joint graph, `bytes.join` of a bundle)
 makes every request wait, up to 0.8 s at once. The analysis of an added file therefore runs in
-worker processes (`Processes.run`, called from a worker thread, which waits without the lock):
-a mesh file read and cleaned, a rig loaded, analysed and bundled, a song decoded. Their results
-come back pickled and are unpickled by the pool's own thread (numpy arrays by a copy).
+a worker process of its own (`run`, called from a worker thread, which waits without the lock):
+a mesh file read and cleaned, a rig loaded, analysed and bundled, a song decoded, a basis
+solved. Their results come back through `server.transfer`, without a copy under the lock.
 """
 
 from __future__ import annotations
@@ -20,15 +20,19 @@ import asyncio
 import multiprocessing
 import os
 import queue
+import signal
+import socket
 import threading
-from concurrent.futures import Future, ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
+from concurrent.futures import Future
 
-from eigendance.errors import InternalError
-from eigendance.processes import start_worker
+from eigendance.errors import InternalError, one_line
+from eigendance.processes import die_with_parent
+from eigendance.server import transfer
 
 THREADS = max(4, os.cpu_count() or 1)
-PROCESSES = 2  # analyses at once; each process holds about 200 MB of imported modules at rest
+# A worker process yields the processors to the server's event loop (and its band workers too,
+# which inherit it): on 2 busy cores, the loop otherwise waited up to 0.14 s for a time slice.
+NICE = 10
 # Imported once by the fork server, so that a new worker process starts in milliseconds.
 PRELOAD = ["eigendance.server.preload"]
 
@@ -98,75 +102,107 @@ async def in_worker(function, *args):
     return await asyncio.wrap_future(WORKERS.submit(function, *args))
 
 
-class Processes:
-    """`processes` worker processes, started on first use, that die with the server.
+RUNNING: set = set()  # the worker processes at work (`run`), killed by `stop`
+RUNNING_LOCK = threading.Lock()
 
-    They come from a fork server (a fresh single-threaded interpreter: the server has threads,
-    and forking a process with threads copies locks they may hold), ignore Ctrl-C, and die with
-    their parent (`processes.start_worker`). `stop` kills them while they work. One pool serves
-    the process (`PROCESSES`): the libraries of one process (tests) share it.
+
+def run(function, *args, progress=None, started=None):
+    """function(*args) in a new worker process; the calling thread waits without the GIL.
+
+    The process comes from a fork server (`context`), ignores Ctrl-C and dies with the server
+    (`work`); it ends with the call. Its result comes back through `server.transfer`.
 
     Parameters
     ----------
-    processes : how many processes.
+    function : a module-level function (pickled by name).
+    *args : its arguments (pickled).
+    progress : None, or a callable given each value the function reports through its own
+        `progress` keyword (it may raise to stop the work: the process is killed).
+    started : None, or a callable given the process once it runs (to kill it).
+
+    Returns
+    -------
+    Its result (its exception is raised here, of the same type and message).
+    InternalError when the process died (killed, out of memory, or `stop`).
     """
-
-    def __init__(self, processes: int = PROCESSES):
-        self.processes, self.pool, self.busy = processes, None, 0
-        self.lock = threading.Lock()
-
-    def run(self, function, *args):
-        """function(*args) in a worker process; the calling thread waits without the GIL.
-
-        Parameters
-        ----------
-        function : a module-level function (pickled by name).
-        *args : its arguments (pickled).
-
-        Returns
-        -------
-        Its result (its exception is raised here, of the same type and message).
-        InternalError when the process died (killed, out of memory, or `stop`).
-        """
-        with self.lock:
-            if self.pool is None:
-                self.pool = ProcessPoolExecutor(self.processes, mp_context=context(),
-                                                initializer=start, initargs=(os.getpid(),))
-            pool = self.pool
-            self.busy += 1
-        try:
-            return pool.submit(function, *args).result()
-        except BrokenProcessPool:
-            self._drop(pool)
-            raise InternalError("the analysis's worker process died (killed, or out of "
-                                "memory)") from None
-        finally:
-            with self.lock:
-                self.busy -= 1
-
-    def stop(self) -> None:
-        """Kill the processes if they work, failing the work in progress at once (an idle pool
-        stays); safe to call more than once."""
-        with self.lock:
-            pool = self.pool if self.busy else None
-        if pool is not None:
-            self._drop(pool)
-
-    def _drop(self, pool: ProcessPoolExecutor) -> None:
-        """Kill the processes of `pool` and forget it (the next `run` starts a new one)."""
-        with self.lock:
-            if self.pool is pool:
-                self.pool = None
-        for process in list((getattr(pool, "_processes", None) or {}).values()):
+    mine, theirs = socket.socketpair()
+    process = context().Process(target=work, name=f"eigendance {function.__name__}",
+                                args=(theirs, function, args, progress is not None))
+    try:
+        process.start()
+        theirs.close()
+        with RUNNING_LOCK:
+            RUNNING.add(process)
+        if started is not None:
+            started(process)
+        while True:
+            try:
+                kind, value = transfer.receive(mine)
+            except (EOFError, OSError):
+                raise InternalError("the analysis's worker process died (killed, or out of "
+                                    "memory)") from None
+            if kind == "progress":
+                progress(value)
+            elif kind == "error":
+                raise value
+            else:
+                return value
+    finally:
+        theirs.close()
+        mine.close()
+        with RUNNING_LOCK:
+            RUNNING.discard(process)
+        if process.pid is not None:
             process.kill()
-        # The call queue's feeder thread may be blocked writing to a pipe the killed processes
-        # no longer read; joining it at exit would hang the interpreter.
-        if (calls := getattr(pool, "_call_queue", None)) is not None:
-            calls.cancel_join_thread()
-        pool.shutdown(wait=False, cancel_futures=True)
+            process.join()
+            process.close()
 
 
-PROCESSES_POOL = Processes()
+def stop() -> None:
+    """Kill the worker processes at work: their calls fail at once (InternalError)."""
+    with RUNNING_LOCK:
+        running = list(RUNNING)
+    for process in running:
+        try:
+            process.kill()
+        except (ValueError, AttributeError):  # ended meanwhile
+            pass
+
+
+def work(connection: socket.socket, function, args: tuple, progress: bool) -> None:
+    """The worker process of `run`: call function(*args), send its result or its exception.
+
+    Ctrl-C is the server's; the kernel kills this process when its parent (the fork server,
+    which ends with the server) dies (`processes.die_with_parent`); it runs at a lower priority
+    (NICE) than the server. No thread watches the server,
+    as `processes.start_worker` does: single-threaded, this process forks its own workers (the
+    eigen-solver's bands), whose queues hold no named semaphores that a killed process would
+    leave to the resource tracker.
+
+    Parameters
+    ----------
+    connection : the socket to the server.
+    function, args : the call.
+    progress : whether to give the function a `progress` keyword that sends what it reports.
+    """
+    from eigendance.server.serve import return_freed_memory
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    die_with_parent()
+    return_freed_memory()
+    os.nice(NICE)
+    try:
+        keywords = {"progress": lambda done: transfer.send(connection, ("progress", done))} \
+            if progress else {}
+        message = ("result", function(*args, **keywords))
+    except Exception as error:  # noqa: BLE001 - handed to the server, which reports it
+        message = ("error", error)
+    try:
+        transfer.send(connection, message)
+    except Exception as error:  # noqa: BLE001 - a result that cannot be pickled
+        transfer.send(connection, ("error", InternalError(
+            f"{function.__name__}: {type(error).__name__}: {one_line(error)}")))
+    connection.close()
 
 
 def context():
@@ -191,17 +227,3 @@ def warm() -> None:
         from multiprocessing import forkserver
 
         forkserver.ensure_running()
-
-
-def start(caller: int) -> None:
-    """In a new worker process: ignore Ctrl-C, die with the server (`processes.start_worker`),
-    and give freed arrays back to the system as the server does (`serve.return_freed_memory`).
-
-    Parameters
-    ----------
-    caller : the server's process id.
-    """
-    from eigendance.server.serve import return_freed_memory
-
-    start_worker(caller)
-    return_freed_memory()
