@@ -16,6 +16,7 @@ import threading
 import time
 
 import httpx
+import numpy as np
 import pytest
 import trimesh
 from starlette.testclient import TestClient
@@ -24,6 +25,8 @@ from web_helpers import free_port, write_icosphere, write_song
 import eigendance.server.requests as requests_module
 import eigendance.server.rig_routes as rig_routes_module
 import eigendance.server.routes as routes_module
+from eigendance.errors import InputError, InternalError
+from eigendance.server import analysis, workers
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.items import MeshItem
@@ -472,6 +475,35 @@ def test_worker_threads_hand_back_results_and_errors_and_never_hold_the_process(
         workers.submit(int, "bad").result(timeout=10)
     busy = [thread for thread in threading.enumerate() if thread.name.startswith("worker-")]
     assert busy and all(thread.daemon for thread in busy)
+
+
+def test_worker_processes_hand_back_results_and_errors_whole_and_die_when_stopped(tmp_path):
+    """`workers.run`: arrays and large bytes come back equal (out of band, `server.transfer`),
+    arrays writable; an InputError keeps its status; a stopped process is an InternalError."""
+    values = np.arange(300_000, dtype=np.float64).reshape(-1, 3)
+    big = bytes(range(256)) * 8192  # 2 MiB: out of band
+    back = workers.run(tuple, [values, big, "small", b"tiny"])
+    assert np.array_equal(back[0], values) and back[0].dtype == values.dtype
+    assert back[0].flags.writeable and back[1:] == (big, "small", b"tiny")
+    with pytest.raises(InputError, match="missing.obj") as caught:
+        workers.run(analysis.read_mesh, str(tmp_path / "missing.obj"), "missing.obj")
+    assert caught.value.status in (400, 404)
+    failed = []
+
+    def sleep():
+        try:
+            workers.run(time.sleep, 60)
+        except InternalError as error:
+            failed.append(str(error))
+
+    thread = threading.Thread(target=sleep)
+    thread.start()
+    deadline = time.monotonic() + 30
+    while not workers.RUNNING and time.monotonic() < deadline:
+        time.sleep(0.02)
+    workers.stop()
+    thread.join(30)
+    assert failed and "died" in failed[0] and not workers.RUNNING
 
 
 # --- the end of the server --------------------------------------------------------------------

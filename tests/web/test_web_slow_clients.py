@@ -153,8 +153,8 @@ def test_the_event_loop_answers_while_heavy_uploads_are_analysed(tmp_path):
     """Cheap requests keep being answered while a rig near the size limit and a mesh are
     analysed (in worker processes), until the mesh's basis is solved. The bound is generous for
     a loaded 2-core machine; the precise figures are benchmarks/bench_limits.py --part server's
-    (55 ms at worst on that machine; 0.6–0.8 s when the analysis ran in worker threads, whose
-    pure Python held the GIL)."""
+    (6–55 ms at worst on that machine; up to 0.8 s when the analysis ran in worker threads,
+    whose pure Python held the GIL)."""
     heavy = [chain_gltf(tmp_path / "chain.glb", 250), write_icosphere(tmp_path / "ball.obj", 4)]
     with live_server(tmp_path) as port:
         latencies, done = [], threading.Event()
