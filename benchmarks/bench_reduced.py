@@ -277,13 +277,14 @@ def exports() -> None:
     print(f"\nexports: fertility ×256, n = {result['n']}, m = {result['m']} samples, a 3-minute "
           f"song at 30 fps ({result['frames']} frames), the gallery item driving the most "
           f"harmonics ({result['driven']}); load {load()}")
-    print(f"  glb, skin on the samples (written): {result['bytes'] / mb:.0f} MB in "
-          f"{result['seconds']:.0f} s, peak {result['peak']:.2f} GB (planned "
-          f"{result['skin'] / mb:.0f} MB)")
+    written = result["bytes"]
+    print(f"  glb, skin on the samples (written): {written / mb:.1f} MB in "
+          f"{result['seconds']:.0f} s, peak {result['peak']:.2f} GB (planned binary chunk "
+          f"{result['skin'] / mb:.1f} MB; the rest is the JSON and the headers)")
     print(f"  the same dance as morph targets: the {result['driven']} driven harmonics "
-          f"{result['morph targets'] / mb:.0f} MB ({result['skin'] / result['morph targets']:.2f}"
+          f"{result['morph targets'] / mb:.0f} MB ({written / result['morph targets']:.2f}"
           f"×); all k = {K} harmonics {result['all k'] / mb:.0f} MB "
-          f"({result['skin'] / result['all k']:.3f}×, ≤ 1/8 asked)")
+          f"({written / result['all k']:.3f}×, ≤ 1/8 = 0.125 asked)")
     print(f"  as a point cache: {result['pc2'] / mb:.0f} MB (written only with --force)")
     print(f"  the page's basis bundle: {result['bundle'] / mb:.1f} MB, of which "
           f"{result['sent'] / mb:.1f} MB of coarse basis, weights and indices (≤ 64 MB asked); "

@@ -16,8 +16,9 @@
   as JOINTS_0/1, WEIGHTS_0/1: the joint matrix is a translation by D_j(t), so a viewer plays
   rest + Σ_j w_ij D_j(t) — the reduced dance, with the weights as normalised unsigned shorts
   (whole numbers of 1/65535 summing to exactly 65535 by largest remainders: each within
-  1/65535 of P's, so a vertex is within 8/65535 of its largest joint displacement). Its size is m·T translations instead of
-  d·n displacements; the translations are computed joint by joint as the file is written.
+  1/65535 of P's, so a vertex is within 8/65535 of its largest joint displacement). Its size
+  is m·T translations instead of d·n displacements; the translations are computed joint by
+  joint as the file is written.
 - A `RigDance` becomes a skin: one joint node per body, bound in the body's rest frame B_b
   (inverse bind matrix B_b⁻¹), animated by translation and rotation channels so that its world
   transform is T_b(t_i)·B_b; a viewer's joint matrix T_b·B_b·B_b⁻¹ = T_b then plays linear blend
