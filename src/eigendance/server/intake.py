@@ -21,7 +21,7 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError
 from eigendance.files import check_readable, kind_of, suffix_of
-from eigendance.harmonic.basis import choose_construction
+from eigendance.harmonic.construction import choose_construction
 from eigendance.server import analysis, rigs
 from eigendance.server.archive import is_archive, unpack
 from eigendance.server.contents import file_digest

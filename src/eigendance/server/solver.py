@@ -18,7 +18,7 @@ import time
 from collections.abc import Callable
 
 from eigendance.errors import EigendanceError, InternalError, one_line
-from eigendance.harmonic.basis import basis_cache, basis_key
+from eigendance.harmonic.construction import basis_cache, basis_key
 from eigendance.harmonic.reduced import reduced_key, sample_count
 from eigendance.server import analysis, workers
 from eigendance.server.items import Job, MeshItem
