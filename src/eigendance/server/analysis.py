@@ -1,5 +1,5 @@
 """The analysis of the library's files, as run in the server's worker processes
-(`server.workers.Processes`, docs/design.md#server).
+(`server.workers.run`, docs/design.md#server).
 
 Each function takes and returns picklable values only: what a file holds (a cleaned mesh, a
 skeleton) or what the page is sent (a rig's analysis, a basis, with their bundles). Reading a

@@ -46,7 +46,8 @@ class Intake:
     spectrogram_options : options of `Spectrogram.from_file`.
     construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
     unpacked_limit : the most bytes a model's zip may unpack to.
-    run : how to call `server.analysis` (`workers.Processes.run`; default `rigs.direct`: here).
+    run : how to call `server.analysis` (`Library.run`: in a worker process; default
+        `rigs.direct`: here).
     """
 
     def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,

@@ -4,7 +4,7 @@ The built-in rigs are listed from the start and analysed on first use; a skeleto
 glTF file with a skin (which is also a mesh), is analysed when added. Each rig item keeps its
 original skeleton and the current `Rig` (stiffness and rest-pose edits); every edit changes the
 current rig's skeleton (`Skeleton.with_stiffness`, `Skeleton.rotate_joint`), analyses it anew
-and makes its bundle (`analysis.analyse_rig`, in a worker process: `workers.Processes`), and
+and makes its bundle (`analysis.analyse_rig`, in a worker process: `workers.run`), and
 bumps the revision. A failed edit leaves the item as it was.
 """
 
@@ -63,7 +63,7 @@ def analyse(item: RigItem, skeleton: Skeleton, run: Run = direct,
     ----------
     item : the rig item.
     skeleton : the skeleton (loaded, or edited).
-    run : how to call the analysis: `workers.Processes.run` (in a worker process), or `direct`.
+    run : how to call the analysis: `Library.run` (in a worker process), or `direct`.
     original : the skeleton as loaded (None: this one).
     dtype : the modal skin's precision.
     """
