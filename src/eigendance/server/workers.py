@@ -174,10 +174,9 @@ def work(connection: socket.socket, function, args: tuple, progress: bool) -> No
 
     Ctrl-C is the server's; the kernel kills this process when its parent (the fork server,
     which ends with the server) dies (`processes.die_with_parent`); it runs at a lower priority
-    (NICE) than the server. No thread watches the server,
-    as `processes.start_worker` does: single-threaded, this process forks its own workers (the
-    eigen-solver's bands), whose queues hold no named semaphores that a killed process would
-    leave to the resource tracker.
+    (NICE) than the server. No thread watches the server, as `processes.start_worker` does:
+    single-threaded, this process forks its own workers (the eigen-solver's bands), whose
+    queues hold no named semaphores that a killed process would leave to the resource tracker.
 
     Parameters
     ----------
