@@ -8,4 +8,3 @@ from __future__ import annotations
 
 import eigendance.harmonic.eigensolver  # noqa: F401 - imported for the worker processes
 import eigendance.server.analysis  # noqa: F401
-import eigendance.server.serve  # noqa: F401 - workers.work gives freed memory back through it

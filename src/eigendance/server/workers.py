@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import asyncio
 import multiprocessing
+import multiprocessing.forkserver
 import os
 import queue
 import signal
@@ -184,11 +185,8 @@ def work(connection: socket.socket, function, args: tuple, progress: bool) -> No
     function, args : the call.
     progress : whether to give the function a `progress` keyword that sends what it reports.
     """
-    from eigendance.server.serve import return_freed_memory
-
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     die_with_parent()
-    return_freed_memory()
     os.nice(NICE)
     try:
         keywords = {"progress": lambda done: transfer.send(connection, ("progress", done))} \
@@ -223,6 +221,4 @@ def warm() -> None:
     """Start the fork server now (it imports PRELOAD in its own process, in about 2 s), so that the
     first analysis does not wait for it; nothing without a fork server."""
     if context().get_start_method() == "forkserver":
-        from multiprocessing import forkserver
-
-        forkserver.ensure_running()
+        multiprocessing.forkserver.ensure_running()
