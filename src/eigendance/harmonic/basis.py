@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, checked_array, load_npz
+from eigendance.files import checked_array, load_npz
 from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.deform import Deformer
@@ -36,6 +36,7 @@ from eigendance.harmonic.reduced import (
     solve_bytes,
 )
 from eigendance.limits import check_memory, memory_budget
+from eigendance.writes import atomic_save_npz
 
 FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
                "coefficients", "residual", "laplacian")
