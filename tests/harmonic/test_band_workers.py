@@ -100,3 +100,48 @@ def test_bands_solved_from_a_thread_equal_bands_solved_from_the_main_thread():
     worker.join(120)
     main_values, _ = solve_bands(stiffness, mass, 200, per_band=40)
     np.testing.assert_allclose(results["thread"][0], main_values, rtol=1e-9, atol=1e-9)
+
+
+# A caller interrupted while its workers stream large bands back (SIGALRM raises Ctrl-C's
+# KeyboardInterrupt after `delay` s): the killed workers often leave half a band in the
+# result pipe. Before the fix the pool's reader thread waited for the rest forever and the
+# interpreter for that thread at exit (half of these runs hung; `basis` hung after SIGTERM).
+INTERRUPTED_STREAM = """
+import signal, sys
+import numpy as np
+from eigendance.harmonic import eigensolver
+
+BAND = np.ones(8_000_000)  # 64 MB: the workers spend their time sending results
+
+
+def band(arguments):
+    return BAND
+
+
+def interrupt(*_):
+    raise KeyboardInterrupt
+
+
+eigensolver._band_worker = band  # the forked workers inherit it
+signal.signal(signal.SIGALRM, interrupt)
+signal.setitimer(signal.ITIMER_REAL, float(sys.argv[1]))
+try:
+    with eigensolver._Workers(2) as run:
+        while True:
+            run([None] * 4)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+"""
+
+
+@pytest.mark.parametrize("delay", [0.5, 0.6, 0.7, 0.8])
+def test_a_caller_interrupted_mid_band_exits(delay):
+    process = start([sys.executable, "-c", INTERRUPTED_STREAM, str(delay)],
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        output, errors = process.communicate(timeout=60)  # a hang fails, load does not
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.communicate()
+        pytest.fail("the interrupted caller did not exit")
+    assert output == "interrupted\n" and errors == "" and process.returncode == 0

@@ -547,7 +547,11 @@ class _Workers:
                 context.set_forkserver_preload([__name__])
             self.pool = ProcessPoolExecutor(self.workers, mp_context=context,
                                             initializer=start_worker, initargs=(os.getpid(),))
-        return list(self.pool.map(_band_worker, arguments))
+        # Not `map`: on an interruption it cancels the queued futures from this thread while
+        # the pool's own thread may be failing them (`__exit__`), which CPython 3.11 reports
+        # as an InvalidStateError traceback. Unfinished futures are left to the pool.
+        futures = [self.pool.submit(_band_worker, each) for each in arguments]
+        return [future.result() for future in futures]
 
     def __exit__(self, kind, *exception):
         if self.pool is None:
@@ -559,6 +563,12 @@ class _Workers:
             # workers no longer read; joining it at exit would hang the interpreter.
             if (calls := getattr(self.pool, "_call_queue", None)) is not None:
                 calls.cancel_join_thread()
+            # A worker killed while it sent a band leaves half a message in the result pipe:
+            # the pool's thread reading it would wait for the rest forever, and the
+            # interpreter for that thread at exit (`basis` hung after SIGTERM), because this
+            # process holds the pipe's writing end too. Closing it turns the wait into an EOF.
+            if (results := getattr(self.pool, "_result_queue", None)) is not None:
+                results._writer.close()
         self.pool.shutdown(wait=kind is None, cancel_futures=True)
 
 
