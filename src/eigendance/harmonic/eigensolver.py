@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import multiprocessing
 import os
+import sys
 import threading
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
@@ -542,6 +543,8 @@ class _Workers:
                 method = "fork"
             else:
                 method = "forkserver" if "forkserver" in methods else "spawn"
+            if method != "fork":
+                _quiet_resource_tracker()
             context = multiprocessing.get_context(method)
             if method == "forkserver":
                 context.set_forkserver_preload([__name__])
@@ -570,6 +573,27 @@ class _Workers:
             if (results := getattr(self.pool, "_result_queue", None)) is not None:
                 results._writer.close()
         self.pool.shutdown(wait=kind is None, cancel_futures=True)
+
+
+# How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
+TRACKER_WARNING = "ignore:resource_tracker:UserWarning"
+
+
+def _quiet_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker with its leak warning ignored.
+
+    A fork server's queues hold named semaphores that the tracker (a child process sharing our
+    stderr) unlinks if we die without doing it. When the web server is killed by SIGKILL it
+    does so and prints "resource_tracker: There appear to be 5 leaked semaphore objects" under
+    the dead server's output; the semaphores are cleaned up all the same. The tracker's
+    interpreter gets the parent's `-W` options (sys.warnoptions) when it starts, the first time
+    a fork server or a spawned process needs it.
+    """
+    from multiprocessing import resource_tracker
+
+    if TRACKER_WARNING not in sys.warnoptions:
+        sys.warnoptions.append(TRACKER_WARNING)
+    resource_tracker.ensure_running()
 
 
 def _assemble(pieces, k: int, n: int):
