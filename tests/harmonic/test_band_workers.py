@@ -114,7 +114,7 @@ def test_bands_solved_from_a_thread_equal_bands_solved_from_the_main_thread():
 INTERRUPTED_STREAM = """
 import signal, sys
 import numpy as np
-from eigendance.harmonic import eigensolver
+from eigendance.harmonic.band_workers import Workers
 
 BAND = np.ones(8_000_000)  # 64 MB: the workers spend their time sending results
 
@@ -127,11 +127,10 @@ def interrupt(*_):
     raise KeyboardInterrupt
 
 
-eigensolver._band_worker = band  # the forked workers inherit it
 signal.signal(signal.SIGALRM, interrupt)
 signal.setitimer(signal.ITIMER_REAL, float(sys.argv[1]))
 try:
-    with eigensolver._Workers(2) as run:
+    with Workers(2, band) as run:
         while True:
             run([None] * 4)
 except KeyboardInterrupt:
