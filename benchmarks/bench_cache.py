@@ -1,8 +1,9 @@
 """Basis cache hits: what checking an entry's content against L and M costs (issue 12).
 
 A hit reads the entry (checksum verified) and, since issue 12, also builds L and M and tests
-the stored pairs (residuals, uᵀMu = 1, Uᵀ M U w = w: `basis.eigenpairs_fit`). Baseline, in the
-same run: the hit without that test (read + coefficients), and the solve the cache saves.
+the stored pairs (residuals, uᵀMu = 1, Uᵀ M U w = w: `construction.eigenpairs_fit`). Baseline,
+in the same run: the hit without that test (read + coefficients), and the solve the cache
+saves.
 Run: .venv/bin/python benchmarks/bench_cache.py [--k 300] [--mesh bunny_stanford.obj]
 """
 
@@ -32,7 +33,8 @@ def main():
     args = parser.parse_args()
     os.environ["EIGENDANCE_CACHE_DIR"] = tempfile.mkdtemp(prefix="bench-cache-")
 
-    from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key, eigenpairs_fit
+    from eigendance.harmonic.basis import HarmonicBasis
+    from eigendance.harmonic.construction import basis_cache, basis_key, eigenpairs_fit
     from eigendance.harmonic.laplacian import laplacian
     from eigendance.harmonic.mesh import load_mesh
 

@@ -19,7 +19,8 @@ exports: the same mesh and a 3-minute song (two shared songs end to end) at 30 f
 
 Every solve runs in a fresh process (peak memory is its own; the band workers' is reported by
 the kernel for the children). Run: .venv/bin/python benchmarks/bench_reduced.py [accuracy]
-[speed] [bad] [exports] [--meshes armadillo-173k ...] [--sensitivity] [--skip-exact-speed]
+[speed] [bad] [exports] [--meshes armadillo-173k ...] [--sensitivity] [--samples 7200 6300]
+[--skip-exact-speed]
 """
 
 from __future__ import annotations
@@ -50,7 +51,7 @@ def load() -> str:
 
 
 def solve(name: str, seed: int, construction: str, k: int, output: str | None,
-          laplacian: str, queue):
+          laplacian: str, samples: int | None, queue):
     """In a fresh process: the basis of a benchmark mesh; puts (seconds, peak GB, details), or
     the error's one line."""
     from eigendance.errors import EigendanceError
@@ -64,7 +65,7 @@ def solve(name: str, seed: int, construction: str, k: int, output: str | None,
     start = time.perf_counter()
     try:
         basis = HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian, cache=False,
-                                        construction=construction)
+                                        construction=construction, samples=samples)
     except EigendanceError as error:
         queue.put(str(error))
         return
@@ -78,8 +79,8 @@ def solve(name: str, seed: int, construction: str, k: int, output: str | None,
                                "zeros": int(np.sum(np.abs(basis.eigenvalues) < 1e-8))}))
 
 
-def in_process(name, seed, construction, k, output, laplacian="cotan"):
-    arguments = (name, seed, construction, k, output, laplacian)
+def in_process(name, seed, construction, k, output, laplacian="cotan", samples=None):
+    arguments = (name, seed, construction, k, output, laplacian, samples)
     context = multiprocessing.get_context("fork")
     queue = context.Queue()
     process = context.Process(target=solve, args=(*arguments, queue))
@@ -115,7 +116,9 @@ def item_errors(reference, other, song, items):
     return rows
 
 
-def accuracy(meshes, sensitivity: bool) -> None:
+def accuracy(meshes, sensitivity: bool, counts) -> None:
+    """The errors of the reduced basis of each mesh, at each sample count of `counts` (None:
+    the default count) against one exact solve."""
     from eigendance.harmonic.basis import HarmonicBasis
     from eigendance.music.gallery import initial_gallery
     from eigendance.music.spectrogram import Spectrogram
@@ -125,32 +128,38 @@ def accuracy(meshes, sensitivity: bool) -> None:
           f"{FRAMES} frames; load {load()}")
     for name in meshes:
         with tempfile.TemporaryDirectory() as folder:
-            paths = {kind: os.path.join(folder, f"{kind}.npz") for kind in ("exact", "reduced",
-                                                                             "noise")}
-            timing = {kind: in_process(name, 0, kind, K, paths[kind])
-                      for kind in ("exact", "reduced")}
+            paths = {kind: os.path.join(folder, f"{kind}.npz") for kind in ("exact", "noise")}
+            timing = in_process(name, 0, "exact", K, paths["exact"])
+            exact = HarmonicBasis.load(paths["exact"])
+            items = initial_gallery(exact, song, 8)
+            noise = [(None, np.nan)] * len(items)
             if sensitivity:
                 in_process(name, 1, "exact", K, paths["noise"])
-            exact, reduced = (HarmonicBasis.load(paths[kind]) for kind in ("exact", "reduced"))
-            relative = np.abs(reduced.eigenvalues[1:] - exact.eigenvalues[1:]) / \
-                np.maximum(exact.eigenvalues[1:], 1e-12)
-            items = initial_gallery(exact, song, 8)
-            errors = item_errors(exact, reduced, song, items)
-            noise = item_errors(exact, HarmonicBasis.load(paths["noise"]), song, items) \
-                if sensitivity else [(None, np.nan)] * len(items)
-        samples = timing["reduced"][2]["samples"]
-        print(f"\n{name}: n = {exact.n}, samples m = {samples}; exact {timing['exact'][0]:.1f} s "
-              f"{timing['exact'][1]:.2f} GB, reduced {timing['reduced'][0]:.1f} s "
-              f"{timing['reduced'][1]:.2f} GB (load {load()})")
-        print(f"  eigenvalues: median relative error {np.median(relative):.2%}, largest "
-              f"{relative.max():.2%}; every λ̃ ≥ λ: {bool(np.all(relative >= -1e-9))}")
-        print(f"  {'item':>4} {'main harmonics':>15} {'error':>8} {'bound':>6} "
-              f"{'exact vs exact, other noise':>28}")
-        for number, ((span, error), (_, other)) in enumerate(zip(errors, noise, strict=True), 1):
-            bound = 0.03 if span[1] < LOW else 0.10
-            mark = "ok" if error <= bound else "OVER"
-            print(f"  {number:>4} {f'{span[0]}–{span[1]}':>15} {error:>8.2%} {bound:>5.0%} "
-                  f"{mark:>4} {other:>22.2%}")
+                noise = item_errors(exact, HarmonicBasis.load(paths["noise"]), song, items)
+            for count in counts:
+                path = os.path.join(folder, f"reduced-{count}.npz")
+                reduced_timing = in_process(name, 0, "reduced", K, path, samples=count)
+                reduced = HarmonicBasis.load(path)
+                relative = np.abs(reduced.eigenvalues[1:] - exact.eigenvalues[1:]) / \
+                    np.maximum(exact.eigenvalues[1:], 1e-12)
+                errors = item_errors(exact, reduced, song, items)
+                print(f"\n{name}: n = {exact.n}, samples m = {reduced_timing[2]['samples']}; "
+                      f"exact {timing[0]:.1f} s {timing[1]:.2f} GB, reduced "
+                      f"{reduced_timing[0]:.1f} s {reduced_timing[1]:.2f} GB (load {load()})")
+                print_errors(relative, errors, noise)
+
+
+def print_errors(relative, errors, noise) -> None:
+    """The eigenvalue errors' summary and each gallery item's dance error beside its bound."""
+    print(f"  eigenvalues: median relative error {np.median(relative):.2%}, largest "
+          f"{relative.max():.2%}; every λ̃ ≥ λ: {bool(np.all(relative >= -1e-9))}")
+    print(f"  {'item':>4} {'main harmonics':>15} {'error':>8} {'bound':>6} "
+          f"{'exact vs exact, other noise':>28}")
+    for number, ((span, error), (_, other)) in enumerate(zip(errors, noise, strict=True), 1):
+        bound = 0.03 if span[1] < LOW else 0.10
+        mark = "ok" if error <= bound else "OVER"
+        print(f"  {number:>4} {f'{span[0]}–{span[1]}':>15} {error:>8.2%} {bound:>5.0%} "
+              f"{mark:>4} {other:>22.2%}")
 
 
 def laplacian_profile(name: str) -> None:
@@ -268,13 +277,14 @@ def exports() -> None:
     print(f"\nexports: fertility ×256, n = {result['n']}, m = {result['m']} samples, a 3-minute "
           f"song at 30 fps ({result['frames']} frames), the gallery item driving the most "
           f"harmonics ({result['driven']}); load {load()}")
-    print(f"  glb, skin on the samples (written): {result['bytes'] / mb:.0f} MB in "
-          f"{result['seconds']:.0f} s, peak {result['peak']:.2f} GB (planned "
-          f"{result['skin'] / mb:.0f} MB)")
+    written = result["bytes"]
+    print(f"  glb, skin on the samples (written): {written / mb:.1f} MB in "
+          f"{result['seconds']:.0f} s, peak {result['peak']:.2f} GB (planned binary chunk "
+          f"{result['skin'] / mb:.1f} MB; the rest is the JSON and the headers)")
     print(f"  the same dance as morph targets: the {result['driven']} driven harmonics "
-          f"{result['morph targets'] / mb:.0f} MB ({result['skin'] / result['morph targets']:.2f}"
+          f"{result['morph targets'] / mb:.0f} MB ({written / result['morph targets']:.2f}"
           f"×); all k = {K} harmonics {result['all k'] / mb:.0f} MB "
-          f"({result['skin'] / result['all k']:.3f}×, ≤ 1/8 asked)")
+          f"({written / result['all k']:.3f}×, ≤ 1/8 = 0.125 asked)")
     print(f"  as a point cache: {result['pc2'] / mb:.0f} MB (written only with --force)")
     print(f"  the page's basis bundle: {result['bundle'] / mb:.1f} MB, of which "
           f"{result['sent'] / mb:.1f} MB of coarse basis, weights and indices (≤ 64 MB asked); "
@@ -289,6 +299,8 @@ def main():
     parser.add_argument("--meshes", nargs="+", default=list(ACCURACY_MESHES))
     parser.add_argument("--sensitivity", action="store_true",
                         help="also the exact basis of another noise draw (one more exact solve)")
+    parser.add_argument("--samples", nargs="+", type=int, default=[None],
+                        help="accuracy: the sample counts m to compare (default: the default m)")
     parser.add_argument("--skip-exact-speed", action="store_true",
                         help="skip the exact solve at 692k vertices (minutes, ~5 GB)")
     args = parser.parse_args()
@@ -296,7 +308,7 @@ def main():
         parser.error(f"unknown parts: {', '.join(sorted(unknown))}")  # the empty list too)
     args.parts = args.parts or parts
     if "accuracy" in args.parts:
-        accuracy(args.meshes, args.sensitivity)
+        accuracy(args.meshes, args.sensitivity, args.samples)
     if "speed" in args.parts:
         speed(args.skip_exact_speed)
     if "bad" in args.parts:

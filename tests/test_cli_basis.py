@@ -121,7 +121,8 @@ def test_reduced_and_exact_are_chosen_and_said(tmp_path, capsys, monkeypatch):
     assert np.all(reduced.eigenvalues[1:] >= exact.eigenvalues[1:] * (1 - 1e-9))
     assert main(["basis", knight, "-k", "12", "-o", str(paths["auto"])]) == 0
     assert "(exact)" in capsys.readouterr().out  # 502 vertices: the exact solve fits
-    monkeypatch.setattr("eigendance.harmonic.basis.EXACT_VALUES", 100)  # as if the mesh were huge
+    # as if the mesh were huge
+    monkeypatch.setattr("eigendance.harmonic.construction.EXACT_VALUES", 100)
     assert main(["basis", knight, "-k", "12", "--samples", "150", "--no-cache",
                  "-o", str(paths["large"])]) == 0
     assert "(reduced, " in capsys.readouterr().out

@@ -12,12 +12,13 @@ import os
 import numpy as np
 import pygltflib
 import pytest
+import scipy.sparse as sp
 from export_helpers import SONG, check_positions, file_times
 from scipy.spatial.transform import Rotation
 
 from eigendance.export.dance import HarmonicDance
 from eigendance.export.files import export_dance
-from eigendance.export.gltf import glb_bytes
+from eigendance.export.gltf import glb_bytes, glb_size
 from eigendance.export.pointcache import pc2_size
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
@@ -42,6 +43,8 @@ def load(path):
         width = WIDTHS[accessor.type]
         data = np.frombuffer(blob, COMPONENTS[accessor.componentType],
                              accessor.count * width, start)
+        if accessor.normalized:  # glTF 2.0 §3.11: an unsigned integer c means c / its largest
+            data = data / np.iinfo(data.dtype).max
         return data.reshape(accessor.count, width) if width > 1 else data
 
     return gltf, read
@@ -187,7 +190,7 @@ def test_a_reduced_basis_is_a_skin_on_its_samples_that_replays_the_reference(
     joints = np.hstack([read(primitive.attributes.JOINTS_0), read(primitive.attributes.JOINTS_1)])
     weights = np.hstack([read(primitive.attributes.WEIGHTS_0),
                          read(primitive.attributes.WEIGHTS_1)]).astype(np.float64)
-    assert np.array_equal(weights.sum(axis=1), np.ones(len(rest)))
+    check_weight_shares(gltf, primitive, joints, weights, dance.basis.reduced)
     inverse = read(skin.inverseBindMatrices).reshape(-1, 4, 4).transpose(0, 2, 1)
     animation = gltf.animations[0]
     times = read(animation.samplers[0].input)
@@ -203,5 +206,45 @@ def test_a_reduced_basis_is_a_skin_on_its_samples_that_replays_the_reference(
     chosen = matrices[:, joints, :3]  # (T, n, 8, 3, 4): each vertex's joints
     played = np.einsum("is,tisab,ib->tia", weights, chosen, homogeneous)
     expected = dance.positions(times)
-    check_positions(played, expected, dance.diagonal, 1e-5)
+    check_positions(played, expected, dance.diagonal, 1e-4)
+    # The bound of the rounded weights: Σ_j |w'_j − w_j| |D_j(t)| < 8/65535 · max_j |D_j(t)|.
+    moved = np.linalg.norm(translations + inverse[None, :, :3, 3], axis=-1)  # |D_j(t)|
+    error = np.linalg.norm(played - expected, axis=-1).max(axis=1)
+    assert np.all(error <= 8 / 65535 * moved.max(axis=1) + 1e-6 * dance.diagonal), error
     assert np.abs(expected[len(times) // 2] - expected[0]).max() > 1e-3 * dance.diagonal
+
+
+def check_weight_shares(gltf, primitive, joints, weights, reduced):
+    """WEIGHTS_0/1 are normalised unsigned shorts whose whole numbers sum to exactly 65535 per
+    vertex, each within one unit of 65535 × the basis's own interpolation weight of that
+    sample (P, from the basis file's arrays, not from the exporter)."""
+    for name in ("WEIGHTS_0", "WEIGHTS_1"):
+        accessor = gltf.accessors[getattr(primitive.attributes, name)]
+        assert accessor.normalized and accessor.componentType == pygltflib.UNSIGNED_SHORT
+    units = np.rint(weights * 65535).astype(np.int64)
+    assert np.allclose(units, weights * 65535, rtol=0, atol=1e-6)  # whole numbers
+    assert np.array_equal(units.sum(axis=1), np.full(len(weights), 65535))
+    rows = np.repeat(np.arange(len(weights)), joints.shape[1])
+    found = sp.csr_matrix((units.ravel(), (rows, joints.ravel())),
+                          shape=(len(weights), reduced.count)).toarray()  # duplicates add up
+    interpolation = reduced.interpolation
+    exact = sp.csr_matrix((interpolation.weights.ravel(), (rows, interpolation.indices.ravel())),
+                          shape=found.shape).toarray() * 65535
+    assert np.abs(found - exact).max() < 1
+    assert np.count_nonzero(units) > 2 * len(units)  # vertices blend several samples
+
+
+@pytest.mark.parametrize("name, form", [("harmonic", "morph targets"),
+                                        ("reduced_harmonic", "skin")])
+def test_the_planned_glb_size_is_the_binary_chunk_written(request, tmp_path, name, form):
+    """`glb_size` plans the binary chunk to the byte (the GLB header's chunk length)."""
+    dance = request.getfixturevalue(name)
+    report = export_dance(dance, tmp_path / "dance.glb", fps=15)
+    data = (tmp_path / "dance.glb").read_bytes()
+    json_length = int.from_bytes(data[12:16], "little")
+    binary_length = int.from_bytes(data[20 + json_length:24 + json_length], "little")
+    assert data[24 + json_length:28 + json_length] == b"BIN\0"
+    assert len(data) == 28 + json_length + binary_length == report["bytes"]
+    frames = len(file_times(dance.duration, 15))
+    assert report["frames"] == frames
+    assert glb_size(dance, frames)[form] == binary_length

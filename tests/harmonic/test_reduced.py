@@ -6,10 +6,11 @@ dance close to the exact basis's where the harmonics are well apart."""
 import numpy as np
 import pytest
 
-import eigendance.harmonic.basis as basis_module
+import eigendance.harmonic.construction as construction_module
 from eigendance.errors import EigendanceError
 from eigendance.geometry import vertex_normals
-from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key, choose_construction
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.construction import basis_cache, basis_key, choose_construction
 from eigendance.harmonic.interpolation import MOST, QUANTUM
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.reduced import reduced_key
@@ -130,8 +131,8 @@ def test_save_load_round_trip_and_a_broken_partition_is_refused(tmp_path, cat_ba
 
 def test_reduced_bases_are_cached_and_a_wrong_entry_is_solved_again(monkeypatch, cat):
     calls = []
-    original = basis_module.reduced_harmonics
-    monkeypatch.setattr(basis_module, "reduced_harmonics",
+    original = construction_module.reduced_harmonics
+    monkeypatch.setattr(construction_module, "reduced_harmonics",
                         lambda *a, **kw: calls.append(1) or original(*a, **kw))
     first = HarmonicBasis.from_mesh(cat, 12, construction="reduced", samples=600)
     again = HarmonicBasis.from_mesh(cat, 12, construction="reduced", samples=600)
@@ -151,7 +152,7 @@ def test_the_rule_picks_exact_for_small_and_reduced_for_large(monkeypatch):
     assert choose_construction(5_000, 300) == "exact"  # fewer vertices than samples
     assert choose_construction(100_000, 300) == "exact"
     assert choose_construction(1_000_000, 300) == "reduced"
-    monkeypatch.setattr(basis_module, "memory_budget", lambda: 1e8)  # 100 MB left
+    monkeypatch.setattr(construction_module, "memory_budget", lambda: 1e8)  # 100 MB left
     assert choose_construction(100_000, 300) == "reduced"
 
 

@@ -27,10 +27,11 @@ import numpy as np
 import pytest
 import soundfile
 from scipy.signal import resample_poly
-from web_helpers import CHROMIUM, CHROMIUM_ARGS
+from web_helpers import CHROMIUM, CHROMIUM_ARGS, running_server
 
 from eigendance.music.decode import mono, read_audio
 from eigendance.music.spectrogram import Spectrogram
+from helpers import fixture_path
 
 pytestmark = pytest.mark.web
 CLIP = os.path.join(os.path.dirname(__file__), "..", "fixtures", "audio",
@@ -208,6 +209,23 @@ def test_live_input_matches_the_offline_analysis(browser, live_server, clip, tmp
     assert len(final["beats"]) >= 20 and max(ticks) > 0.3 and min(ticks) < max(ticks)
     assert moved > 1e-3  # the first tile dances to the input
     assert np.ptp(np.array(rig_moves), axis=0).max() > 1e-3  # and so does the rig
+
+
+def test_source_mic_starts_when_the_first_model_is_a_rig(browser, web_files, clip, tmp_path):
+    """`?source=mic` with a skinned glTF first in the library: the page opens on the rig and
+    still starts the live input (it once returned before starting it), and the rig's tiles
+    follow the input."""
+    rig = fixture_path("rigged", "RiggedSimple.glb")
+    with running_server([rig, web_files["song"]], tmp_path, tmp_path / "cache") as server, \
+            chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"],
+                     server["url"], "?test&source=mic&size=2") as page:
+        heard = wait_for(page, lambda s: s["seconds"] > 3)
+        assert heard["active"] and heard["following"] and heard["menu"] == "live:mic"
+        t = page.evaluate("window.eigendance.info().time")
+        moves = [page.evaluate(f"window.eigendance.rig.coefficients(0, {t - dt})")
+                 for dt in (0, 0.15, 0.3)]
+        assert page.evaluate("window.eigendance.info().error") is None
+    assert np.ptp(np.array(moves), axis=0).max() > 1e-3
 
 
 def test_nothing_gets_stuck(browser, live_server, tmp_path):

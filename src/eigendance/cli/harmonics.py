@@ -58,7 +58,7 @@ def add_basis(parser):
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
     add_construction(parser)
     parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
-                        help="samples of a reduced basis (default 24·k, at least 2000)")
+                        help="samples of a reduced basis (default 21·k, at least 2000)")
     add_output(parser, "basis file to write (.npz)")
 
 

@@ -14,8 +14,11 @@
   are the samples: joint j at the sample's rest position c_j (inverse bind matrix: translation
   by −c_j), one translation channel c_j + D_j(t_i) each, and every vertex's 8 samples and weights
   as JOINTS_0/1, WEIGHTS_0/1: the joint matrix is a translation by D_j(t), so a viewer plays
-  rest + Σ_j w_ij D_j(t) — the reduced dance exactly. Its size is m·T translations instead of
-  d·n displacements; the translations are computed joint by joint as the file is written.
+  rest + Σ_j w_ij D_j(t) — the reduced dance, with the weights as normalised unsigned shorts
+  (whole numbers of 1/65535 summing to exactly 65535 by largest remainders: each within
+  1/65535 of P's, so a vertex is within 8/65535 of its largest joint displacement). Its size
+  is m·T translations instead of d·n displacements; the translations are computed joint by
+  joint as the file is written.
 - A `RigDance` becomes a skin: one joint node per body, bound in the body's rest frame B_b
   (inverse bind matrix B_b⁻¹), animated by translation and rotation channels so that its world
   transform is T_b(t_i)·B_b; a viewer's joint matrix T_b·B_b·B_b⁻¹ = T_b then plays linear blend
@@ -38,10 +41,14 @@ from scipy.spatial.transform import Rotation
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, RigDance
 from eigendance.export.gltf_look import drawn_attributes, write_look
+from eigendance.harmonic.interpolation import shares
 
 # The models' clay colour on the page (web/src/deform.ts CLAY), as sRGB bytes.
 BASE_COLOR = (0xD9, 0xA4, 0x7F)
 WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is renormalised)
+# A reduced basis's weights are normalised unsigned shorts: whole numbers of 1/65535 summing to
+# exactly 65535 per vertex (core glTF 2.0), so Σ_j w_j = 1 holds exactly in every viewer.
+WEIGHT_UNITS = 65535
 
 
 def srgb_to_linear(srgb) -> np.ndarray:
@@ -90,10 +97,11 @@ class _Builder:
         return len(self.gltf.accessors) - 1
 
     def accessor(self, array: np.ndarray, width: int, target: int | None = None,
-                 bounds: bool = False) -> int:
+                 bounds: bool = False, normalized: bool = False) -> int:
         """An accessor (and its own buffer view) for `array`, `width` components per element.
 
-        bounds: store min/max (required for POSITION and animation inputs)."""
+        bounds: store min/max (required for POSITION and animation inputs); normalized:
+        integers read as fractions of their type's largest value (WEIGHTS as unsigned short)."""
         array = np.ascontiguousarray(array)
         data = array.tobytes()
         view = pygltflib.BufferView(buffer=0, byteOffset=self.length, byteLength=len(data),
@@ -107,7 +115,8 @@ class _Builder:
         elements = array.reshape(-1, width)
         accessor = pygltflib.Accessor(bufferView=len(self.gltf.bufferViews) - 1, byteOffset=0,
                                       componentType=self.COMPONENTS[array.dtype],
-                                      count=len(elements), type=self.TYPES[width])
+                                      normalized=normalized, count=len(elements),
+                                      type=self.TYPES[width])
         if bounds:
             accessor.min = [float(x) for x in elements.min(axis=0)]
             accessor.max = [float(x) for x in elements.max(axis=0)]
@@ -332,12 +341,13 @@ def _sample_skin(dance: HarmonicDance, times, builder, attributes, welded, sampl
                                          inverse.transpose(0, 2, 1).astype("<f4")
                                          .reshape(-1, 16), 16)))
     gltf.nodes[0].skin = 0
+    weights = shares(skin.weights[welded], WEIGHT_UNITS).astype("<u2")
     for set_index in range(skin.indices.shape[1] // 4):
         columns = slice(4 * set_index, 4 * set_index + 4)
         setattr(attributes, f"JOINTS_{set_index}", builder.accessor(
             skin.indices[welded, columns].astype("<u2"), 4, pygltflib.ARRAY_BUFFER))
         setattr(attributes, f"WEIGHTS_{set_index}", builder.accessor(
-            skin.weights[welded, columns].astype("<f4"), 4, pygltflib.ARRAY_BUFFER))
+            weights[:, columns], 4, pygltflib.ARRAY_BUFFER, normalized=True))
     samplers, channels = [], []
     frames = len(skin.amplitudes)
     for joint in range(count):
@@ -353,11 +363,12 @@ def _sample_skin(dance: HarmonicDance, times, builder, attributes, welded, sampl
 
 
 def glb_size(dance: Dance, frames: int) -> dict[str, int]:
-    """Bytes of the binary data of a harmonic dance's glb as written (`skin` of a reduced basis,
-    else `morph targets`) and of the other form, for `frames` samples: vertices, normals and
-    faces, plus per driven harmonic n displacements and T weights (morph targets) or per
-    vertex 8 joints and weights and per sample T translations (skin). The JSON is not
-    counted (≈ 0.2 kB per joint).
+    """Bytes of the binary chunk of a harmonic dance's glb without a look, as written (`skin` of
+    a reduced basis, else `morph targets`) and of the other form, for `frames` samples:
+    positions, normals, faces (4-byte aligned) and sample times, plus per driven harmonic n
+    displacements and T weights (morph targets) or per vertex 8 joints and 8 weights (unsigned
+    shorts) and per sample an inverse bind matrix and T translations (skin). The JSON chunk is
+    not counted (≈ 0.37 kB per joint of a skin; a look's attributes and images neither).
 
     Parameters
     ----------
@@ -369,12 +380,13 @@ def glb_size(dance: Dance, frames: int) -> dict[str, int]:
     {"morph targets": bytes, "skin": bytes (a reduced basis only)}.
     """
     n, faces = dance.n, len(dance.faces)
-    base = 24 * n + faces * 3 * (2 if n <= 65535 else 4) + 4 * frames
+    indices = faces * 3 * (2 if n <= 65535 else 4)
+    base = 24 * n + indices + -indices % 4 + 4 * frames
     driven = len(dance.driven())
     sizes = {"morph targets": base + driven * (12 * n + 4 * frames)}
     if dance.basis.reduced is not None:
         count = dance.basis.reduced.count
-        sizes["skin"] = base + 48 * n + count * (64 + 12 * frames)
+        sizes["skin"] = base + 2 * 8 * n + 2 * 8 * n + count * (64 + 12 * frames)
     return sizes
 
 

@@ -247,11 +247,33 @@ def quantised(weights: np.ndarray) -> np.ndarray:
     >>> float(quantised(np.array([[1 / 3, 1 / 3, 1 / 3]])).sum())
     1.0
     """
-    units = round(1 / QUANTUM)
+    return shares(weights, round(1 / QUANTUM)) * QUANTUM
+
+
+def shares(weights: np.ndarray, units: int) -> np.ndarray:
+    """Rows of non-negative weights summing to 1 as whole numbers of 1/units that sum to
+    exactly `units` (the largest-remainder method: every weight·units rounded down, then the
+    rows' largest remainders up), so each differs from weight·units by less than 1.
+
+    Parameters
+    ----------
+    weights : (r, c) rows of non-negative weights summing to 1.
+    units : the whole each row is shared out of (2¹¹ for P, 65535 for glTF's normalised
+        unsigned shorts).
+
+    Returns
+    -------
+    (r, c) int64, each row summing to `units`.
+
+    Example
+    -------
+    >>> shares(np.array([[0.5, 0.25, 0.25]]), 65535).tolist()
+    [[32767, 16384, 16384]]
+    """
     scaled = weights * units
     floor = np.floor(scaled)
     deficit = (units - floor.sum(axis=1)).round().astype(np.int64)
     order = np.argsort(floor - scaled, axis=1, kind="stable")  # largest remainder first
     bump = np.arange(weights.shape[1])[None, :] < deficit[:, None]
     np.put_along_axis(floor, order, np.take_along_axis(floor, order, axis=1) + bump, axis=1)
-    return floor * QUANTUM
+    return floor.astype(np.int64)

@@ -32,7 +32,11 @@ from eigendance.harmonic.sampling import (
 )
 
 REDUCED_VERSION = 2  # part of every reduced cache key: a new construction recomputes
-SAMPLES_PER_HARMONIC = 24  # default m = 24·k (benchmarks/bench_reduced.py)
+# Default m = 21·k: the glb skin of 1.15 M vertices and a 3-minute song at 30 fps (12 bytes a
+# sample and frame) stays under an eighth of all k morph targets even with the sampler's 5%
+# more samples; 24·k was 0.138× (median eigenvalue error on the armadillo ×4: 2.34% at m =
+# 7,424, 2.71% at 6,429; benchmarks/bench_reduced.py, docs/design.md#reduced-basis).
+SAMPLES_PER_HARMONIC = 21
 MIN_SAMPLES = 2000
 # Peak bytes of a reduced solve (bench_reduced.py): per vertex the Laplacian, the graph, the
 # clusters, a block of weights, P and L·P (1.15 M vertices, cotan: 1.22 GB at the peak); the
@@ -45,7 +49,9 @@ BYTES_PER_COARSE_VALUE = 24
 # The arrays of a reduced basis in a basis file and a cache entry (docs/design.md#basis-file).
 REDUCED_KEYS = ("samples", "interpolation_indices", "interpolation_weights",
                 "coarse_eigenvectors")
-CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE  # as for a cached exact solve (basis.py)
+# A cached solve (exact or reduced) is used only if its pairs pass the solver's own test with
+# this slack (‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, and Uᵀ M U = I within tol): construction.py.
+CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
 
 
 def solve_bytes(n: int, faces: int, k: int, count: int, laplacian: str = "cotan") -> float:
@@ -218,7 +224,7 @@ def reduced_key(exact_key: str, count: int) -> str:
 
     Parameters
     ----------
-    exact_key : the exact solve's key (`basis.basis_key`: geometry, k, Laplacian).
+    exact_key : the exact solve's key (`construction.basis_key`: geometry, k, Laplacian).
     count : samples m.
 
     Returns

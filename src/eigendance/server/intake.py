@@ -20,7 +20,7 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import check_readable, kind_of, read_json, suffix_of
-from eigendance.harmonic.basis import choose_construction
+from eigendance.harmonic.construction import choose_construction
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.rig import Rig

@@ -17,7 +17,8 @@ import time
 from collections.abc import Callable
 
 from eigendance.errors import EigendanceError, one_line
-from eigendance.harmonic.basis import HarmonicBasis, basis_cache, basis_key
+from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.construction import basis_cache, basis_key
 from eigendance.harmonic.reduced import reduced_key, sample_count
 from eigendance.server.binary import basis_bundle
 from eigendance.server.items import Job, MeshItem
