@@ -130,7 +130,8 @@ def solve_components(stiffness: sp.spmatrix, mass, k: int,
 
     A group of m copies of an n_c-vertex component needs min(n_c, ⌈k/m⌉) pairs: its j-th
     eigenvalue appears m times, so only j < k/m can be among the k smallest. The pairs of all
-    groups are merged by eigenvalue (stable: ties keep the order of the components).
+    groups are merged by eigenvalue (stable: ties in the order of the groups, then of their
+    members).
 
     Parameters
     ----------
