@@ -12,6 +12,7 @@ import os
 import sys
 import threading
 from concurrent.futures import ProcessPoolExecutor
+from multiprocessing import resource_tracker
 
 from eigendance.processes import start_worker
 
@@ -113,8 +114,6 @@ def quiet_resource_tracker() -> None:
     interpreter gets the parent's `-W` options (sys.warnoptions) when it starts, the first time
     a fork server or a spawned process needs it.
     """
-    from multiprocessing import resource_tracker
-
     if TRACKER_WARNING not in sys.warnoptions:
         sys.warnoptions.append(TRACKER_WARNING)
     resource_tracker.ensure_running()
