@@ -13,23 +13,17 @@ import pytest
 import trimesh
 
 from eigendance.errors import InputError
-from eigendance.files import (
-    TEMPORARY_PREFIX,
-    atomic_save_npz,
-    atomic_write,
-    checked_array,
-    read_json,
-    sweep_temporary_files,
-)
+from eigendance.files import checked_array, read_json
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
 from eigendance.music.spectrogram import Spectrogram
+from eigendance.writes import TEMPORARY_PREFIX, atomic_save_npz, atomic_write, sweep_temporary_files
 from helpers import start
 
 # A writer that stops half-way: it writes a megabyte, says so, and waits to be killed.
 STALLED_WRITER = """
 import sys, time
-from eigendance.files import atomic_write
+from eigendance.writes import atomic_write
 def write(file):
     file.write(b"x" * (1 << 20)); file.flush()
     print("writing", flush=True)

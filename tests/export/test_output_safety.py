@@ -26,7 +26,7 @@ import eigendance.export.files
 import eigendance.export.video
 from eigendance.cli import main
 from eigendance.export.output import Outputs
-from eigendance.files import TEMPORARY_NAME
+from eigendance.writes import TEMPORARY_NAME
 from helpers import descendants, fixture_path, parents, start
 
 KNIGHT = fixture_path("meshes", "decimated-knight.off")

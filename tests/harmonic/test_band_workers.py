@@ -59,7 +59,9 @@ def test_workers_die_with_a_killed_caller(ball, tmp_path, sent):
 
 
 def test_workers_of_the_web_server_die_with_it(ball, tmp_path):
-    """The server solves in a thread: its workers come from a fork server, and go with it."""
+    """The server solves in a thread: its workers come from a fork server, and go with it.
+    multiprocessing's resource tracker then unlinks the fork server's semaphores without
+    printing a leak warning under the dead server's output."""
     process, workers = start_solve(ball, tmp_path, ("serve", "--port", str(free_port())),
                                      count=3)
     os.kill(process.pid, signal.SIGKILL)
@@ -68,6 +70,9 @@ def test_workers_of_the_web_server_die_with_it(ball, tmp_path):
     while alive(workers) and time.time() < deadline:
         time.sleep(0.1)
     assert not alive(workers)
+    # Read to the end: the tracker and the fork server share the server's stderr until they go.
+    _, errors = process.communicate(timeout=60)
+    assert "resource_tracker" not in errors and "leaked" not in errors
 
 
 def free_port() -> int:
@@ -100,3 +105,47 @@ def test_bands_solved_from_a_thread_equal_bands_solved_from_the_main_thread():
     worker.join(120)
     main_values, _ = solve_bands(stiffness, mass, 200, per_band=40)
     np.testing.assert_allclose(results["thread"][0], main_values, rtol=1e-9, atol=1e-9)
+
+
+# A caller interrupted while its workers stream large bands back (SIGALRM raises Ctrl-C's
+# KeyboardInterrupt after `delay` s): the killed workers often leave half a band in the
+# result pipe. Before the fix the pool's reader thread waited for the rest forever and the
+# interpreter for that thread at exit (half of these runs hung; `basis` hung after SIGTERM).
+INTERRUPTED_STREAM = """
+import signal, sys
+import numpy as np
+from eigendance.harmonic.band_workers import Workers
+
+BAND = np.ones(8_000_000)  # 64 MB: the workers spend their time sending results
+
+
+def band(arguments):
+    return BAND
+
+
+def interrupt(*_):
+    raise KeyboardInterrupt
+
+
+signal.signal(signal.SIGALRM, interrupt)
+signal.setitimer(signal.ITIMER_REAL, float(sys.argv[1]))
+try:
+    with Workers(2, band) as run:
+        while True:
+            run([None] * 4)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+"""
+
+
+@pytest.mark.parametrize("delay", [0.5, 0.6, 0.7, 0.8])
+def test_a_caller_interrupted_mid_band_exits(delay):
+    process = start([sys.executable, "-c", INTERRUPTED_STREAM, str(delay)],
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        output, errors = process.communicate(timeout=60)  # a hang fails, load does not
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.communicate()
+        pytest.fail("the interrupted caller did not exit")
+    assert output == "interrupted\n" and errors == "" and process.returncode == 0

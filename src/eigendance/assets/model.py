@@ -10,7 +10,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.assets.appearance import Appearance, Image, Material, Part
-from eigendance.assets.scene import Piece, SkinTree
+from eigendance.assets.primitives import Piece
+from eigendance.assets.scene import SkinTree
 from eigendance.errors import InputError, ModelWarning
 from eigendance.geometry import vertex_normals
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from eigendance.assets.materials import Images, srgb_to_linear, trimesh_material
 from eigendance.assets.model import Model, combine
-from eigendance.assets.scene import Piece
+from eigendance.assets.primitives import Piece
 from eigendance.errors import InputError, one_line
 
 # Formats Blender imports and we do not: converted through bpy when it can be imported.

@@ -1,12 +1,13 @@
 """The mesh nodes of a glTF scene, in world coordinates (docs/design.md#appearance).
 
 Every node of the default scene (or, without scenes, of every root node) that has a mesh comes
-in with its world transform, once per node: several meshes, several primitives, the same mesh
-under two nodes (instancing). Skinned meshes come in bind pose, Σ_j w_j (W_j · IBM_j) x, with
-their weights over the union of every skin's joints (several skins may share one skeleton); a
-mesh node below a joint node (a prop on a bone) records that joint (`Piece.bone`). Triangle
-strips and fans become triangles; points and lines cannot be kept and are listed in `notes`, as
-are morph targets of the file's own (the rest shape is the mesh at its default weights).
+in with its world transform, once per node: several meshes, several primitives (each read by
+`assets.primitives`), the same mesh under two nodes (instancing). Skinned meshes come in bind
+pose, Σ_j w_j (W_j · IBM_j) x, with their weights over the union of every skin's joints
+(several skins may share one skeleton); a mesh node below a joint node (a prop on a bone)
+records that joint (`Piece.bone`). Triangle strips and fans become triangles; points and lines
+cannot be kept and are listed in `notes`, as are morph targets of the file's own (the rest
+shape is the mesh at its default weights).
 """
 
 from __future__ import annotations
@@ -15,41 +16,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from eigendance.assets.gltf import DRACO, GltfFile
-
-TRIANGLES, STRIP, FAN = 4, 5, 6
-MODE_NAMES = {0: "point", 1: "line", 2: "line loop", 3: "line strip"}
-
+from eigendance.assets.gltf import GltfFile
+from eigendance.assets.primitives import MODE_NAMES, Piece, read_piece
 
 # Joints read from a model's skins: the weights are a dense (vertices, joints) array, and a rig
 # keeps at most modal.bodies.MAX_BODIES of them (helper bones that move nothing are dropped).
 MAX_SKIN_JOINTS = 1024
-
-@dataclass
-class Piece:
-    """One primitive of one mesh node, in world coordinates at rest.
-
-    positions (n, 3); triangles (m, 3) into positions; normals (n, 3) or None; tangents (n, 4)
-    or None; uvs one (n, 2) per TEXCOORD set; colors (n, 4) or None; material: the document's
-    material index or -1; weights (n, n_joints) over `SkinTree` columns (skinned) or None;
-    bone: the joint column a rigid mesh hangs from, or -1.
-
-    Parameters
-    ----------
-    positions, triangles, normals, tangents, uvs, colors, material, weights, bone : as above.
-    attributes : the primitive's other attributes by name.
-    """
-
-    positions: np.ndarray
-    triangles: np.ndarray
-    normals: np.ndarray | None
-    tangents: np.ndarray | None
-    uvs: list
-    colors: np.ndarray | None
-    material: int
-    weights: np.ndarray | None = None
-    bone: int = -1
-    attributes: dict = field(default_factory=dict, repr=False)  # as read (joints, weights)
 
 
 @dataclass
@@ -116,7 +88,7 @@ def read_scene(gltf: GltfFile) -> Scene:
         bone = -1 if skinning is not None else _bone(node_index, parents, column)
         for index, primitive in enumerate(meshes[node.mesh].primitives or []):
             what = f"mesh {node.mesh} primitive {index}"
-            piece = _piece(gltf, primitive, what, counter, node, meshes[node.mesh])
+            piece = read_piece(gltf, primitive, what, counter, node, meshes[node.mesh])
             if piece is None:
                 continue
             if skinning is not None:
@@ -279,100 +251,6 @@ def _skinning(gltf: GltfFile, node, world, column):
     else:
         inverse = np.tile(np.eye(4), (len(joints), 1, 1))
     return np.array([column[j] for j in joints]), world[joints] @ inverse
-
-
-def _piece(gltf: GltfFile, primitive, what: str, counter: dict, node, mesh) -> Piece | None:
-    """A primitive's arrays in its mesh's coordinates, or None (counted in `counter`)."""
-    mode = TRIANGLES if primitive.mode is None else primitive.mode
-    if mode not in (TRIANGLES, STRIP, FAN):
-        name = MODE_NAMES.get(mode, f"mode-{mode}")
-        counter[name] = counter.get(name, 0) + 1
-        return None
-    attributes, indices = _attributes(gltf, primitive, what)
-    if "POSITION" not in attributes:
-        counter["primitives without positions"] = counter.get(
-            "primitives without positions", 0) + 1
-        return None
-    positions = attributes["POSITION"][:, :3].astype(float)
-    count = len(positions)
-    indices = np.arange(count) if indices is None else indices
-    if len(indices) and (indices.min() < 0 or indices.max() >= count):
-        raise gltf.message(f"{what} has vertex indices outside 0..{count - 1}")
-    triangles = _triangles(indices, mode)
-    if primitive.targets:
-        positions = _default_shape(gltf, primitive, node, mesh, positions, what)
-        counter["morph targets of the file's own"] = counter.get(
-            "morph targets of the file's own", 0) + len(primitive.targets)
-    used = np.unique(triangles)
-    if len(used) < count:  # primitives often share one accessor: keep what this one draws
-        attributes = {name: values[used] for name, values in attributes.items()}
-        positions, count = positions[used], len(used)
-        triangles = np.searchsorted(used, triangles)
-    uvs = []
-    while f"TEXCOORD_{len(uvs)}" in attributes:
-        uvs.append(attributes[f"TEXCOORD_{len(uvs)}"][:, :2].astype(float))
-    colors = attributes.get("COLOR_0")
-    if colors is not None:
-        colors = colors.astype(float)
-        colors = np.column_stack([colors, np.ones(count)]) if colors.shape[1] == 3 else colors
-    piece = Piece(positions, triangles, _rows(attributes.get("NORMAL"), 3),
-                  _rows(attributes.get("TANGENT"), 4), uvs, colors,
-                  primitive.material if isinstance(primitive.material, int) else -1,
-                  attributes=attributes)
-    return piece
-
-
-def _rows(values, width):
-    return None if values is None or values.shape[1] < width else values[:, :width].astype(float)
-
-
-def _attributes(gltf: GltfFile, primitive, what: str):
-    """({name: array}, indices or None) of a primitive, decoded from Draco when compressed."""
-    extension = (primitive.extensions or {}).get(DRACO)
-    if extension is not None:
-        attributes, faces = gltf.draco(extension, what)
-        return attributes, faces.reshape(-1)
-    attributes = {name: gltf.accessor(index) for name, index in
-                  vars(primitive.attributes).items() if isinstance(index, int)}
-    counts = {len(values) for values in attributes.values()}
-    if len(counts) > 1:
-        raise gltf.message(f"{what}: its attributes have different counts {sorted(counts)}")
-    indices = None
-    if primitive.indices is not None:
-        indices = gltf.accessor(primitive.indices).reshape(-1).astype(np.int64)
-    return attributes, indices
-
-
-def _triangles(indices: np.ndarray, mode: int) -> np.ndarray:
-    if mode == TRIANGLES:
-        usable = len(indices) - len(indices) % 3
-        return indices[:usable].reshape(-1, 3)
-    if len(indices) < 3:
-        return np.zeros((0, 3), dtype=np.int64)
-    i = np.arange(len(indices) - 2)
-    if mode == STRIP:  # every other triangle reversed, so all keep the first one's winding
-        even = i % 2 == 0
-        return np.column_stack([indices[i], np.where(even, indices[i + 1], indices[i + 2]),
-                                np.where(even, indices[i + 2], indices[i + 1])])
-    return np.column_stack([np.full(len(i), indices[0]), indices[i + 1], indices[i + 2]])
-
-
-def _default_shape(gltf, primitive, node, mesh, positions, what) -> np.ndarray:
-    """The positions at the node's (else the mesh's) default morph weights."""
-    weights = getattr(node, "weights", None)
-    weights = weights if weights is not None else mesh.weights
-    weights = list(weights or [])
-    for index, target in enumerate(primitive.targets):
-        weight = float(weights[index]) if index < len(weights) else 0.0
-        accessor = target.get("POSITION") if isinstance(target, dict) else \
-            getattr(target, "POSITION", None)
-        if weight and isinstance(accessor, int):
-            delta = gltf.accessor(accessor)[:, :3]
-            if len(delta) != len(positions):
-                raise gltf.message(f"{what}: morph target {index} has {len(delta)} positions "
-                                   f"for {len(positions)} vertices")
-            positions = positions + weight * delta
-    return positions
 
 
 def _place(piece: Piece, matrix: np.ndarray) -> None:

@@ -26,7 +26,7 @@ import os
 
 from eigendance.batch.content import file_digest
 from eigendance.errors import InputError
-from eigendance.files import atomic_write
+from eigendance.writes import atomic_write
 
 RECORD, REPORT = "batch-record.jsonl", "batch-report.jsonl"
 

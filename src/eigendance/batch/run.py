@@ -30,7 +30,7 @@ from eigendance.batch.engines import Task
 from eigendance.batch.plan import FORMATS, Job, Plan
 from eigendance.batch.record import Record, write_report
 from eigendance.errors import InputError
-from eigendance.files import sweep_temporary_files
+from eigendance.writes import sweep_temporary_files
 
 DEFAULT_BANDS = 64  # the gallery's spectrogram
 

@@ -21,7 +21,7 @@ import shutil
 import struct
 import tempfile
 
-from eigendance.files import atomic_write
+from eigendance.writes import atomic_write
 
 ALIGN = 64
 HEADER = struct.Struct("<8sQQ")  # magic, pickle length, buffer count

@@ -30,7 +30,7 @@ from eigendance.export.files import companion_paths, export_dance, format_of
 from eigendance.export.gltf import glb_size
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
-from eigendance.files import refuse_overwrite, suffix_of
+from eigendance.files import suffix_of
 from eigendance.modal.motion import parse_modes
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
@@ -42,6 +42,7 @@ from eigendance.music.gallery import (
     strongest_item,
 )
 from eigendance.music.mapping import Mapping
+from eigendance.writes import refuse_overwrite
 
 # --- exports: files for other tools, and video (docs/design.md#exports) ----------------------
 

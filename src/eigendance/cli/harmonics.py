@@ -22,7 +22,6 @@ from eigendance.cli.options import (
     spectrogram_from,
 )
 from eigendance.errors import InputError
-from eigendance.files import refuse_overwrite
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
@@ -39,6 +38,7 @@ from eigendance.music.gallery import (
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, check_picture_path, save_picture
 from eigendance.window import Window
+from eigendance.writes import refuse_overwrite
 
 
 def add_basis(parser):

@@ -31,7 +31,7 @@ from eigendance.cli.options import check_outputs
 from eigendance.cli.rigs import add_animate_rig, add_modes, run_animate_rig, run_modes
 from eigendance.cli.web import add_demo, add_serve, run_demo, run_serve
 from eigendance.errors import EigendanceError, InputError, ModelWarning, one_line
-from eigendance.files import all_or_nothing
+from eigendance.writes import all_or_nothing
 
 
 class Parser(argparse.ArgumentParser):
@@ -236,7 +236,7 @@ def _run(args) -> int:
             if not os.environ.get("EIGENDANCE_DEBUG"):
                 # Library warnings (numpy's floating-point ones, pygltflib's about odd files)
                 # would only add lines around the one line a command ends with; outputs are
-                # checked finite instead (files.check_finite).
+                # checked finite instead (writes.check_finite).
                 warnings.simplefilter("ignore")
             warnings.simplefilter("always", ModelWarning)  # what a model file loses: one line
             warnings.showwarning = show_warning

@@ -12,11 +12,11 @@ from tqdm import tqdm
 
 from eigendance import checks
 from eigendance.errors import InputError
-from eigendance.files import refuse_input
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
 from eigendance.music.spectrogram import Spectrogram
+from eigendance.writes import refuse_input
 
 RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
             + ", ".join(SAMPLE_RIGS))
@@ -92,7 +92,7 @@ OUTPUT_ARGUMENTS = ("output", "png", "save_mapping")
 
 def input_files(args) -> list[str]:
     """The existing files the command line names as inputs (never overwritten, `--force` or
-    not: `files.refuse_overwrite`).
+    not: `writes.refuse_overwrite`).
 
     Parameters
     ----------

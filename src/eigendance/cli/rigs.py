@@ -21,7 +21,6 @@ from eigendance.cli.options import (
     spectrogram_from,
 )
 from eigendance.errors import InputError
-from eigendance.files import refuse_overwrite
 from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import parse_modes, save_animation
@@ -31,6 +30,7 @@ from eigendance.modal.skeleton_file import read_joint_stiffness
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import frame_times
 from eigendance.window import Window
+from eigendance.writes import refuse_overwrite
 
 
 def rig_from(args) -> Rig:

@@ -24,7 +24,7 @@ import subprocess
 import sys
 
 from eigendance.errors import InputError, one_line
-from eigendance.files import locked_temporary, refuse_overwrite, sweep_temporary_files
+from eigendance.writes import locked_temporary, refuse_overwrite, sweep_temporary_files
 
 # The janitor: reads NUL-terminated paths; an empty record means the owner finished (renamed
 # or removed them) and it exits at once (children forked by the owner may hold the pipe open);

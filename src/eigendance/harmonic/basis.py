@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, checked_array, load_npz
+from eigendance.files import checked_array, load_npz
 from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal
 from eigendance.harmonic.construction import (
     CONSTRUCTIONS,
@@ -31,6 +31,7 @@ from eigendance.harmonic.reduced import (
     reduced_arrays,
     reduced_from_arrays,
 )
+from eigendance.writes import atomic_save_npz
 
 FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
                "coefficients", "residual", "laplacian")

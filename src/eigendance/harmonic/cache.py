@@ -7,7 +7,7 @@ its clients: a key is any string that names everything the arrays depend on, and
 cannot be read, that was stored under another key, whose arrays do not match its checksum, or
 that the client's own check of its content refuses, is discarded and computed again; a cache
 folder that cannot be written only costs the speed-up. Temporary files of killed writers are
-swept by `files.atomic_write`.
+swept by `writes.atomic_write`.
 
 Folder: $EIGENDANCE_CACHE_DIR, else the platform's user cache folder.
 """
@@ -24,8 +24,8 @@ import numpy as np
 import platformdirs
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz
 from eigendance.reads import read_npz
+from eigendance.writes import atomic_save_npz
 
 KEY, CHECKSUM = "__key__", "__checksum__"
 

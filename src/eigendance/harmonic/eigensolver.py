@@ -4,17 +4,14 @@ M is diagonal (a mesh's vertex areas) or, for a reduced basis, a sparse SPD matr
 (`eigendance.harmonic.mass`).
 
 `solve_eigsh` is the naive one-shot shift-invert `scipy.sparse.linalg.eigsh`, the baseline of
-every benchmark. `solve_bands` (the default) slices the spectrum into bands solved one by one.
+every benchmark. `solve_bands` (the default) slices the spectrum into bands solved one by one;
+`solve` gives it each connected component of the operator separately (`harmonic.components`).
 Both return (eigenvalues (k,) ascending, eigenvectors (n, k)) with Uᵀ M U = I.
 """
 
 from __future__ import annotations
 
 import math
-import multiprocessing
-import os
-import threading
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,9 +23,10 @@ from scipy.sparse.csgraph import connected_components
 from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError, InternalError
+from eigendance.harmonic.band_workers import Workers
+from eigendance.harmonic.components import solve_components
 from eigendance.harmonic.lanczos import lanczos_extreme
 from eigendance.harmonic.mass import as_mass
-from eigendance.processes import start_worker
 
 SOLVERS = ("bands", "eigsh")
 SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
@@ -80,8 +78,17 @@ def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
 
 
 def _dense(stiffness, mass, k):
-    """Small problems: dense symmetric solve of M^-1/2 L M^-1/2 (or L u = λ M u)."""
+    """Small problems: dense symmetric solve of M^-1/2 L M^-1/2 (or L u = λ M u).
+
+    One BLAS thread below 1000 rows: on a busy host OpenBLAS's threads make a 150-row `eigh`
+    take 0.8 s instead of 5 ms (measured: a mesh of 8 small pieces, load 5).
+    """
     mass = as_mass(mass)
+    with threadpool_limits(1 if stiffness.shape[0] < 1000 else None):
+        return _dense_solve(stiffness, mass, k)
+
+
+def _dense_solve(stiffness, mass, k):
     if mass.diagonal is None:
         values, vectors = scipy.linalg.eigh(stiffness.toarray(), mass.sparse().toarray(),
                                             subset_by_index=[0, k - 1])
@@ -475,7 +482,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         bands = []
     repairs, rounds = 0, 0
     most = 4 * math.ceil(k / count) + 8  # rounds of new bands before giving up (no progress)
-    with _Workers(workers) as run:
+    with Workers(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
         while True:
             pieces, gap = _stitch(bands) if bands else ([], None)
             found = sum(int(keep.sum()) for _, keep in pieces)
@@ -503,52 +510,6 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
             bands.sort(key=lambda band: band.shift)
     _verify(values, pieces, bands)
     return values, vectors
-
-
-class _Workers:
-    """Solves a list of bands, in `workers` separate processes when there are several.
-
-    A single-threaded caller is forked (fast, and nothing is imported again). A multi-threaded
-    one (the web server solves in a thread) is never forked — a fork copies locks other threads
-    may hold — so its workers come from a fork server, a fresh single-threaded interpreter; like
-    `spawn`, it imports the caller's main module (which needs the usual `__main__` guard). The
-    workers ignore Ctrl-C (the caller handles it and stops them) and die with the caller,
-    whatever signal ends it.
-    """
-
-    def __init__(self, workers: int):
-        self.workers, self.pool = workers, None
-
-    def __enter__(self):
-        return self
-
-    def __call__(self, arguments: list[tuple]) -> list[Band]:
-        if len(arguments) == 1 or self.workers == 1:
-            return [_solve_band(*each) for each in arguments]
-        if self.pool is None:
-            methods = multiprocessing.get_all_start_methods()
-            if threading.active_count() == 1 and "fork" in methods:
-                method = "fork"
-            else:
-                method = "forkserver" if "forkserver" in methods else "spawn"
-            context = multiprocessing.get_context(method)
-            if method == "forkserver":
-                context.set_forkserver_preload([__name__])
-            self.pool = ProcessPoolExecutor(self.workers, mp_context=context,
-                                            initializer=start_worker, initargs=(os.getpid(),))
-        return list(self.pool.map(_band_worker, arguments))
-
-    def __exit__(self, kind, *exception):
-        if self.pool is None:
-            return
-        if kind is not None:  # interrupted or failed: do not wait for bands nobody needs
-            for process in list(getattr(self.pool, "_processes", {}).values()):
-                process.kill()
-            # The queue's feeder thread may be blocked writing bands to a pipe the killed
-            # workers no longer read; joining it at exit would hang the interpreter.
-            if (calls := getattr(self.pool, "_call_queue", None)) is not None:
-                calls.cancel_join_thread()
-        self.pool.shutdown(wait=kind is None, cancel_futures=True)
 
 
 def _assemble(pieces, k: int, n: int):
@@ -614,8 +575,22 @@ def _verify(values, pieces, bands):
                     f"{accepted} were found", remedy={"solver": "eigsh"})
 
 
+def _solve_piece(stiffness, mass, k: int, progress=None):
+    """`solve_bands` on one connected operator; dense when k reaches n − 1, and `solve_eigsh`
+    for bands it cannot certify."""
+    if k >= stiffness.shape[0] - 1:  # a small piece of a mesh in pieces: all of its spectrum
+        return _dense(stiffness, mass, k)
+    try:
+        return solve_bands(stiffness, mass, k, progress)
+    except InternalError:  # bands it cannot certify (many copies of multiple eigenvalues)
+        return solve_eigsh(stiffness, mass, k, progress)
+
+
 def solve(stiffness, mass, k: int, solver: str = "bands", progress=None):
     """Dispatch to `solve_bands` or `solve_eigsh`; see SOLVERS.
+
+    "bands" solves each connected component of L's graph on its own, and identical components
+    once (`harmonic.components`); "eigsh", the baseline, solves the whole operator at once.
 
     Parameters
     ----------
@@ -630,10 +605,8 @@ def solve(stiffness, mass, k: int, solver: str = "bands", progress=None):
     (eigenvalues (k,) ascending, eigenvectors (n, k) M-orthonormal).
     """
     if solver == "bands":
-        try:
-            return solve_bands(stiffness, mass, k, progress)
-        except InternalError:  # bands it cannot certify (many copies of multiple eigenvalues)
-            return solve_eigsh(stiffness, mass, k, progress)
+        check_request(stiffness.shape[0], k)
+        return solve_components(stiffness, mass, k, _solve_piece, progress)
     if solver == "eigsh":
         return solve_eigsh(stiffness, mass, k, progress)
     raise InputError(f"unknown solver '{solver}' (expected one of {', '.join(SOLVERS)})")

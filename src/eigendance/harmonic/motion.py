@@ -19,12 +19,13 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from eigendance.files import OUT_OF_RANGE, atomic_write, check_finite, load_npz
+from eigendance.files import load_npz
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.limits import check_output
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 from eigendance.window import Window
+from eigendance.writes import OUT_OF_RANGE, atomic_write, check_finite
 
 CHUNK_BYTES = 24 << 20  # float64 product of one chunk of frames (cache-friendly; measured)
 

@@ -26,9 +26,10 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, load_npz
+from eigendance.files import load_npz
 from eigendance.modal.rotations import skew
 from eigendance.modal.skeleton import Skeleton
+from eigendance.writes import atomic_save_npz
 
 RANK_TOLERANCE = 1e-9  # singular values below this times the largest count as zero
 

@@ -21,7 +21,6 @@ from dataclasses import replace
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz
 from eigendance.modal.model import ModalModel
 from eigendance.modal.palette import (
     Palette,
@@ -35,6 +34,7 @@ from eigendance.modal.rotations import rotation_exp
 from eigendance.music.envelope import Envelope
 from eigendance.music.mapping import Mapping, ModeSettings
 from eigendance.music.spectrogram import Spectrogram
+from eigendance.writes import atomic_save_npz
 
 DRIVE_ATTACK, DRIVE_RELEASE = 0.15, 0.8  # s: the default mapping's envelope (a slow swell)
 

@@ -15,7 +15,7 @@ import os
 import numpy as np
 import soundfile
 
-from eigendance.files import atomic_write
+from eigendance.writes import atomic_write
 
 SAMPLE_RATE = 44100
 TEMPO = 120.0  # beats per minute

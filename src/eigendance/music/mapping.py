@@ -26,8 +26,9 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_write, finite_number, read_json
+from eigendance.files import finite_number, read_json
 from eigendance.music.envelope import Envelope, Pulse, shape_values
+from eigendance.writes import atomic_write
 
 FORMAT = "eigendance.mapping"
 VERSION = 3  # written; versions 1 (transfer, amplification, seed) and 2 are still read

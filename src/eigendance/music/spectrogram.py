@@ -28,7 +28,7 @@ import numpy as np
 from scipy.fft import rfft
 
 from eigendance.errors import InputError
-from eigendance.files import atomic_save_npz, atomic_write, checked_array, load_npz
+from eigendance.files import checked_array, load_npz
 from eigendance.music.constants import ANALYSIS
 from eigendance.music.decode import CHUNK_SAMPLES, mono, open_audio
 from eigendance.music.rhythm import (
@@ -38,6 +38,7 @@ from eigendance.music.rhythm import (
     rhythm_arrays,
     rhythm_from_arrays,
 )
+from eigendance.writes import atomic_save_npz, atomic_write
 
 FORMAT_KEYS = ("times", "band_edges", "values", "rate", "sample_rate", "duration")
 FILE_VERSION = 2  # written (with the rhythm); version 1 (no `version` field, no rhythm) is read

@@ -32,13 +32,13 @@ import uvicorn
 from tqdm import tqdm
 
 from eigendance.errors import InputError, one_line
-from eigendance.files import FRESH_SECONDS
 from eigendance.harmonic.cache import cache_folder
 from eigendance.music.demo_music import write_demo_wav
 from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 from eigendance.server.workers import warm
+from eigendance.writes import FRESH_SECONDS
 
 DEFAULT_PORT = 8765
 DEMO_K = 150
