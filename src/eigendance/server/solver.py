@@ -155,10 +155,7 @@ class BasisSolver:
         fails at once."""
         process = self.process
         if process is not None:
-            try:
-                process.kill()
-            except (ValueError, AttributeError):  # ended meanwhile
-                pass
+            workers.kill(process)
 
     def wait(self, timeout: float | None = None) -> bool:
         """Block until every job has finished (tests, the command line).

@@ -86,11 +86,11 @@ def receive(connection: socket.socket):
 
 def _bytes(connection: socket.socket, size: int) -> bytes:
     """`size` bytes read into a new bytes object (the GIL released while they arrive)."""
-    parts, left = [b""], size
+    parts, left = [], size
     while left:
         part = connection.recv(left, socket.MSG_WAITALL)
         if not part:
             raise EOFError("the worker process ended")
         parts.append(part)
         left -= len(part)
-    return parts[-1] if len(parts) <= 2 else b"".join(parts)  # one part but after a signal
+    return parts[0] if len(parts) == 1 else b"".join(parts)  # several only after a signal

@@ -10,8 +10,9 @@ A thread shares the interpreter's lock (the GIL) with the event loop: pure-Pytho
 JSON into dataclasses, trimesh's OBJ parser, a rig's joint graph, `bytes.join` of a bundle)
 makes every request wait, up to 0.8 s at once. The analysis of an added file therefore runs in
 a worker process of its own (`run`, called from a worker thread, which waits without the lock):
-a mesh file read and cleaned, a rig loaded, analysed and bundled, a song decoded, a basis
-solved. Their results come back through `server.transfer`, without a copy under the lock.
+a mesh file read and cleaned, a file's kind found, a rig loaded, analysed and bundled, a basis
+solved. Their results come back through `server.transfer`, without a copy under the lock. A
+song is decoded in a worker thread: librosa's numba kernels load once per process (about 4 s).
 """
 
 from __future__ import annotations
@@ -164,10 +165,20 @@ def stop() -> None:
     with RUNNING_LOCK:
         running = list(RUNNING)
     for process in running:
-        try:
-            process.kill()
-        except (ValueError, AttributeError):  # ended meanwhile
-            pass
+        kill(process)
+
+
+def kill(process) -> None:
+    """Kill a worker process of `run`, if it has not ended and been closed meanwhile.
+
+    Parameters
+    ----------
+    process : a multiprocessing Process.
+    """
+    try:
+        process.kill()
+    except (ValueError, AttributeError):  # ended meanwhile
+        pass
 
 
 def work(connection: socket.socket, function, args: tuple, progress: bool) -> None:
