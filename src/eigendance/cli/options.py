@@ -13,6 +13,8 @@ from tqdm import tqdm
 from eigendance import checks
 from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.laplacian import laplacian_for
+from eigendance.harmonic.mesh import load_mesh
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
 from eigendance.music.spectrogram import Spectrogram
@@ -155,7 +157,9 @@ def progress_bar(total: int | None, description: str, unit: str = "pair", initia
 
 
 def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
-    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache).
+    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache)
+    with the Laplacian it takes (`laplacian.laplacian_for`: robust for non-manifold edges, as
+    the server does).
 
     Parameters
     ----------
@@ -169,7 +173,8 @@ def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
     """
     if path.lower().endswith(".npz"):
         return HarmonicBasis.load(path)
-    return HarmonicBasis.from_mesh(path, k, progress=progress)
+    mesh = load_mesh(path)
+    return HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian_for(mesh), progress=progress)
 
 
 def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:

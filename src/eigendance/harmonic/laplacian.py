@@ -30,6 +30,21 @@ LAPLACIANS = ("cotan", "robust")
 CONTACT_STIFFNESS = 1e4
 
 
+def laplacian_for(mesh) -> str:
+    """The Laplacian a mesh dances with when none is asked for: "robust" when it has
+    non-manifold edges (the cotangent Laplacian refuses them), else "cotan" (the thesis's).
+
+    Parameters
+    ----------
+    mesh : a `Mesh`.
+
+    Returns
+    -------
+    str, one of LAPLACIANS.
+    """
+    return "robust" if mesh.non_manifold_edge_count() else "cotan"
+
+
 def laplacian(vertices: np.ndarray, faces: np.ndarray,
               kind: str = "cotan") -> tuple[sp.csc_matrix, np.ndarray]:
     """The operator of the harmonics: (L, mass), L sparse (n, n) PSD stiffness with the

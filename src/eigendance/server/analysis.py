@@ -18,6 +18,7 @@ import numpy as np
 from eigendance.errors import EigendanceError, InputError, one_line
 from eigendance.files import read_json, suffix_of
 from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.harmonic.laplacian import laplacian_for
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.rig import Rig
@@ -61,11 +62,11 @@ def read_mesh(path: str, name: str) -> tuple[Mesh, str]:
 
     Returns
     -------
-    (mesh, laplacian): the `Mesh` named `name`; "robust" when it has non-manifold edges, else
-    "cotan". EigendanceError when the file cannot be read.
+    (mesh, laplacian): the `Mesh` named `name` and `laplacian.laplacian_for` it.
+    EigendanceError when the file cannot be read.
     """
     mesh = dataclasses.replace(load_mesh(path), name=name)
-    return mesh, "robust" if mesh.non_manifold_edge_count() else "cotan"
+    return mesh, laplacian_for(mesh)
 
 
 def read_rig(source: str, name: str, built_in: bool = False) -> Skeleton:
