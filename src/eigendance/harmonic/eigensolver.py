@@ -23,10 +23,10 @@ from scipy.sparse.csgraph import connected_components
 from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError, InternalError
-from eigendance.harmonic.band_workers import Workers
 from eigendance.harmonic.components import solve_components
 from eigendance.harmonic.lanczos import lanczos_extreme
 from eigendance.harmonic.mass import as_mass
+from eigendance.processes import Pool
 
 SOLVERS = ("bands", "eigsh")
 SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
@@ -482,7 +482,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         bands = []
     repairs, rounds = 0, 0
     most = 4 * math.ceil(k / count) + 8  # rounds of new bands before giving up (no progress)
-    with Workers(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
+    with Pool(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
         while True:
             pieces, gap = _stitch(bands) if bands else ([], None)
             found = sum(int(keep.sum()) for _, keep in pieces)
