@@ -16,6 +16,8 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
+from eigendance.geometry import bounding_box_diagonal
+
 # A vertex touches another piece when its closest point there lies within this many of its own
 # mean edge lengths.
 CONTACT_REACH = 2.0
@@ -260,7 +262,7 @@ def part_drift(vertices, faces, displacements, reach: float = 0.01) -> float:
     count, labels = components(len(vertices), faces)
     if count < 2:
         return float("nan")
-    diagonal = float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
+    diagonal = bounding_box_diagonal(vertices)
     used = np.flatnonzero(np.bincount(faces.ravel(), minlength=len(vertices)) > 0)
     touching = closest_on_others(vertices, faces, labels, used,
                                  np.full(len(used), reach * diagonal))

@@ -17,7 +17,7 @@ from eigendance.assets.gltf import GltfFile
 from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
-from eigendance.geometry import weld
+from eigendance.geometry import bounding_box_diagonal, weld
 from eigendance.modal.bodies import Body, Joint, check_rig_size
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.stiffness import DEFAULT_JOINT_FREQUENCY, set_automatic_stiffness
@@ -182,7 +182,7 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     n_joints = len(positions)
     vertices, weights = rig.vertices, rig.weights
     extent = np.concatenate([positions, vertices]) if len(vertices) else positions
-    size = float(np.linalg.norm(extent.max(axis=0) - extent.min(axis=0))) or 1.0
+    size = bounding_box_diagonal(extent) or 1.0
     tiny = 1e-4 * size
     children = [[] for _ in range(n_joints)]
     for child, parent in enumerate(rig.parents):
