@@ -169,8 +169,8 @@ def kill(process, group: bool = False) -> None:
         try:
             os.killpg(process.pid, signal.SIGKILL)
             return
-        except (ProcessLookupError, PermissionError, TypeError):
-            pass  # it leads no group (yet), or has no pid: kill it alone
+        except (ProcessLookupError, PermissionError, TypeError, ValueError):
+            pass  # it leads no group (yet), has no pid or is closed: kill it alone
     try:
         process.kill()
     except (ValueError, AttributeError):  # closed, or never started
