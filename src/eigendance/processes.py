@@ -33,11 +33,13 @@ from multiprocessing import resource_tracker
 
 POLL_SECONDS = 0.5
 PR_SET_PDEATHSIG = 1
-# What the fork server imports once, before it forks any worker: the eigen-solver (every kind of
-# worker solves) and the server's analysis. A batch's tasks import the rest of theirs
-# (`batch.work`: export, rigs, songs; 0.15 s and 94 MB more) once per worker, which the server's
-# fork server is spared.
-PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis")
+# What the fork server imports once, before it forks any worker: what the workers run — the
+# eigen-solver (bands, and every other kind of worker solves), the server's analysis and a
+# batch's tasks (`batch.work`: export, rigs, songs). The last costs the server's fork server
+# 94 MB resident, but 5 MB proportional (shared libraries, mostly), and 0.15 s when it starts;
+# without it each batch worker imported it itself (0.15 s, 22 MB of its own).
+PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis",
+           "eigendance.batch.work")
 # How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
 TRACKER_WARNING = "ignore:resource_tracker:UserWarning"
 # Resolved here, in the parent: the child of a fork runs only this C call before exec (a
