@@ -123,8 +123,8 @@ def run(function, *args, progress=None, started=None):
     InternalError when the process died (killed, out of memory, or `stop`).
     """
     mine, theirs = socket.socketpair()
-    process = processes.context().Process(target=work, name=f"eigendance {function.__name__}",
-                                          args=(theirs, function, args, progress is not None))
+    process = context().Process(target=work, name=f"eigendance {function.__name__}",
+                                args=(theirs, function, args, progress is not None))
     try:
         process.start()
         theirs.close()
@@ -209,3 +209,14 @@ def warm() -> None:
     """Start the fork server now (`processes.warm`), so that the first analysis does not wait
     for it."""
     processes.warm()
+
+
+def context():
+    """The start method of the server's worker processes (`processes.context`: the fork server,
+    the server has threads).
+
+    Returns
+    -------
+    multiprocessing context.
+    """
+    return processes.context()
