@@ -20,14 +20,12 @@ import textwrap
 import eigendance
 
 SKIPPED_MODULES = ("__main__",)  # running them runs the command line
-# Replaced on another branch right now (issue 23: the new glTF reader), which documents its own.
-REWRITTEN = ("eigendance.modal.gltf_skin",)
 
 
 def public_modules():
     for info in pkgutil.walk_packages(eigendance.__path__, "eigendance."):
         last = info.name.rsplit(".", 1)[-1]
-        if last.startswith("_") or last in SKIPPED_MODULES or info.name in REWRITTEN:
+        if last.startswith("_") or last in SKIPPED_MODULES:
             continue
         yield importlib.import_module(info.name)
     yield eigendance

@@ -7,11 +7,6 @@ import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src", "eigendance")
 MODULE_LINES, FUNCTION_LINES = 420, 60
-# Rewritten on other branches right now: they come back under the limits there.
-REWRITTEN = {
-    "modal/gltf_skin.py": "replaced by the new glTF reader (issue 23)",
-    "harmonic/eigensolver.py": "reworked with the reduced basis (issue 19)",
-}
 
 
 def sources():
@@ -20,9 +15,8 @@ def sources():
             if name.endswith(".py"):
                 path = os.path.join(folder, name)
                 relative = os.path.relpath(path, ROOT).replace(os.sep, "/")
-                if relative not in REWRITTEN:
-                    with open(path, encoding="utf-8") as file:
-                        yield relative, file.read()
+                with open(path, encoding="utf-8") as file:
+                    yield relative, file.read()
 
 
 def docstring_lines(node: ast.AST) -> int:
@@ -63,7 +57,3 @@ def test_functions_are_under_about_60_lines():
                 long[f"{path}:{node.name}"] = code_lines(node)
     assert not long, f"functions over {FUNCTION_LINES} lines (docstrings aside): {long}"
 
-
-def test_the_rewritten_modules_exist():
-    for relative in REWRITTEN:
-        assert os.path.isfile(os.path.join(ROOT, relative)), relative

@@ -7,6 +7,7 @@ loaders all ask `kind_of`. Reading checks every field a file holds (`checked_arr
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 import os
@@ -95,6 +96,25 @@ def check_readable(path: str | os.PathLike) -> str:
     if os.path.getsize(path) == 0:
         raise InputError(f"{os.path.basename(path)}: the file is empty")
     return path
+
+
+def file_digest(path: str | os.PathLike) -> str:
+    """SHA-256 of a file's bytes, read in blocks of 1 MiB (the server's and a batch's content
+    keys).
+
+    Parameters
+    ----------
+    path : the file.
+
+    Returns
+    -------
+    str, 64 hexadecimal digits.
+    """
+    digest = hashlib.sha256()
+    with open(path, "rb") as file:
+        while block := file.read(1 << 20):
+            digest.update(block)
+    return digest.hexdigest()
 
 
 def load_npz(path, required: tuple[str, ...]) -> dict:

@@ -192,6 +192,26 @@ def bounding_box_diagonal(vertices: np.ndarray) -> float:
     return float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
 
 
+def face_edges(faces: np.ndarray) -> np.ndarray:
+    """The edges of the triangles as they run round each one (i→j, j→k, k→i): an edge shared
+    by two triangles comes twice, once each way on a consistently oriented surface.
+
+    Parameters
+    ----------
+    faces : (m, 3).
+
+    Returns
+    -------
+    (3m, 2) vertex indices.
+
+    Example
+    -------
+    >>> face_edges(np.array([[0, 1, 2]])).tolist()
+    [[0, 1], [1, 2], [2, 0]]
+    """
+    return np.asarray(faces)[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+
+
 def face_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """(m, 3) normals of the triangles, of length twice their area (not unit).
 

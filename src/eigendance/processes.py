@@ -1,28 +1,115 @@
-"""Worker processes that leave Ctrl-C to their caller and die with it (docs/design.md#batch).
+"""Worker processes, one way for all (docs/design.md#worker-processes).
 
-The eigen-solver's band workers and a batch's workers start with `start_worker(caller)`:
-Ctrl-C (SIGINT, which a terminal sends to its whole foreground group) is ignored, so the
-caller alone decides what an interruption stops; on Linux the kernel kills the worker when its
-parent dies (PR_SET_PDEATHSIG), and, elsewhere or as a second guard, a thread polls the caller
-and the parent and exits when either is gone. However the caller ends, no worker is left
-behind. Programs we run (ffmpeg) start with `die_with_parent` for the same reason: a killed
-`render` leaves no encoder writing on (docs/design.md#errors).
+The eigen-solver's bands (`Pool`), the web server's analyses (`server.workers.run`), a batch's
+tasks (`batch.engines.LocalEngine`) and a video's render workers (`export.video`) start, die and
+are killed here:
+
+- how they start (`context`): a fork of the caller where that is safe, else multiprocessing's
+  fork server — one per process, which imports PRELOAD once (the one list: multiprocessing's
+  preload is process-wide, and the first fork server to start keeps it), so that a worker starts
+  in milliseconds with the eigen-solver and the analysis imported; spawn where neither exists.
+- how they die with their caller (`start_worker`): Ctrl-C (SIGINT, which a terminal sends to its
+  whole foreground group) is ignored, so the caller alone decides what an interruption stops; on
+  Linux the kernel kills the worker when its parent dies (PR_SET_PDEATHSIG), and a worker given
+  its caller also has a thread poll the caller and the parent and exit when either is gone.
+  Programs we run (ffmpeg) start with `die_with_parent` for the same reason: a killed `render`
+  leaves no encoder writing on (docs/design.md#errors).
+- how they are killed (`kill`, `kill_pool`): at once (SIGKILL), their process group too where
+  they lead one, and a process that has ended meanwhile is no error.
 """
 
 from __future__ import annotations
 
 import ctypes
+import multiprocessing
+import multiprocessing.forkserver
 import os
 import signal
 import sys
 import threading
 import time
+from concurrent.futures import ProcessPoolExecutor
+from multiprocessing import resource_tracker
 
 POLL_SECONDS = 0.5
 PR_SET_PDEATHSIG = 1
+# What the fork server imports once, before it forks any worker: what the workers run — the
+# eigen-solver (bands, and every other kind of worker solves), the server's analysis and a
+# batch's tasks (`batch.work`: export, rigs, songs). The last costs the server's fork server
+# 94 MB resident, but 5 MB proportional (shared libraries, mostly), and 0.15 s when it starts;
+# without it each batch worker imported it itself (0.15 s, 22 MB of its own).
+PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis",
+           "eigendance.batch.work")
+# How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
+TRACKER_WARNING = "ignore:resource_tracker:UserWarning"
 # Resolved here, in the parent: the child of a fork runs only this C call before exec (a
 # preexec_fn that imported or took a lock could deadlock in a threaded parent such as the server).
 _prctl = ctypes.CDLL(None, use_errno=True).prctl if sys.platform.startswith("linux") else None
+
+
+def can_fork() -> bool:
+    """Whether this platform forks (Linux, macOS; not Windows).
+
+    Returns
+    -------
+    bool.
+    """
+    return "fork" in multiprocessing.get_all_start_methods()
+
+
+def context(how: str = "fresh"):
+    """The multiprocessing context workers start from.
+
+    Parameters
+    ----------
+    how : "fresh": a fork server's, a fresh single-threaded interpreter that has imported PRELOAD
+        (like spawn, it imports the caller's main module, which needs the usual `__main__`
+        guard); spawn where there is no fork server. "auto": a fork of the caller when it is
+        single-threaded (fast, nothing imported again), else "fresh" (a fork copies locks other
+        threads may hold). "fork": a fork of the caller whatever its threads, for a worker that
+        imports nothing and takes no lock (`can_fork` first).
+
+    Returns
+    -------
+    multiprocessing context.
+
+    Raises
+    ------
+    ValueError
+        For another `how`, or "fork" where the platform does not fork.
+    """
+    if how not in ("fresh", "auto", "fork"):
+        raise ValueError(f"how: 'fresh', 'auto' or 'fork', not {how!r}")
+    if how == "fork" or (how == "auto" and threading.active_count() == 1 and can_fork()):
+        return multiprocessing.get_context("fork")
+    quiet_resource_tracker()
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    forkserver = multiprocessing.get_context("forkserver")
+    forkserver.set_forkserver_preload(list(PRELOAD))
+    return forkserver
+
+
+def warm() -> None:
+    """Start the fork server now (it imports PRELOAD in its own process, in about 2 s), so that the
+    first worker does not wait for it; nothing without a fork server."""
+    if context().get_start_method() == "forkserver":
+        multiprocessing.forkserver.ensure_running()
+
+
+def quiet_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker with its leak warning ignored.
+
+    A fork server's queues hold named semaphores that the tracker (a child process sharing our
+    stderr) unlinks if we die without doing it. When the web server is killed by SIGKILL it
+    does so and prints "resource_tracker: There appear to be 5 leaked semaphore objects" under
+    the dead server's output; the semaphores are cleaned up all the same. The tracker's
+    interpreter gets the parent's `-W` options (sys.warnoptions) when it starts, the first time
+    a fork server or a spawned process needs it.
+    """
+    if TRACKER_WARNING not in sys.warnoptions:
+        sys.warnoptions.append(TRACKER_WARNING)
+    resource_tracker.ensure_running()
 
 
 def die_with_parent() -> None:
@@ -39,16 +126,21 @@ def die_with_parent() -> None:
         _prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
 
 
-def start_worker(caller: int) -> None:
-    """In a new worker process: ignore Ctrl-C and exit when `caller` or the parent is gone.
+def start_worker(caller: int | None = None) -> None:
+    """In a new worker process: ignore Ctrl-C and die with the parent; with `caller`, also exit
+    when the caller is gone.
 
     Parameters
     ----------
-    caller : the process id of the process the worker works for.
+    caller : None, or the process id of the process the worker works for (a fork server's
+        workers are not its children): a thread polls it and the parent, which also guards
+        where the kernel does not kill orphans.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     parent = os.getppid()
     die_with_parent()  # the kernel kills us when our parent dies
+    if caller is None:
+        return
 
     def watch():  # elsewhere, and as a second guard: poll the caller and the parent
         while True:
@@ -63,3 +155,108 @@ def start_worker(caller: int) -> None:
                 os._exit(1)
 
     threading.Thread(target=watch, name="watch-caller", daemon=True).start()
+
+
+def kill(process, group: bool = False) -> None:
+    """Kill a worker process at once (SIGKILL); nothing when it has ended (and perhaps been
+    closed) meanwhile.
+
+    Parameters
+    ----------
+    process : a multiprocessing Process.
+    group : kill its process group too (a worker that leads one, with its children: an
+        encoder, renderers).
+    """
+    if group:
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+            return
+        except (ProcessLookupError, PermissionError, TypeError, ValueError):
+            pass  # it leads no group (yet), has no pid or is closed: kill it alone
+    try:
+        process.kill()
+    except (ValueError, AttributeError):  # closed, or never started
+        pass
+
+
+def kill_pool(pool: ProcessPoolExecutor, group: bool = False) -> None:
+    """Kill a process pool's workers at once and leave no thread of the pool waiting on them;
+    `pool.shutdown` follows.
+
+    Parameters
+    ----------
+    pool : the pool.
+    group : kill each worker's process group too (`kill`).
+    """
+    for process in list((getattr(pool, "_processes", None) or {}).values()):
+        kill(process, group)
+    # The queue's feeder thread may be blocked writing calls to a pipe the killed workers no
+    # longer read; joining it at exit would hang the interpreter.
+    if (calls := getattr(pool, "_call_queue", None)) is not None:
+        calls.cancel_join_thread()
+    # A worker killed while it sent a result leaves half a message in the result pipe: the
+    # pool's thread reading it would wait for the rest forever, and the interpreter for that
+    # thread at exit (`basis` hung after SIGTERM), because this process holds the pipe's
+    # writing end too. Closing it turns the wait into an EOF.
+    if (results := getattr(pool, "_result_queue", None)) is not None:
+        results._writer.close()
+
+
+class Pool:
+    """Calls `function` on each of a list of arguments, in `workers` separate processes when
+    there are several (the eigen-solver's bands).
+
+    The workers come from `context("auto")`: forked from a single-threaded caller, from the fork
+    server for a multi-threaded one (the web server solves in a thread). They ignore Ctrl-C (the
+    caller handles it and stops them) and die with the caller, whatever signal ends it; an
+    interrupted or failed call kills them at once (`kill_pool`).
+
+    Parameters
+    ----------
+    workers : processes.
+    function : a module-level callable(argument) (the workers import its module).
+    here : what runs instead when a call is made in this process (one argument, or one
+        worker); default `function`.
+
+    Example
+    -------
+    >>> with Pool(1, abs) as run:
+    ...     run([-1, 2])
+    [1, 2]
+    """
+
+    def __init__(self, workers: int, function, here=None):
+        self.workers, self.function, self.pool = workers, function, None
+        self.here = function if here is None else here
+
+    def __enter__(self):
+        return self
+
+    def __call__(self, arguments: list) -> list:
+        """[function(argument) for each argument], in order.
+
+        Parameters
+        ----------
+        arguments : the arguments.
+
+        Returns
+        -------
+        list of the results.
+        """
+        if len(arguments) == 1 or self.workers == 1:
+            return [self.here(each) for each in arguments]
+        if self.pool is None:
+            self.pool = ProcessPoolExecutor(self.workers, mp_context=context("auto"),
+                                            initializer=start_worker, initargs=(os.getpid(),))
+        # Not `map`: on an interruption it cancels the queued futures from this thread while
+        # the pool's own thread may be failing them (`__exit__`), which CPython 3.11 reports
+        # as an InvalidStateError traceback. Unfinished futures are left to the pool.
+        futures = [self.pool.submit(self.function, each) for each in arguments]
+        return [future.result() for future in futures]
+
+    def __exit__(self, kind, *exception):
+        if self.pool is None:
+            return
+        if kind is not None:  # interrupted or failed: do not wait for results nobody needs
+            kill_pool(self.pool)
+        self.pool.shutdown(wait=kind is None, cancel_futures=True)

@@ -91,9 +91,85 @@ def sweep_temporary_files(folder: str | os.PathLike, fresh: float = FRESH_SECOND
     return removed
 
 
-# The renames a command defers until all its outputs are written (`all_or_nothing`):
-# [(temporary, path, locked handle)], or None outside one.
-_pending: contextvars.ContextVar[list | None] = contextvars.ContextVar("pending", default=None)
+class Renames:
+    """The one all-or-nothing mechanism: locked temporary files beside their destinations,
+    renamed over them together when all are written (`commit`), or all removed (`discard`).
+    `all_or_nothing` holds one for a command's `atomic_write`s, `export.output.Outputs` one for
+    an export's files.
+
+    Example
+    -------
+    >>> import tempfile
+    >>> folder = tempfile.mkdtemp()
+    >>> renames = Renames()
+    >>> handle, temporary = temporary_beside(os.path.join(folder, "a.txt"))
+    >>> renames.add(temporary, os.path.join(folder, "a.txt"), handle)
+    >>> renames.commit()
+    >>> os.listdir(folder)
+    ['a.txt']
+    """
+
+    def __init__(self):
+        self.pending: list[tuple[str, str, int]] = []  # (temporary, destination, lock handle)
+
+    def add(self, temporary: str, destination: str, handle: int) -> None:
+        """Rename `temporary` over `destination` with the others; its lock is released then.
+
+        Parameters
+        ----------
+        temporary : the written file (`temporary_beside`).
+        destination : the output it becomes.
+        handle : a file descriptor holding its lock (closed by `commit` or `discard`).
+        """
+        self.pending.append((temporary, os.fspath(destination), handle))
+
+    def commit(self) -> None:
+        """Give each temporary file the permissions a plain open() would (mkstemp makes 0600)
+        and rename it over its destination; InputError naming the destination when one cannot
+        be, and the temporaries not renamed yet are removed."""
+        umask = os.umask(0)
+        os.umask(umask)
+        try:
+            for temporary, path, _ in self.pending:
+                os.chmod(temporary, 0o666 & ~umask)
+                os.replace(temporary, path)
+        except OSError as error:
+            raise InputError(f"{path}: cannot write "
+                             f"({error.strerror or one_line(error)})") from None
+        finally:
+            self.discard()
+
+    def discard(self) -> None:
+        """Remove the temporary files not renamed and release their locks."""
+        for temporary, _, handle in self.pending:
+            _remove(temporary)
+            os.close(handle)
+        self.pending.clear()
+
+
+def temporary_beside(path: str | os.PathLike, suffix: str = "") -> tuple[int, str]:
+    """A new locked temporary file in the folder of `path` (made if missing), once the debris of
+    killed writers there is removed (`sweep_temporary_files`).
+
+    Parameters
+    ----------
+    path : the destination.
+    suffix : appended after `.part` (`locked_temporary`).
+
+    Returns
+    -------
+    (file descriptor, path); OSError when the folder cannot be made or written.
+    """
+    folder = os.path.dirname(os.path.abspath(os.fspath(path)))
+    os.makedirs(folder, exist_ok=True)
+    sweep_temporary_files(folder)
+    return locked_temporary(folder, suffix)
+
+
+# The renames a command defers until all its outputs are written (`all_or_nothing`), or None
+# outside one.
+_pending: contextvars.ContextVar[Renames | None] = contextvars.ContextVar("pending",
+                                                                          default=None)
 
 
 @contextlib.contextmanager
@@ -101,7 +177,7 @@ def all_or_nothing():
     """Within it, `atomic_write` keeps each output in its (locked) temporary file; they are all
     renamed into place when the block ends normally, and all removed when it raises: a command
     that writes several files (a spectrogram and its picture, an animation and its mapping)
-    leaves none of them when it fails.
+    leaves none of them when it fails (`Renames`).
 
     Returns
     -------
@@ -120,27 +196,16 @@ def all_or_nothing():
     >>> os.listdir(folder)
     []
     """
-    pending: list = []
-    token = _pending.set(pending)
+    renames = Renames()
+    token = _pending.set(renames)
     try:
         yield
     except BaseException:
-        for temporary, _, handle in pending:
-            _remove(temporary)
-            os.close(handle)
+        renames.discard()
         raise
     finally:
         _pending.reset(token)
-    try:
-        for temporary, path, _ in pending:
-            os.replace(temporary, path)
-    except OSError as error:
-        raise InputError(f"{error.filename}: cannot write "
-                         f"({error.strerror or one_line(error)})") from None
-    finally:
-        for temporary, _, handle in pending:
-            _remove(temporary)
-            os.close(handle)
+    renames.commit()
 
 
 def _remove(path: str) -> None:
@@ -170,12 +235,9 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True, alone: bool 
     path = os.fspath(path)
     if os.path.isdir(path):
         raise InputError(f"{path}: is a folder; give a file name for the output")
-    folder = os.path.dirname(os.path.abspath(path))
     try:
-        os.makedirs(folder, exist_ok=True)
-        sweep_temporary_files(folder)
         # The lock is held until the file is renamed (the rename happens while it is open).
-        handle, temporary = locked_temporary(folder)
+        handle, temporary = temporary_beside(path)
     except OSError as error:
         raise InputError(f"{path}: cannot write ({error.strerror or one_line(error)})") from None
     try:
@@ -188,11 +250,11 @@ def atomic_write(path: str | os.PathLike, write, sync: bool = True, alone: bool 
             umask = os.umask(0)
             os.umask(umask)
             os.fchmod(file.fileno(), 0o666 & ~umask)
-            pending = None if alone else _pending.get()
-            if pending is None:
+            renames = None if alone else _pending.get()
+            if renames is None:
                 os.replace(temporary, path)
             else:  # renamed at the end of `all_or_nothing`, locked until then
-                pending.append((temporary, path, os.dup(file.fileno())))
+                renames.add(temporary, path, os.dup(file.fileno()))
     except BaseException as error:
         if os.path.exists(temporary):
             os.unlink(temporary)

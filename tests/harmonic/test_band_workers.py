@@ -114,7 +114,7 @@ def test_bands_solved_from_a_thread_equal_bands_solved_from_the_main_thread():
 INTERRUPTED_STREAM = """
 import signal, sys
 import numpy as np
-from eigendance.harmonic.band_workers import Workers
+from eigendance.processes import Pool
 
 BAND = np.ones(8_000_000)  # 64 MB: the workers spend their time sending results
 
@@ -130,7 +130,7 @@ def interrupt(*_):
 signal.signal(signal.SIGALRM, interrupt)
 signal.setitimer(signal.ITIMER_REAL, float(sys.argv[1]))
 try:
-    with Workers(2, band) as run:
+    with Pool(2, band) as run:
         while True:
             run([None] * 4)
 except KeyboardInterrupt:

@@ -3,6 +3,7 @@ import pytest
 import scipy.linalg
 
 import eigendance.harmonic.eigensolver as eigen
+import eigendance.harmonic.slicing as slicing
 from eigendance.errors import EigendanceError
 from eigendance.harmonic.eigensolver import solve_bands, solve_eigsh
 from eigendance.harmonic.laplacian import laplacian
@@ -124,7 +125,7 @@ def test_k_too_large():
 
 def test_gaps_between_bands_are_filled(sphere_problem, monkeypatch):
     """With bands placed apart (negative overlap) the solver must fill every gap it leaves."""
-    monkeypatch.setattr(eigen, "OVERLAP", -0.4)
+    monkeypatch.setattr(slicing, "OVERLAP", -0.4)
     stiffness, mass = sphere_problem
     values, _ = solve_bands(stiffness, mass, 120, per_band=30, workers=1)
     dense = scipy.linalg.eigh(stiffness.toarray(), np.diag(mass), eigvals_only=True,
@@ -162,14 +163,13 @@ def test_null_space_is_one_constant_per_component(monkeypatch):
 
 
 def test_counting_function_inverts_weyl_law():
-    from eigendance.harmonic.eigensolver import _counting
 
     area = 4 * np.pi  # N(λ) = λ
-    assert np.isclose(_counting(np.array([]), area)(250), 250)
+    assert np.isclose(slicing.counting(np.array([]), area)(250), 250)
     # Fitted from pairs that follow N(λ) = 2λ + 3√λ: the inverse is found beyond them.
     index = np.arange(300) + 0.5
     values = ((-3 + np.sqrt(9 + 8 * index)) / 4) ** 2  # N(λ_j) = j + ½
-    assert np.isclose(_counting(values, area)(2 * 30**2 + 3 * 30), 30**2, rtol=1e-9)
+    assert np.isclose(slicing.counting(values, area)(2 * 30**2 + 3 * 30), 30**2, rtol=1e-9)
 
 
 def test_trusted_radius_leaves_out_a_multiple_eigenvalue_on_the_edge():

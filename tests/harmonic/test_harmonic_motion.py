@@ -83,6 +83,17 @@ def test_mapping_with_other_k_is_resampled(basis, spectrogram):
     fine = Mapping(np.full(64, 0.2), np.full(basis.k, 0.01))
     np.testing.assert_allclose(positions_at(basis, spectrogram, coarse, [0.5]),
                                positions_at(basis, spectrogram, fine, [0.5]))
+    # Four amplifications on k = 30 harmonics, by normalised index: harmonic ν takes
+    # a[⌊(ν + ½)·4/30⌋] = a[⌊(2ν + 1)/15⌋], counted by hand: ν 0–6 → a₀, 7–14 → a₁,
+    # 15–21 → a₂, 22–29 → a₃ (⌊ν·4/30⌋ would give ν = 7 a₀; ⌊ν·3/29 + ½⌋ other bounds).
+    # The 64 bands go to every harmonic (transfer spread over [0, 1)), so each one moves.
+    assert basis.k == 30
+    amplification = np.array([0.01, -0.02, 0.03, 0.05])
+    transfer = (np.arange(64) + 0.5) / 64
+    coarse = Mapping(transfer, amplification)
+    fine = Mapping(transfer, np.repeat(amplification, [7, 8, 7, 8]))
+    np.testing.assert_allclose(positions_at(basis, spectrogram, coarse, [0.5, 0.75]),
+                               positions_at(basis, spectrogram, fine, [0.5, 0.75]), rtol=1e-12)
 
 
 def test_cli_animate(tmp_path, mesh, capsys):

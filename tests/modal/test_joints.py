@@ -118,15 +118,17 @@ def test_default_stiffness_by_hand():
     m = bodies[1].mass
     own = m * (3 * 0.05**2 + 1.0) / 12
     gravity = (2 * math.pi) ** 2 * 0.75
+    by_hand = [gravity / 1.0 * (2 * own + m * (0.25 + 2.25)), gravity / 0.5 * (own + m * 0.25)]
     shoulder = automatic_stiffness(joints[0], bodies, 1.0, ([0], [1, 2]))
     elbow = automatic_stiffness(joints[1], bodies, 1.0, ([0, 1], [2]))
-    assert shoulder[0] == pytest.approx(gravity / 1.0 * (2 * own + m * (0.25 + 2.25)), rel=1e-12)
-    assert elbow[0] == pytest.approx(gravity / 0.5 * (own + m * 0.25), rel=1e-12)
+    assert shoulder[0] == pytest.approx(by_hand[0], rel=1e-12)
+    assert elbow[0] == pytest.approx(by_hand[1], rel=1e-12)
     skeleton = Skeleton(bodies, joints)
-    np.testing.assert_allclose(skeleton.automatic_stiffness(0), shoulder, rtol=1e-12)
+    # The skeleton finds the sides itself: the same values, against the hand rule.
+    np.testing.assert_allclose(skeleton.automatic_stiffness(0), by_hand[:1], rtol=1e-12)
     assert [side.tolist() for side in skeleton.joint_sides(0)] == [[0], [1, 2]]
     for index, values in enumerate(skeleton.automatic_stiffnesses()):
-        np.testing.assert_allclose(values, skeleton.automatic_stiffness(index), rtol=1e-12)
+        np.testing.assert_allclose(values, [by_hand[index]], rtol=1e-12)
 
 
 def test_default_stiffness_swings_an_arm_like_a_pendulum():
@@ -142,10 +144,17 @@ def test_default_stiffness_swings_an_arm_like_a_pendulum():
 
 
 def test_a_joint_in_a_loop_takes_its_own_two_bodies():
+    """The square loop (corners on the unit circle, sides s = √2, r = 0.05): a joint has no
+    sides, so each of its two rods is one, its centre d = s/2 from the joint and its inertia
+    about the joint's z axis I = m(3r² + s²)/12 + m·d². The extent is the diagonal 2√2, so
+    ℓ = √2/2 = d and k = g/d·I = (2π)²·I."""
     loop = planar_loop(4, skin=False)
     assert loop.joint_sides(0) is None
     joint = loop.joints[0]
+    m = loop.bodies[0].mass
+    by_hand = (2 * math.pi) ** 2 * (m * (3 * 0.05**2 + 2.0) / 12 + m * 0.5)
     by_bodies = automatic_stiffness(joint, loop.bodies, 1.0, None)
+    np.testing.assert_allclose(by_bodies, [by_hand], rtol=1e-12)
     np.testing.assert_allclose(joint.stiffness, by_bodies, rtol=1e-12)
 
 

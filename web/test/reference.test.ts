@@ -118,6 +118,13 @@ describe("filter (docs/design.md#mapping)", () => {
     const lagged = smoothed(spectrum, 0.2);
     expect(lagged.length).toBe(spectrum.values.length);
     expect(Math.max(...lagged)).toBeLessThanOrEqual(Math.max(...spectrum.values) + 1e-6);
+    // A step of loudness 1 in one band (the other silent) at 10 frames/s, τ = 0.1 s: the pole
+    // m = exp(−1/(10·0.1)) = 1/e, so frame j reads 1 − e^−(j+1) (by hand: y_j = m·y_(j−1) +
+    // (1 − m)·1 from y_(−1) = 0) — 0.632, 0.865, 0.950 — where a pass-through reads 1.
+    const step = { ...spectrum, rate: 10, frames: 3, bands: 2,
+                   values: Float32Array.from([1, 0, 1, 0, 1, 0]) };
+    expectClose(smoothed(step, 0.1), [1 - Math.exp(-1), 0, 1 - Math.exp(-2), 0,
+                                      1 - Math.exp(-3), 0], 1e-6);
   });
 
   it("resamples amplification by normalised index", () => {

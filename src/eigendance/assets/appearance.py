@@ -9,7 +9,9 @@ vertex follows it: at any time drawn vertex i is at its welded vertex's position
 
 Conventions: colours are linear RGB(A) as glTF stores them (sRGB textures are decoded by the
 viewer); UVs are glTF's, (0, 0) the top-left corner of the image (an OBJ's v is flipped on
-reading); normals are unit vectors in the model file's coordinates.
+reading); normals are unit vectors in the model file's coordinates. sRGB colours (an MTL's
+Kd, a vertex colour, a hex colour) become linear with `srgb_to_linear`, and back with
+`linear_to_srgb`; both clip to [0, 1] first (docs/design.md#appearance).
 """
 
 from __future__ import annotations
@@ -21,6 +23,42 @@ import numpy as np
 # Drawn vertices closer than this fraction of the bounding-box diagonal are one welded vertex.
 WELD_TOLERANCE = 1e-7
 ALPHA_MODES = ("OPAQUE", "MASK", "BLEND")
+
+
+def srgb_to_linear(srgb) -> np.ndarray:
+    """sRGB components → linear (IEC 61966-2-1), clipped to [0, 1] first: glTF's colour
+    factors are linear and within [0, 1], whatever a file wrote (an MTL's Kd of 1.2).
+
+    Parameters
+    ----------
+    srgb : components, nominally in [0, 1].
+
+    Returns
+    -------
+    array of the same shape, in [0, 1].
+
+    Example
+    -------
+    >>> srgb_to_linear([0.0, 0.5, 1.0, 1.2]).round(4).tolist()
+    [0.0, 0.214, 1.0, 1.0]
+    """
+    c = np.clip(np.asarray(srgb, dtype=np.float64), 0.0, 1.0)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def linear_to_srgb(linear) -> np.ndarray:
+    """Linear components → sRGB (the inverse of `srgb_to_linear`), clipped to [0, 1] first.
+
+    Parameters
+    ----------
+    linear : components, nominally in [0, 1].
+
+    Returns
+    -------
+    array of the same shape, in [0, 1].
+    """
+    c = np.clip(np.asarray(linear, dtype=np.float64), 0.0, 1.0)
+    return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)
 
 
 @dataclass

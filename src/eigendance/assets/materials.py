@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from eigendance.assets.appearance import ALPHA_MODES, Image, Material, Texture
+from eigendance.assets.appearance import ALPHA_MODES, Image, Material, Texture, srgb_to_linear
 from eigendance.assets.gltf import GltfFile
 from eigendance.errors import InputError
 
@@ -166,21 +166,6 @@ def _numbers(values, count: int, default: tuple) -> tuple:
 
 
 # --- trimesh (OBJ + MTL, PLY) -------------------------------------------------------------------
-
-def srgb_to_linear(srgb) -> np.ndarray:
-    """sRGB components in [0, 1] → linear (glTF colour factors are linear).
-
-    Parameters
-    ----------
-    srgb : components in [0, 1].
-
-    Returns
-    -------
-    array of the same shape.
-    """
-    c = np.clip(np.asarray(srgb, dtype=np.float64), 0.0, 1.0)
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
-
 
 def trimesh_material(material, images: Images, name: str) -> Material:
     """A trimesh material (SimpleMaterial from an MTL, or PBRMaterial) as a `Material`.

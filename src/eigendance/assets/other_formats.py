@@ -16,7 +16,8 @@ import tempfile
 
 import numpy as np
 
-from eigendance.assets.materials import Images, srgb_to_linear, trimesh_material
+from eigendance.assets.appearance import srgb_to_linear
+from eigendance.assets.materials import Images, trimesh_material
 from eigendance.assets.model import Model, combine
 from eigendance.assets.primitives import Piece
 from eigendance.errors import InputError, one_line

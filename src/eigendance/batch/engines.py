@@ -5,9 +5,9 @@ values earlier tasks prepared) and give back each task's report and, for a task 
 kept, a handle later tasks take as an argument. A task runs on one core; the driver keeps at
 most `slots` tasks submitted.
 
-- `LocalEngine`: one single-process `ProcessPoolExecutor` per slot, its worker started by a
-  fork server (a fresh, single-threaded interpreter with the tasks' modules imported once), in
-  a process group of its own, ignoring Ctrl-C and dying with the driver (`processes`). A
+- `LocalEngine`: one single-process `ProcessPoolExecutor` per slot, its worker started by the
+  fork server (a fresh, single-threaded interpreter, `processes.context`), in a process group
+  of its own, ignoring Ctrl-C and dying with the driver (`processes.start_worker`). A
   prepared value is written by the worker that made it into the run's `shared.Store` and
   memory-mapped by the workers that use it. A worker that dies (killed, out of memory) breaks
   only its own executor: the task is run again on a fresh one, at most MAX_RETRIES times.
@@ -20,15 +20,13 @@ from __future__ import annotations
 
 import concurrent.futures
 import logging
-import multiprocessing
 import os
-import signal
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 
+from eigendance import processes
 from eigendance.batch import shared, work
 from eigendance.errors import InputError
-from eigendance.processes import start_worker
 
 MAX_RETRIES = 3  # runs of a task whose worker died, after the first (Ray's default)
 
@@ -87,7 +85,7 @@ def died(task: Task) -> dict:
 
 def _local_worker(caller: int) -> None:
     """Start a local worker: die with the caller, own process group, one thread per kind."""
-    start_worker(caller)
+    processes.start_worker(caller)
     os.setpgrp()  # the driver stops the worker and its children (encoder, renderers) together
     work.setup_worker()
 
@@ -116,11 +114,7 @@ class LocalEngine:
     def __init__(self, workers: int, cache: str | None):
         self.slots, self.cache = workers, cache
         self.store = shared.Store()
-        methods = multiprocessing.get_all_start_methods()
-        self.context = multiprocessing.get_context(
-            "forkserver" if "forkserver" in methods else "spawn")
-        if "forkserver" in methods:
-            self.context.set_forkserver_preload(["eigendance.batch.work"])
+        self.context = processes.context()
         self.executors: list[concurrent.futures.ProcessPoolExecutor | None] = [None] * workers
         self.running: dict[concurrent.futures.Future, tuple[int, Task]] = {}
         self._names = 0
@@ -213,16 +207,8 @@ class LocalEngine:
         for executor in self.executors:
             if executor is None:
                 continue
-            if interrupted:
-                for process in list(getattr(executor, "_processes", {}).values()):
-                    try:
-                        os.killpg(process.pid, signal.SIGKILL)
-                    except (ProcessLookupError, PermissionError):
-                        process.kill()
-                # Its feeder thread may be blocked on a pipe the killed worker no longer reads:
-                # not joined at exit (as the eigen-solver's pool, harmonic.eigensolver).
-                if (calls := getattr(executor, "_call_queue", None)) is not None:
-                    calls.cancel_join_thread()
+            if interrupted:  # each worker with its children, no thread left waiting on them
+                processes.kill_pool(executor, group=True)
             executor.shutdown(wait=True, cancel_futures=True)
         self.executors = [None] * self.slots
         self.running.clear()

@@ -147,7 +147,7 @@ def prepare_song(path: str, digest: str, bands: int, rhythm_of: Spectrogram | No
     Parameters
     ----------
     path : the audio file.
-    digest : its SHA-256 (`content.file_digest`).
+    digest : its SHA-256 (`files.file_digest`).
     bands : bands.
     rhythm_of : the same song's spectrogram at another band count, or None (analyse it here).
 

@@ -21,10 +21,9 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, RigDance
 from eigendance.export.gltf import glb_size, write_glb
-from eigendance.export.look_files import mtl_text, texture_files, write_textures
-from eigendance.export.look_files import obj_text as obj_text_with_look
+from eigendance.export.look_files import mtl_text, obj_text, texture_files, write_textures
 from eigendance.export.output import Outputs
-from eigendance.export.pointcache import obj_text, pc2_size, write_pc2
+from eigendance.export.pointcache import pc2_size, write_pc2
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
@@ -229,11 +228,8 @@ def _write_obj(outputs, paths, dance: Dance, name: str, textures) -> None:
     """The rest mesh beside a point cache (with its MTL when the dance has a look)."""
     comment = f"eigendance: rest mesh of {name}"
     with open(outputs.temporary(paths["mesh"]), "w", encoding="utf-8") as file:
-        if dance.appearance is None:
-            file.write(obj_text(dance.rest, dance.faces, comment))
-        else:
-            file.write(obj_text_with_look(dance.rest, dance.appearance, paths["materials"],
-                                          comment))
+        file.write(obj_text(dance.rest, dance.faces, comment, dance.appearance,
+                            paths.get("materials", "")))
     if dance.appearance is not None:
         with open(outputs.temporary(paths["materials"]), "w", encoding="utf-8") as file:
             file.write(mtl_text(dance.appearance, textures))

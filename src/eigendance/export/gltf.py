@@ -38,6 +38,7 @@ import numpy as np
 import pygltflib
 from scipy.spatial.transform import Rotation
 
+from eigendance.assets.appearance import srgb_to_linear
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, RigDance
 from eigendance.export.gltf_look import drawn_attributes, write_look
@@ -49,21 +50,6 @@ WEIGHT_EPSILON = 1e-7  # skin weights below this are dropped (then the row is re
 # A reduced basis's weights are normalised unsigned shorts: whole numbers of 1/65535 summing to
 # exactly 65535 per vertex (core glTF 2.0), so Σ_j w_j = 1 holds exactly in every viewer.
 WEIGHT_UNITS = 65535
-
-
-def srgb_to_linear(srgb) -> np.ndarray:
-    """sRGB components in [0, 1] → linear (the glTF base colour is linear).
-
-    Parameters
-    ----------
-    srgb : components in [0, 1].
-
-    Returns
-    -------
-    array of the same shape.
-    """
-    c = np.asarray(srgb, dtype=np.float64)
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
 class _Builder:

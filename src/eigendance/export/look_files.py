@@ -15,7 +15,7 @@ import os
 
 import numpy as np
 
-from eigendance.assets.appearance import Appearance, Material
+from eigendance.assets.appearance import Appearance, Material, linear_to_srgb
 
 OBJ_TEXTURES = (("map_Kd", "base_color_texture"), ("map_Bump", "normal_texture"),
                 ("map_Ke", "emissive_texture"))
@@ -38,21 +38,6 @@ def texture_files(path: str, appearance: Appearance | None) -> list[str]:
     stem = os.path.splitext(os.fspath(path))[0]
     return [f"{stem}_texture{index}{image.suffix}" for index, image in
             enumerate(appearance.images)]
-
-
-def linear_to_srgb(linear) -> np.ndarray:
-    """Linear components in [0, 1] → sRGB (what an MTL's Kd means to its readers).
-
-    Parameters
-    ----------
-    linear : components in [0, 1].
-
-    Returns
-    -------
-    array of the same shape.
-    """
-    c = np.clip(np.asarray(linear, dtype=np.float64), 0.0, 1.0)
-    return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)
 
 
 def material_names(appearance: Appearance) -> list[str]:
@@ -108,24 +93,34 @@ def _mtl_lines(material: Material, textures: list[str]) -> list[str]:
     return lines
 
 
-def obj_text(vertices: np.ndarray, appearance: Appearance, mtl: str, comment: str = "") -> str:
-    """Wavefront OBJ of the rest mesh with its look: the welded `vertices` in order, the drawn
-    UVs, the drawn triangles by material on their welded vertices.
+def obj_text(vertices: np.ndarray, faces: np.ndarray, comment: str = "",
+             appearance: Appearance | None = None, mtl: str = "") -> str:
+    """Wavefront OBJ of a rest mesh: `v` lines in the given order (a point cache maps by index),
+    then 1-based `f` lines; with a look, its MTL file, the drawn UVs and the drawn triangles by
+    material on their welded vertices instead.
+
+    Coordinates carry 9 significant digits (float32 round-trips exactly).
 
     Parameters
     ----------
-    vertices : (n, 3) welded, at rest.
-    appearance : the look.
-    mtl : the MTL file beside it.
-    comment : a first comment line.
+    vertices : (n, 3) (welded, with a look).
+    faces : (m, 3) 0-based (not written with a look, whose parts say the triangles).
+    comment : a first comment line ('' for none).
+    appearance : the look, or None.
+    mtl : the MTL file beside it (with a look).
 
     Returns
     -------
-    str.
+    str, the file's text.
     """
-    lines = [f"# {comment}" if comment else "#", f"mtllib {os.path.basename(mtl)}"]
-    text = "\n".join(lines) + "\n"
+    text = f"# {comment}\n" if comment else ""
+    if appearance is not None:
+        text = (text or "#\n") + f"mtllib {os.path.basename(mtl)}\n"
+    # One %-format over all numbers at once: no Python loop over vertices.
     text += ("v %.9g %.9g %.9g\n" * len(vertices)) % tuple(np.asarray(vertices, float).ravel())
+    if appearance is None:
+        return text + ("f %d %d %d\n" * len(faces)) % tuple((np.asarray(faces, np.int64) + 1)
+                                                             .ravel())
     uv = appearance.uvs[0] if appearance.uvs else np.zeros((appearance.n, 2))
     text += ("vt %.9g %.9g\n" * len(uv)) % tuple(np.column_stack([uv[:, 0], 1 - uv[:, 1]])
                                                  .ravel())

@@ -24,7 +24,7 @@ import subprocess
 import sys
 
 from eigendance.errors import InputError, one_line
-from eigendance.writes import locked_temporary, refuse_overwrite, sweep_temporary_files
+from eigendance.writes import Renames, refuse_overwrite, temporary_beside
 
 # The janitor: reads NUL-terminated paths; an empty record means the owner finished (renamed
 # or removed them) and it exits at once (children forked by the owner may hold the pipe open);
@@ -104,23 +104,20 @@ class Outputs:
         for path in self.destinations:
             refuse_overwrite(path, force, inputs)
         self.temporaries: dict[str, str] = {}
-        self._locks: list[int] = []  # held until the temporaries are renamed or removed
+        self._renames = Renames()  # the temporaries, locked until renamed or removed
         self._janitor: subprocess.Popen | None = None
 
     def __enter__(self) -> Outputs:
         self._janitor = start_janitor()
         for path in self.destinations:
-            folder = os.path.dirname(path)
             try:
-                os.makedirs(folder, exist_ok=True)
-                sweep_temporary_files(folder)
                 # The destination's suffix stays last: USD and ffmpeg choose the format by it.
-                handle, temporary = locked_temporary(folder, os.path.splitext(path)[1])
+                handle, temporary = temporary_beside(path, os.path.splitext(path)[1])
             except OSError as error:
                 self._discard()
                 raise InputError(f"{path}: cannot write "
                                  f"({error.strerror or one_line(error)})") from None
-            self._locks.append(handle)
+            self._renames.add(temporary, path, handle)
             self.temporaries[path] = temporary
             self._tell_janitor(os.fsencode(temporary) + b"\0")
         return self
@@ -154,32 +151,22 @@ class Outputs:
 
     def __exit__(self, kind, error, traceback) -> None:
         if kind is not None:
+            destination = self._destination_of(getattr(error, "filename", None))
             self._discard()
             if isinstance(error, OSError):  # a full disk, a folder made read-only …
-                raise InputError(f"{self._destination_of(error.filename)}: cannot write "
+                raise InputError(f"{destination}: cannot write "
                                  f"({error.strerror or one_line(error)})") from None
             return
         try:
-            umask = os.umask(0)  # mkstemp creates 0600; give what a plain open() would
-            os.umask(umask)
-            for temporary in self.temporaries.values():
-                os.chmod(temporary, 0o666 & ~umask)
-            for path, temporary in self.temporaries.items():
-                os.replace(temporary, path)
-            self._unlock()
-        except BaseException as failure:
-            self._discard()
-            if isinstance(failure, OSError):
-                raise InputError(f"{failure.filename or self.destinations[0]}: cannot write "
-                                 f"({failure.strerror or one_line(failure)})") from None
-            raise
+            self._renames.commit()  # InputError naming the destination that cannot be written
+        finally:
+            self.temporaries.clear()
+            self._done()
 
     def _discard(self) -> None:
-        for temporary in self.temporaries.values():
-            if os.path.exists(temporary):
-                os.unlink(temporary)
+        self._renames.discard()
         self.temporaries.clear()
-        self._unlock()
+        self._done()
 
     def _destination_of(self, filename) -> str:
         for path, temporary in self.temporaries.items():
@@ -196,10 +183,7 @@ class Outputs:
         except OSError:
             self._janitor = None  # it is gone: the sweep remains
 
-    def _unlock(self) -> None:
-        for handle in self._locks:
-            os.close(handle)
-        self._locks.clear()
+    def _done(self) -> None:
         if self._janitor is not None:  # done: the temporaries are renamed or removed
             janitor, self._janitor = self._janitor, None
             try:

@@ -5,7 +5,7 @@ PC2 (little-endian): b"POINTCACHE2\\0", int32 version 1, int32 points n, float32
 float32 sampling (frames per sample, 1 here), int32 samples T, then T × n × 3 float32 positions.
 Sample i is the dance at time i/fps; frames are written chunk by chunk as they are computed.
 The OBJ lists the rest positions in the same vertex order (the modifier maps by index), then the
-triangles, so importing it and adding the modifier plays the dance.
+triangles (`look_files.obj_text`), so importing it and adding the modifier plays the dance.
 """
 
 from __future__ import annotations
@@ -88,26 +88,3 @@ def read_pc2(path) -> tuple[np.ndarray, float, float]:
         _, points, start, sampling, samples = struct.unpack("<iiffi", header[12:])
         data = np.frombuffer(file.read(), dtype="<f4")
     return data.reshape(samples, points, 3), start, sampling
-
-
-def obj_text(vertices: np.ndarray, faces: np.ndarray, comment: str = "") -> str:
-    """Wavefront OBJ of a triangle mesh: `v` lines in the given order, then 1-based `f` lines.
-
-    Coordinates carry 9 significant digits (float32 round-trips exactly).
-
-    Parameters
-    ----------
-    vertices : (n, 3).
-    faces : (m, 3) 0-based.
-    comment : a first comment line ('' for none).
-
-    Returns
-    -------
-    str, the file's text.
-    """
-    header = f"# {comment}\n" if comment else ""
-    n, m = len(vertices), len(faces)
-    # One %-format over all numbers at once: no Python loop over vertices.
-    points = ("v %.9g %.9g %.9g\n" * n) % tuple(np.asarray(vertices, np.float64).ravel())
-    triangles = ("f %d %d %d\n" * m) % tuple((np.asarray(faces, np.int64) + 1).ravel())
-    return header + points + triangles

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import moderngl
 import numpy as np
 
+from eigendance.assets.appearance import srgb_to_linear
 from eigendance.errors import InputError, one_line
 from eigendance.export.look_gl import MaterialLook
 from eigendance.shaders.programs import program
@@ -57,8 +58,7 @@ def linear(value: int) -> tuple[float, float, float]:
     (r, g, b) linear, in [0, 1].
     """
     srgb = np.array([(value >> 16) & 255, (value >> 8) & 255, value & 255]) / 255
-    out = np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
-    return tuple(float(c) for c in out)
+    return tuple(float(c) for c in srgb_to_linear(srgb))
 
 
 @dataclass

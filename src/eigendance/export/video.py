@@ -14,9 +14,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-import multiprocessing
 import os
-import signal
 import subprocess
 import tempfile
 from fractions import Fraction
@@ -24,6 +22,7 @@ from fractions import Fraction
 import imageio_ffmpeg
 import numpy as np
 
+from eigendance import processes
 from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs, check_space
@@ -31,7 +30,6 @@ from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_ce
 from eigendance.export.song import seek_options
 from eigendance.limits import check_disk
 from eigendance.music.decode import open_audio
-from eigendance.processes import die_with_parent
 
 MAX_SIDE = 7680  # pixels (8K)
 MIN_FPS = 0.01  # frames per second: one frame every 100 s (a rate of 1/100)
@@ -209,12 +207,11 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
     bytes, each frame in order.
     """
     times = np.asarray(times, dtype=np.float64)
-    if workers <= 1 or len(times) < 2 * workers or gl_started() or \
-            "fork" not in multiprocessing.get_all_start_methods():
+    if workers <= 1 or len(times) < 2 * workers or gl_started() or not processes.can_fork():
         yield from render_frames(dances, looks, times, width, height)
         return
-    context = multiprocessing.get_context("fork")
-    pipes, processes = [], []
+    context = processes.context("fork")
+    pipes, started = [], []
     try:
         for worker in range(workers):
             receive, send = context.Pipe(duplex=False)
@@ -223,7 +220,7 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
             process.start()
             send.close()
             pipes.append(receive)
-            processes.append(process)
+            started.append(process)
         size = width * height * 4
         for index in range(len(times)):
             try:
@@ -235,9 +232,8 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
                 raise (InputError if kind == "InputError" else InternalError)(message)
             yield frame
     finally:
-        for process in processes:
-            if process.is_alive():
-                process.kill()
+        for process in started:
+            processes.kill(process)
             process.join()
         for pipe in pipes:
             pipe.close()
@@ -245,8 +241,7 @@ def frames_in_turn(dances: list[Dance], looks: list[Look], times, width: int, he
 
 def _draw_in_turn(send, dances, looks, times, width, height) -> None:
     """In a render worker: draw `times` and send each frame (or one error line) to the caller."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    die_with_parent()  # the kernel kills us when the caller dies
+    processes.start_worker()  # Ctrl-C is the caller's; the kernel kills us when the caller dies
     os.environ["LP_NUM_THREADS"] = "1"  # read when llvmpipe starts: one thread per worker
     try:
         for frame in render_frames(dances, looks, times, width, height):
@@ -274,7 +269,7 @@ def encode(command: list[str], frames, count: int, progress=None, path: str = ""
     """
     log = tempfile.TemporaryFile()  # a file, not a pipe: the encoder never blocks on it
     encoder = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                               stderr=log, preexec_fn=die_with_parent)
+                               stderr=log, preexec_fn=processes.die_with_parent)
     try:
         try:
             for index, frame in enumerate(frames):

@@ -16,6 +16,8 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
+from eigendance.geometry import bounding_box_diagonal, face_edges
+
 # A vertex touches another piece when its closest point there lies within this many of its own
 # mean edge lengths.
 CONTACT_REACH = 2.0
@@ -69,7 +71,7 @@ def components(n: int, faces: np.ndarray) -> tuple[int, np.ndarray]:
     -------
     (count, labels).
     """
-    edges = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    edges = face_edges(faces)
     graph = sp.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), (n, n))
     return connected_components(graph, directed=False)
 
@@ -86,7 +88,7 @@ def edge_lengths(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     -------
     (n,).
     """
-    edges = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    edges = face_edges(faces)
     length = np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1)
     total = np.bincount(edges.ravel(), np.repeat(length, 2), minlength=len(vertices))
     count = np.bincount(edges.ravel(), minlength=len(vertices))
@@ -260,7 +262,7 @@ def part_drift(vertices, faces, displacements, reach: float = 0.01) -> float:
     count, labels = components(len(vertices), faces)
     if count < 2:
         return float("nan")
-    diagonal = float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
+    diagonal = bounding_box_diagonal(vertices)
     used = np.flatnonzero(np.bincount(faces.ravel(), minlength=len(vertices)) > 0)
     touching = closest_on_others(vertices, faces, labels, used,
                                  np.full(len(used), reach * diagonal))

@@ -23,16 +23,16 @@ from scipy.sparse.csgraph import connected_components
 from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError, InternalError
-from eigendance.harmonic.band_workers import Workers
 from eigendance.harmonic.components import solve_components
 from eigendance.harmonic.lanczos import lanczos_extreme
 from eigendance.harmonic.mass import as_mass
+from eigendance.harmonic.slicing import BASELINE_SHIFT, band_size, next_shifts, stitch
+from eigendance.processes import Pool
 
 SOLVERS = ("bands", "eigsh")
 SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
-# Shift below the spectrum (λ_0 = 0) so that L - σM is non-singular. Units of λ: a normalised
-# mesh's first non-zero eigenvalue is of order 1.
-BASELINE_SHIFT = -1e-2
+# Meshes of at most this many vertices are solved densely, by both solvers.
+DENSE_VERTICES = 600
 
 
 def check_request(n: int, k: int) -> None:
@@ -68,7 +68,7 @@ def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,
     n = stiffness.shape[0]
     check_request(n, k)
     mass = as_mass(mass)
-    if n <= 500:
+    if n <= DENSE_VERTICES:
         return _dense(stiffness, mass, k)
     values, vectors = sla.eigsh(sp.csc_matrix(stiffness), k=k, M=mass.sparse(),
                                 sigma=BASELINE_SHIFT, which="LM")
@@ -108,7 +108,6 @@ def _sorted_m_normalised(values, vectors, mass):
 # --- Spectrum slicing -------------------------------------------------------------------------
 
 PER_BAND = 60           # eigenpairs per band: fastest for bunny k = 1070 (benchmarks/)
-OVERLAP = 0.10          # fraction of a band's width shared with its neighbours
 RESIDUAL_TOLERANCE = 1e-7  # ‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, checked for every accepted pair
 MAX_REPAIRS = 8         # searches for missed copies of multiple eigenvalues before giving up
 
@@ -346,99 +345,6 @@ def _band_worker(arguments):
         return _solve_band(*arguments)
 
 
-def _stitch(bands: list[Band]):
-    """Join bands sorted by shift into one spectrum without gaps or duplicates.
-
-    Between neighbours the cut goes through the widest gap of the overlap of their trusted
-    windows, so a cluster of (near-)equal eigenvalues always comes from a single band.
-    Returns (pieces, gap): pieces = [(band, mask of its accepted pairs)] in ascending order,
-    gap = (a, b), the first interval no band covers, or None.
-    """
-    if bands[0].lower >= BASELINE_SHIFT:  # the lowest window must reach below λ_0 = 0
-        return [], (BASELINE_SHIFT, bands[0].lower)
-    pieces = []
-    cut = -np.inf
-    for band, following in zip(bands, [*bands[1:], None], strict=True):
-        upper, gap = band.upper, None
-        if following is not None and following.lower >= band.upper:
-            gap = (band.upper, following.lower)
-        elif following is not None:
-            start = max(following.lower, cut)
-            inside = band.eigenvalues[(band.eigenvalues > start) & (band.eigenvalues < upper)]
-            points = np.concatenate([[start], inside, [upper]])
-            widest = int(np.argmax(np.diff(points)))
-            upper = (points[widest] + points[widest + 1]) / 2
-        pieces.append((band, (band.eigenvalues > cut) & (band.eigenvalues < upper)))
-        cut = upper
-        if gap is not None:
-            return pieces, gap
-    return pieces, None
-
-
-def _band_size(k: int, per_band: int, workers: int) -> int:
-    """Pairs per band near `per_band` such that the bands fill whole rounds of `workers`.
-
-    The first band holds ≈ count pairs, each next one (1 − OVERLAP)·count new ones; a round
-    with an idle worker costs as much as a full one, so the size grows until it saves a round.
-    """
-    def rounds(count):
-        bands = 1 + max(0, int(np.ceil((k - count) / ((1 - OVERLAP) * count))))
-        return int(np.ceil(bands / workers))
-
-    sizes = range(per_band, int(1.25 * per_band) + 1)
-    return min(sizes, key=lambda count: (rounds(count / 1.05), count))  # 5% margin
-
-
-def _next_shifts(pieces, gap, k: int, count: int, workers: int, area: float) -> list[float]:
-    """Shifts of the next round: the gap's middle, or bands above the pairs found so far.
-
-    Planned in index space: N(λ), the number of eigenvalues below λ (`_counting`), places each
-    window of `count` pairs so that it shares OVERLAP·count pairs with its lower neighbour; the
-    last one reaches pair k with a small margin.
-    """
-    if gap is not None:
-        return [(gap[0] + gap[1]) / 2]
-    values = np.concatenate([band.eigenvalues[keep] for band, keep in pieces]) if pieces else []
-    counting = _counting(np.asarray(values), area)
-    centres = []
-    overlap = OVERLAP * count
-    if not pieces:
-        # First band at pair ≈ 0.4·count: its window reaches below λ_0 = 0 and up to pair count.
-        # Weyl's law alone is rougher than a fit: the next window overlaps it twice as much.
-        centres, top, overlap = [0.4 * count], count, 2 * overlap
-    else:
-        top = len(values)
-    while len(centres) < workers and top < k + 0.05 * count:
-        centres.append(top - overlap + count / 2)
-        top += count - overlap
-        overlap = OVERLAP * count
-    return [counting(centre) for centre in centres]
-
-
-def _counting(values: np.ndarray, area: float):
-    """λ(i): the inverse of a smooth counting function N(λ) = aλ + b√λ + c.
-
-    Weyl's law for a surface gives a = area/4π (and a boundary term in √λ); before any pair is
-    known that is all, after it the three terms are fitted to the last pairs found (N(λ_j) ≈
-    j + ½), which follows the local density better than Weyl's constant.
-    """
-    a, b, c = area / (4 * np.pi), 0.0, 0.0
-    index = np.arange(len(values)) + 0.5
-    fitted = values > 0
-    if fitted.sum() >= 20:
-        recent = values[fitted][-400:]
-        design = np.column_stack([recent, np.sqrt(recent), np.ones_like(recent)])
-        solution = np.linalg.lstsq(design, index[fitted][-400:], rcond=None)[0]
-        if solution[0] > 0:
-            a, b, c = solution
-
-    def inverse(i):
-        root = (-b + np.sqrt(max(b * b - 4 * a * (c - i), 0))) / (2 * a)  # √λ
-        return max(root, 0.0) ** 2
-
-    return inverse
-
-
 def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 per_band: int = PER_BAND, workers: int = 2) -> tuple[np.ndarray, np.ndarray]:
     """Spectrum slicing (after Vallet & Lévy 2008): shift-invert bands of ≈`per_band` pairs.
@@ -468,13 +374,13 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
     n = stiffness.shape[0]
     check_request(n, k)
     mass = as_mass(mass)
-    if n <= 600:
+    if n <= DENSE_VERTICES:
         return _dense(stiffness, mass, k)
     null = null_space(stiffness, mass, k)
     if len(null) >= k:  # k components or more: every wanted pair has λ = 0
         return np.zeros(k), _columns(null)
     per_band = max(1, min(per_band, n // 3))
-    count = min(n - 2 - len(null), _band_size(k, per_band, workers))
+    count = min(n - 2 - len(null), band_size(k, per_band, workers))
     if k <= 0.8 * count:  # one band from the bottom of the spectrum
         count = min(n - 2 - len(null), k + max(4, k // 10))
         bands = [_solve_band(stiffness, mass, BASELINE_SHIFT, count, null)]
@@ -482,9 +388,9 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         bands = []
     repairs, rounds = 0, 0
     most = 4 * math.ceil(k / count) + 8  # rounds of new bands before giving up (no progress)
-    with Workers(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
+    with Pool(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
         while True:
-            pieces, gap = _stitch(bands) if bands else ([], None)
+            pieces, gap = stitch(bands) if bands else ([], None)
             found = sum(int(keep.sum()) for _, keep in pieces)
             if progress is not None:
                 progress(min(found, k))
@@ -505,7 +411,7 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                 if rounds > most:  # e.g. copies of a multiple eigenvalue at every band's edge
                     raise InternalError(f"eigen-solver: the bands do not close after {most} "
                                         "rounds", remedy={"solver": "eigsh"})
-                shifts = _next_shifts(pieces, gap, k, count, workers, mass.total)
+                shifts = next_shifts(pieces, gap, k, count, workers, mass.total)
                 bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
             bands.sort(key=lambda band: band.shift)
     _verify(values, pieces, bands)

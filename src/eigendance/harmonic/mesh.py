@@ -23,6 +23,7 @@ from eigendance.files import check_suffix
 from eigendance.geometry import (
     MAX_COORDINATE,
     bounding_box_diagonal,
+    face_edges,
     face_normals,
     unique_rows,
     weld,
@@ -113,7 +114,7 @@ class Mesh:
         -------
         scipy.sparse csr (n, n).
         """
-        edges = self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+        edges = face_edges(self.faces)
         n = len(self.vertices)
         return sp.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), (n, n)).tocsr()
 
@@ -124,7 +125,7 @@ class Mesh:
         -------
         int.
         """
-        edges = np.sort(self.faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+        edges = np.sort(face_edges(self.faces), axis=1)
         _, counts = np.unique(edges[:, 0] * np.int64(self.n) + edges[:, 1], return_counts=True)
         return int((counts > 2).sum())
 

@@ -20,7 +20,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.geometry import MAX_COORDINATE, cross, frame_from_xz, perpendicular, unit
+from eigendance.geometry import (
+    MAX_COORDINATE,
+    bounding_box_diagonal,
+    cross,
+    frame_from_xz,
+    perpendicular,
+    unit,
+)
 
 # Constrained rows of [ωx ωy ωz vx vy vz] in the joint frame (thesis Table 3.1).
 CONSTRAINED_ROWS = {
@@ -230,7 +237,7 @@ def _check_body_ranges(bodies: list[Body], name: str) -> None:
     ends = np.array([end for body in bodies for end in (body.start, body.end)], dtype=float)
     if not (np.all(np.isfinite(ends)) and np.abs(ends).max() <= MAX_COORDINATE):
         raise InputError(f"{name}: coordinates must lie within ±{MAX_COORDINATE:.0e}")
-    size = float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0)))
+    size = bounding_box_diagonal(ends)
     if not SIZE_RANGE[0] <= size <= SIZE_RANGE[1]:
         raise InputError(f"{name}: the rig spans {size:.3g}; rigs from {SIZE_RANGE[0]:g} to "
                          f"{SIZE_RANGE[1]:g} units across can be analysed (rescale it)")

@@ -17,7 +17,7 @@ from eigendance.assets.gltf import GltfFile
 from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
-from eigendance.geometry import weld
+from eigendance.geometry import bounding_box_diagonal, weld
 from eigendance.modal.bodies import Body, Joint, check_rig_size
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.stiffness import DEFAULT_JOINT_FREQUENCY, set_automatic_stiffness
@@ -29,9 +29,18 @@ CARRY_WEIGHT = 1e-6
 
 @dataclass
 class SkinnedRig:
-    """names (n_j,), parents (n_j,) index of the parent joint or -1, joint_matrices (n_j, 4, 4)
-    world matrices in the rest pose, vertices (n, 3) rest-pose skin, faces (m, 3), weights
-    (n, n_j) (rows may not sum to 1 yet)."""
+    """A skin over the joints that move something, welded.
+
+    Parameters
+    ----------
+    names : (n_j,) joint names.
+    parents : (n_j,) index of the parent joint, or -1.
+    joint_matrices : (n_j, 4, 4) world matrices in the rest pose.
+    vertices : (n, 3) rest-pose skin.
+    faces : (m, 3).
+    weights : (n, n_j) (rows may not sum to 1 yet).
+    notes : what was changed on the way, in words.
+    """
 
     names: list[str]
     parents: np.ndarray
@@ -72,6 +81,21 @@ def skeleton_from_gltf(path: str | os.PathLike,
       centre lies a quarter of the rig's size from the joint. Other choices:
       `Skeleton.with_stiffness`, or change `joints` (type, stiffness) of the returned skeleton in
       code; the skin stays valid.
+
+    Parameters
+    ----------
+    path : the file.
+    stiffness_frequency : f of the joints' default stiffness, Hz.
+    name : what messages call it (None: the file's name).
+
+    Returns
+    -------
+    Skeleton, with its skin and the file's appearance.
+
+    Raises
+    ------
+    InputError
+        For a file that cannot be read, has no skin, or a rig too large to analyse.
     """
     model = read_model(path, name)
     label = name or os.path.basename(os.fspath(path))
@@ -84,7 +108,16 @@ def skeleton_from_gltf(path: str | os.PathLike,
 
 
 def has_skin(path: str | os.PathLike) -> bool:
-    """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable."""
+    """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable.
+
+    Parameters
+    ----------
+    path : the file.
+
+    Returns
+    -------
+    bool.
+    """
     try:
         return bool(GltfFile(path).document.skins)
     except Exception:  # noqa: BLE001 - the mesh reader says why the file cannot be read
@@ -92,8 +125,16 @@ def has_skin(path: str | os.PathLike) -> bool:
 
 
 def skinned_rig(model: Model) -> tuple[SkinnedRig, np.ndarray]:
-    """The welded skin of a model with skins, over the joints that move something, and the
-    welded vertex of each drawn vertex (n_d,)."""
+    """The welded skin of a model with skins, over the joints that move something.
+
+    Parameters
+    ----------
+    model : a model read with its skin.
+
+    Returns
+    -------
+    (SkinnedRig, (n_d,) the welded vertex of each drawn vertex).
+    """
     skin = model.skin
     weights = model.weights.copy()
     hanging = np.flatnonzero(model.bones >= 0)
@@ -134,6 +175,15 @@ def moving_joints(parents: np.ndarray, carrying: np.ndarray) -> np.ndarray:
     legs, a twist bone inside an arm). Joints that carry nothing and lie beyond every carrying
     joint (IK and pole targets, a root above the skeleton, an empty tree) are left out. When
     no joint carries anything, all are kept.
+
+    Parameters
+    ----------
+    parents : (n_j,) index of each joint's parent, or -1.
+    carrying : (n_j,) bool, the joints that carry the skin.
+
+    Returns
+    -------
+    (n_j,) bool.
 
     Example
     -------
@@ -179,59 +229,17 @@ def _children(parents) -> list[list[int]]:
 def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     """Bodies and spherical joints from a `gltf_skin.SkinnedRig` (see Skeleton.from_gltf)."""
     positions = rig.joint_matrices[:, :3, 3]
-    n_joints = len(positions)
     vertices, weights = rig.vertices, rig.weights
     extent = np.concatenate([positions, vertices]) if len(vertices) else positions
-    size = float(np.linalg.norm(extent.max(axis=0) - extent.min(axis=0))) or 1.0
-    tiny = 1e-4 * size
-    children = [[] for _ in range(n_joints)]
-    for child, parent in enumerate(rig.parents):
-        if parent >= 0:
-            children[parent].append(child)
-    descendants = np.zeros(n_joints, dtype=int)
+    size = bounding_box_diagonal(extent) or 1.0
+    children = _children(rig.parents)
+    descendants = np.zeros(len(positions), dtype=int)
     for joint in _postorder(children, rig.parents):
         descendants[joint] = sum(1 + descendants[c] for c in children[joint])
     dominant = weights.argmax(axis=1) if len(vertices) else np.zeros(0, dtype=int)
-    starts, ends = positions.copy(), np.zeros_like(positions)
-    lengths = np.zeros(n_joints)
-    order = _preorder(children, rig.parents)
-    for joint in order:  # parents before children, so a leaf can fall back on its parent
-        start = positions[joint]
-        candidates = [c for c in children[joint]
-                      if np.linalg.norm(positions[c] - start) > tiny]
-        if candidates:
-            child = max(candidates, key=lambda c: (descendants[c],
-                                                   np.linalg.norm(positions[c] - start)))
-            ends[joint] = positions[child]
-            lengths[joint] = np.linalg.norm(positions[child] - start)
-            continue
-        owned = vertices[dominant == joint] - start
-        centroid = owned.mean(axis=0) if len(owned) else np.zeros(3)
-        if np.linalg.norm(centroid) > tiny:  # toward the middle of what it carries
-            axis = centroid
-        else:  # the bone axis of Blender and most exporters
-            axis = rig.joint_matrices[joint, :3, 1]
-            if not np.linalg.norm(axis) > 0:
-                axis = np.array([0.0, 1.0, 0.0])
-        axis = axis / np.linalg.norm(axis)
-        reach = np.percentile(owned @ axis, 95) if len(owned) else 0.0
-        parent = rig.parents[joint]
-        fallback = 0.5 * lengths[parent] if parent >= 0 and lengths[parent] > 0 else 0.05 * size
-        length = reach if reach > tiny else fallback
-        ends[joint] = start + length * axis
-        lengths[joint] = length
-    bodies = []
-    for joint in range(n_joints):
-        axis = (ends[joint] - starts[joint]) / lengths[joint]
-        owned = vertices[dominant == joint] - starts[joint]
-        if len(owned):
-            along = np.clip(owned @ axis, 0, lengths[joint])
-            radial = np.linalg.norm(owned - along[:, None] * axis, axis=1)
-            radius = float(np.median(radial))
-        else:
-            radius = 0.15 * lengths[joint]
-        radius = float(np.clip(radius, 0.02 * lengths[joint], lengths[joint]))
-        bodies.append(Body(rig.names[joint], starts[joint], ends[joint], radius))
+    ends, lengths = _bone_ends(rig, children, descendants, dominant, size)
+    bodies = [_body(rig.names[joint], positions[joint], ends[joint], lengths[joint],
+                    vertices[dominant == joint]) for joint in range(len(positions))]
     joints = []
     for child, parent in enumerate(rig.parents):
         if parent < 0:
@@ -257,6 +265,53 @@ def _skeleton_from_rig(rig, name: str, stiffness_frequency: float) -> Skeleton:
     return skeleton
 
 
+def _bone_ends(rig, children, descendants, dominant, size: float):
+    """(ends (n_j, 3), lengths (n_j,)) of the bones: toward the child that leads the most
+    joints (the farthest of those), else along what the joint carries or its bone axis."""
+    positions = rig.joint_matrices[:, :3, 3]
+    tiny = 1e-4 * size
+    ends, lengths = np.zeros_like(positions), np.zeros(len(positions))
+    for joint in _preorder(children, rig.parents):  # parents first: a leaf falls back on them
+        start = positions[joint]
+        candidates = [c for c in children[joint]
+                      if np.linalg.norm(positions[c] - start) > tiny]
+        if candidates:
+            child = max(candidates, key=lambda c: (descendants[c],
+                                                   np.linalg.norm(positions[c] - start)))
+            ends[joint] = positions[child]
+            lengths[joint] = np.linalg.norm(positions[child] - start)
+            continue
+        owned = rig.vertices[dominant == joint] - start
+        centroid = owned.mean(axis=0) if len(owned) else np.zeros(3)
+        if np.linalg.norm(centroid) > tiny:  # toward the middle of what it carries
+            axis = centroid
+        else:  # the bone axis of Blender and most exporters
+            axis = rig.joint_matrices[joint, :3, 1]
+            if not np.linalg.norm(axis) > 0:
+                axis = np.array([0.0, 1.0, 0.0])
+        axis = axis / np.linalg.norm(axis)
+        reach = np.percentile(owned @ axis, 95) if len(owned) else 0.0
+        parent = rig.parents[joint]
+        fallback = 0.5 * lengths[parent] if parent >= 0 and lengths[parent] > 0 else 0.05 * size
+        length = reach if reach > tiny else fallback
+        ends[joint] = start + length * axis
+        lengths[joint] = length
+    return ends, lengths
+
+
+def _body(name: str, start, end, length: float, owned) -> Body:
+    """A bone's body: its radius the median distance of the vertices it carries (`owned`) from
+    its axis, 15% of its length when it carries none, within 2–100% of its length."""
+    axis = (end - start) / length
+    owned = owned - start
+    if len(owned):
+        along = np.clip(owned @ axis, 0, length)
+        radius = float(np.median(np.linalg.norm(owned - along[:, None] * axis, axis=1)))
+    else:
+        radius = 0.15 * length
+    return Body(name, start.copy(), end, float(np.clip(radius, 0.02 * length, length)))
+
+
 def _attach_separate_trees(bodies, joints, rig, descendants, weights) -> int:
     """Join the roots of separate joint trees (IK targets, flat hierarchies such as the WebXR
     hand) into one tree, Prim-style: repeatedly attach the free root nearest to a body already
@@ -266,10 +321,7 @@ def _attach_separate_trees(bodies, joints, rig, descendants, weights) -> int:
         return 0
     load = weights.sum(axis=0) if len(weights) else np.zeros(len(bodies))
     main = max(roots, key=lambda r: (descendants[r], load[r]))
-    children = [[] for _ in bodies]
-    for child, parent in enumerate(rig.parents):
-        if parent >= 0:
-            children[parent].append(child)
+    children = _children(rig.parents)
     in_tree = set(_preorder(children, [0 if j != main else -1 for j in range(len(bodies))]))
     waiting = [r for r in roots if r != main]
     starts = np.array([b.start for b in bodies])

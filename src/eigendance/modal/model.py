@@ -27,6 +27,7 @@ from threadpoolctl import threadpool_limits
 
 from eigendance.errors import InputError
 from eigendance.files import load_npz
+from eigendance.geometry import bounding_box_diagonal
 from eigendance.modal.rotations import skew
 from eigendance.modal.skeleton import Skeleton
 from eigendance.writes import atomic_save_npz
@@ -211,8 +212,7 @@ class ModalModel:
             self.joint_positions = self.body_centers[self.joint_bodies].mean(axis=1)
         self.joint_positions = np.asarray(self.joint_positions, dtype=float).reshape(-1, 3)
         if self.size is None:
-            extent = self.body_centers.max(axis=0) - self.body_centers.min(axis=0)
-            self.size = float(np.linalg.norm(extent)) or 1.0
+            self.size = bounding_box_diagonal(self.body_centers) or 1.0
         self.size = float(self.size)
 
     @property

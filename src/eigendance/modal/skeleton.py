@@ -21,6 +21,7 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.files import read_json
+from eigendance.geometry import bounding_box_diagonal
 from eigendance.modal.bodies import CONSTRAINED_ROWS, Body, Joint, check_skeleton, joint_frame
 from eigendance.modal.rotations import rotation_exp
 from eigendance.modal.skeleton_file import skeleton_document, skeleton_parts, stiffness_values
@@ -328,7 +329,7 @@ class Skeleton:
     def size(self) -> float:
         """Diagonal of the bounding box of all body ends (a length scale)."""
         ends = np.concatenate([[b.start for b in self.bodies], [b.end for b in self.bodies]])
-        return float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0)))
+        return bounding_box_diagonal(ends)
 
     # ----------------------------------------------------------------- loading
     @classmethod

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from eigendance.geometry import bounding_box_diagonal
 from eigendance.modal.bodies import Body, Joint, joint_frame
 
 # Default joint stiffness (glTF rigs, built-in rigs, JSON joints with "stiffness": "auto"): each
@@ -42,7 +43,7 @@ def body_inertias(bodies: list[Body]) -> tuple:
     ends = np.array([[body.start, body.end] for body in bodies]).reshape(-1, 3)
     return (tensors, np.array([body.mass for body in bodies]),
             np.array([body.center for body in bodies]),
-            float(np.linalg.norm(ends.max(axis=0) - ends.min(axis=0))))
+            bounding_box_diagonal(ends))
 
 
 def inertia_about(inertias, members, point) -> tuple[np.ndarray, float]:

@@ -29,6 +29,7 @@ import struct
 
 import numpy as np
 
+from eigendance.geometry import bounding_box_diagonal
 from eigendance.modal.bodies import CONSTRAINED_ROWS
 from eigendance.modal.palette import (
     default_phases,
@@ -252,7 +253,7 @@ def rig_meta(rig, name: str = "rig", revision: int = 0, edited: bool = False) ->
         "faces": int(len(skeleton.faces)), "bodies": model.n_bodies,
         "joints": len(skeleton.joints), "modes": int(nm), "groups": (nm + 3) // 4,
         "rigid_modes": int(model.rigid_modes), "size": float(model.size),
-        "center": ((low + high) / 2).tolist(), "diagonal": float(np.linalg.norm(high - low)),
+        "center": ((low + high) / 2).tolist(), "diagonal": bounding_box_diagonal(skeleton.vertices),
         "body_names": list(model.body_names),
         "frequencies": model.frequencies.tolist(),
         "joint_list": [{"name": joint.name, "type": joint.type,

@@ -8,27 +8,8 @@ the same bytes at once make one item: the second waits, then answers the first's
 
 from __future__ import annotations
 
-import hashlib
 import threading
 from collections.abc import Callable
-
-
-def file_digest(path: str) -> str:
-    """SHA-256 of a file's bytes, read in chunks of 1 MiB.
-
-    Parameters
-    ----------
-    path : the file.
-
-    Returns
-    -------
-    str: 64 hexadecimal digits.
-    """
-    digest = hashlib.sha256()
-    with open(path, "rb") as file:
-        while chunk := file.read(1 << 20):
-            digest.update(chunk)
-    return digest.hexdigest()
 
 
 class Contents:

@@ -20,11 +20,10 @@ import os
 import shutil
 
 from eigendance.errors import EigendanceError, InputError
-from eigendance.files import check_readable, kind_of, suffix_of
+from eigendance.files import check_readable, file_digest, kind_of, suffix_of
 from eigendance.harmonic.construction import choose_construction
 from eigendance.server import analysis, rigs
 from eigendance.server.archive import is_archive, unpack
-from eigendance.server.contents import file_digest
 from eigendance.server.items import Job, MappingItem, MeshItem, RigItem, SongItem, new_id
 from eigendance.server.requests import mapping_from
 from eigendance.server.shelf import Shelf

@@ -18,25 +18,20 @@ song is decoded in a worker thread: librosa's numba kernels load once per proces
 from __future__ import annotations
 
 import asyncio
-import multiprocessing
-import multiprocessing.forkserver
 import os
 import queue
-import signal
 import socket
 import threading
 from concurrent.futures import Future
 
+from eigendance import processes
 from eigendance.errors import InternalError, one_line
-from eigendance.processes import die_with_parent
 from eigendance.server import transfer
 
 THREADS = max(4, os.cpu_count() or 1)
 # A worker process yields the processors to the server's event loop (and its band workers too,
 # which inherit it): on 2 busy cores, the loop otherwise waited up to 0.14 s for a time slice.
 NICE = 10
-# Imported once by the fork server, so that a new worker process starts in milliseconds.
-PRELOAD = ["eigendance.server.preload"]
 
 
 class Workers:
@@ -111,8 +106,8 @@ RUNNING_LOCK = threading.Lock()
 def run(function, *args, progress=None, started=None):
     """function(*args) in a new worker process; the calling thread waits without the GIL.
 
-    The process comes from a fork server (`context`), ignores Ctrl-C and dies with the server
-    (`work`); it ends with the call. Its result comes back through `server.transfer`.
+    The process comes from the fork server (`processes.context`), ignores Ctrl-C and dies with
+    the server (`work`); it ends with the call. Its result comes back through `server.transfer`.
 
     Parameters
     ----------
@@ -155,7 +150,7 @@ def run(function, *args, progress=None, started=None):
         with RUNNING_LOCK:
             RUNNING.discard(process)
         if process.pid is not None:
-            process.kill()
+            processes.kill(process)
             process.join()
             process.close()
 
@@ -169,23 +164,21 @@ def stop() -> None:
 
 
 def kill(process) -> None:
-    """Kill a worker process of `run`, if it has not ended and been closed meanwhile.
+    """Kill a worker process of `run`, if it has not ended and been closed meanwhile
+    (`processes.kill`).
 
     Parameters
     ----------
     process : a multiprocessing Process.
     """
-    try:
-        process.kill()
-    except (ValueError, AttributeError):  # ended meanwhile
-        pass
+    processes.kill(process)
 
 
 def work(connection: socket.socket, function, args: tuple, progress: bool) -> None:
     """The worker process of `run`: call function(*args), send its result or its exception.
 
     Ctrl-C is the server's; the kernel kills this process when its parent (the fork server,
-    which ends with the server) dies (`processes.die_with_parent`); it runs at a lower priority
+    which ends with the server) dies (`processes.start_worker`); it runs at a lower priority
     (NICE) than the server. No thread watches the server, as `processes.start_worker` does:
     single-threaded, this process forks its own workers (the eigen-solver's bands), whose
     queues hold no named semaphores that a killed process would leave to the resource tracker.
@@ -196,8 +189,7 @@ def work(connection: socket.socket, function, args: tuple, progress: bool) -> No
     function, args : the call.
     progress : whether to give the function a `progress` keyword that sends what it reports.
     """
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    die_with_parent()
+    processes.start_worker()
     os.nice(NICE)
     try:
         keywords = {"progress": lambda done: transfer.send(connection, ("progress", done))} \
@@ -213,23 +205,18 @@ def work(connection: socket.socket, function, args: tuple, progress: bool) -> No
     connection.close()
 
 
+def warm() -> None:
+    """Start the fork server now (`processes.warm`), so that the first analysis does not wait
+    for it."""
+    processes.warm()
+
+
 def context():
-    """The start method of the server's worker processes: a fork server, which has imported
-    PRELOAD (the server has threads: forking it would copy locks they may hold), else spawn.
+    """The start method of the server's worker processes (`processes.context`: the fork server,
+    the server has threads).
 
     Returns
     -------
     multiprocessing context.
     """
-    if "forkserver" not in multiprocessing.get_all_start_methods():
-        return multiprocessing.get_context("spawn")
-    forkserver = multiprocessing.get_context("forkserver")
-    forkserver.set_forkserver_preload(PRELOAD)
-    return forkserver
-
-
-def warm() -> None:
-    """Start the fork server now (it imports PRELOAD in its own process, in about 2 s), so that the
-    first analysis does not wait for it; nothing without a fork server."""
-    if context().get_start_method() == "forkserver":
-        multiprocessing.forkserver.ensure_running()
+    return processes.context()

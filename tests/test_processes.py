@@ -1,0 +1,67 @@
+"""The one module for worker processes: how they start, and a kill that is never an error."""
+
+import multiprocessing
+import os
+import sys
+import threading
+import time
+
+import pytest
+
+from eigendance import processes
+
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork, killpg")
+
+
+def test_auto_forks_a_single_threaded_caller_and_not_a_threaded_one():
+    assert processes.context("auto").get_start_method() == "fork"
+    assert processes.context("fork").get_start_method() == "fork"
+    assert processes.context("fresh").get_start_method() == "forkserver"
+    stop = threading.Event()
+    thread = threading.Thread(target=stop.wait)
+    thread.start()
+    try:  # a second thread: a fork would copy locks it may hold
+        assert processes.context("auto").get_start_method() == "forkserver"
+    finally:
+        stop.set()
+        thread.join()
+    with pytest.raises(ValueError, match="how"):
+        processes.context("spawn")
+
+
+def test_every_fork_server_preloads_the_one_list():
+    """multiprocessing's preload is process-wide: whoever asks, the list is PRELOAD."""
+    for how in ("fresh", "auto"):
+        context = processes.context(how)
+        if context.get_start_method() == "forkserver":
+            assert multiprocessing.forkserver._forkserver._preload_modules == \
+                list(processes.PRELOAD)
+
+
+def _sleep_with_a_child():
+    os.setpgrp()
+    if os.fork() == 0:  # a child in the worker's group (an encoder, say)
+        time.sleep(60)
+        os._exit(0)
+    time.sleep(60)
+
+
+def test_kill_takes_the_group_and_is_no_error_once_ended():
+    context = processes.context("fork")
+    process = context.Process(target=_sleep_with_a_child)
+    process.start()
+    deadline = time.time() + 10
+    while os.getpgid(process.pid) != process.pid and time.time() < deadline:
+        time.sleep(0.01)
+    processes.kill(process, group=True)
+    process.join(10)
+    assert process.exitcode == -9
+    with pytest.raises(ProcessLookupError):  # the child went with it
+        deadline = time.time() + 10
+        while time.time() < deadline:
+            os.killpg(process.pid, 0)
+            time.sleep(0.05)
+    processes.kill(process)  # ended
+    process.close()
+    processes.kill(process, group=True)  # closed
+    processes.kill(context.Process(target=time.sleep))  # never started
