@@ -5,7 +5,8 @@ a mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or 
 skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its
 skin cannot be analysed). One
 item per distinct content (`server.contents`): the same bytes again answer the item already
-there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
+there — unless that item is a mesh whose solve failed (its worker killed, out of memory): then
+the same bytes make a new item, whose solve starts again, and the failed one is removed. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
 Files are read and analysed through `run` (`server.analysis` in the server's worker processes;
@@ -156,7 +157,17 @@ class Intake:
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
             return self.add_mapping(document, name, origin)
-        existing = self.shelf.contents.claim(key, self.shelf.touched)
+        failed: list[MeshItem] = []  # the same content's mesh whose solve failed: retried
+
+        def usable(item_id):
+            item = self.shelf.touched(item_id)
+            if isinstance(item, MeshItem) and item.job is not None and \
+                    item.job.state == "error":
+                failed.append(item)
+                return None
+            return item
+
+        existing = self.shelf.contents.claim(key, usable)
         if existing is not None:
             return existing, False
         try:
@@ -173,6 +184,11 @@ class Intake:
                 item = self.add_rig(path, name, origin, key)
         finally:
             self.shelf.contents.release(key)
+        for old in failed:  # replaced by the new item (which keeps the stored file)
+            try:
+                self.shelf.remove("mesh", old.id)
+            except InputError:  # removed meanwhile
+                pass
         return item, True
 
     def add_mesh(self, path: str, name: str, k: int | None = None,
