@@ -4,13 +4,20 @@ its end record, analyses have a deadline, and songs are decoded in a worker proc
 
 from __future__ import annotations
 
+import errno
+import io
+import os
+import struct
 import time
+import zipfile
 
 import pytest
 from starlette.testclient import TestClient
 from web_helpers import write_icosphere
 
+import eigendance.server.routes as routes_module
 import eigendance.server.solver as solver_module
+from eigendance.server import archive
 from eigendance.server.app import create_app
 from eigendance.server.library import Library
 
@@ -79,3 +86,121 @@ def test_a_solve_whose_worker_was_killed_is_retried_by_the_same_upload(client, t
     assert [mesh["id"] for mesh in meshes] == [again.json()["item"]["id"]]
     # Solved now: the same bytes answer it (200), as for any content already there.
     assert client.post("/api/upload?name=ball.obj", content=body).status_code == 200
+
+
+# --- zips the file system or zlib refuse, a full disk ----------------------------------------
+
+def zipped(members: dict, method=zipfile.ZIP_DEFLATED) -> bytes:
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", method) as archive:
+        for name, data in members.items():
+            archive.writestr(name, data)
+    return buffer.getvalue()
+
+
+@pytest.fixture(scope="module")
+def ball(tmp_path_factory) -> bytes:
+    with open(write_icosphere(tmp_path_factory.mktemp("ball") / "ball.obj", 1), "rb") as file:
+        return file.read()
+
+
+def corrupt_deflate(ball: bytes) -> bytes:
+    """A zip whose member's deflate stream is damaged (its CRC and sizes left as they were)."""
+    data = bytearray(zipped({"ball.obj": ball}))
+    start = 30 + len("ball.obj")  # the first local header's data
+    data[start + 40:start + 80] = b"\xff" * 40
+    return bytes(data)
+
+
+@pytest.mark.parametrize(("members", "words"), [
+    ({"x" * 300 + ".png": b"png"}, "too long"),
+    ({"a/" * 2100 + "t.png": b"png"}, "too deep"),
+    ({"tex.png": b"png", "tex.png/x.png": b"png"}, "both a file and a folder"),
+])
+def test_a_zip_the_file_system_would_refuse_is_one_line(client, library, ball, members, words):
+    message = error_of(client.post("/api/upload?name=m.zip",
+                                   content=zipped({"ball.obj": ball, **members})), 400)
+    assert words in message and "m.zip" in message
+    assert not [name for name in os.listdir(library.folder) if name != ".lock"]
+
+
+def test_a_zip_with_a_corrupt_deflate_stream_is_one_line(client, library, ball):
+    message = error_of(client.post("/api/upload?name=m.zip", content=corrupt_deflate(ball)), 400)
+    assert "ball.obj cannot be unpacked" in message
+    assert not os.listdir(library.folder)
+
+
+def test_an_upload_to_a_full_disk_is_507(client, library, ball, monkeypatch):
+    """ENOSPC while the upload is written (mocked): one line, 507, nothing left behind."""
+    real = routes_module.os.fdopen
+
+    class Full(io.RawIOBase):
+        def __init__(self, handle, *arguments, **options):
+            self.file = real(handle, *arguments, **options)
+
+        def write(self, data):
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+        def close(self):
+            self.file.close()
+
+    monkeypatch.setattr(routes_module.os, "fdopen", Full)
+    for name, body in (("ball.obj", ball), ("m.zip", zipped({"ball.obj": ball}))):
+        assert "disk is full" in error_of(client.post(f"/api/upload?name={name}",
+                                                      content=body), 507)
+    monkeypatch.undo()
+    assert not os.listdir(library.folder)
+
+
+def test_unpacking_onto_a_full_disk_is_507(library, ball, tmp_path, monkeypatch):
+    """ENOSPC while a member is written (mocked): the OSError itself, which the app answers
+    with 507 (above), not 'cannot be unpacked'."""
+    path = tmp_path / "m.zip"
+    path.write_bytes(zipped({"ball.obj": ball}))
+    real = archive.os.fdopen
+
+    def full(handle, *arguments, **options):
+        real(handle).close()
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(archive.os, "fdopen", full)
+    with pytest.raises(OSError) as raised:
+        archive.unpack(str(path), str(tmp_path / "out"), 1 << 20, "m.zip")
+    assert raised.value.errno == errno.ENOSPC
+
+
+# --- a zip's directory judged from its end record ---------------------------------------------
+
+def end_record(entries: int, size: int) -> bytes:
+    """An end-of-central-directory record (APPNOTE 4.3.16) listing `entries` in `size` bytes."""
+    return struct.pack("<4s4H2LH", b"PK\x05\x06", 0, 0, min(entries, 0xFFFF),
+                       min(entries, 0xFFFF), size, 0, 0)
+
+
+def zip64_end(entries: int, size: int) -> bytes:
+    """A zip64 end record and its locator (APPNOTE 4.3.14-15) before a classic one of 0xFFFF."""
+    record = struct.pack("<4sQ2H2L4Q", b"PK\x06\x06", 44, 45, 45, 0, 0, entries, entries, size,
+                         0)
+    locator = struct.pack("<4sLQL", b"PK\x06\x07", 0, 0, 1)
+    return record + locator + struct.pack("<4s4H2LH", b"PK\x05\x06", 0, 0, 0xFFFF, 0xFFFF,
+                                          0xFFFFFFFF, 0xFFFFFFFF, 0)
+
+
+@pytest.mark.parametrize(("tail", "words"), [
+    (end_record(300, 300 * 46), "holds 300 files"),
+    (zip64_end(1_100_000, 60 << 20), "holds 1100000 files"),
+    (end_record(3, 50 << 20), "its directory takes"),
+], ids=["300 entries", "zip64 1.1 M entries", "50 MB directory"])
+def test_a_zip_listing_too_much_is_refused_from_its_end_record(client, library, monkeypatch,
+                                                               tail, words):
+    """zipfile.ZipFile, which parses the whole directory in Python (7-13 s and +500 MB for 1.1 M
+    entries), is never reached."""
+    head = zipped({"ball.obj": b"v 0 0 0\n"})[:-22]  # a real zip without its end record
+
+    def never(*arguments, **options):
+        raise AssertionError("zipfile parsed the directory")
+
+    monkeypatch.setattr(archive.zipfile, "ZipFile", never)
+    message = error_of(client.post("/api/upload?name=big.zip", content=head + tail), 413)
+    assert words in message
+    assert not os.listdir(library.folder)
