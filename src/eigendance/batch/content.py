@@ -15,30 +15,12 @@ import os
 
 from eigendance import __version__
 from eigendance.batch.plan import Item, Job, Model, Plan
+from eigendance.batch.record import file_digest
 from eigendance.files import read_json, suffix_of
 
 # Bump when what a job writes changes without a new eigendance version (2: the rhythm,
 # mapping v3: gallery items with envelopes and beat pulses).
 RECORD_VERSION = 2
-BLOCK = 1 << 20  # bytes read at a time while hashing
-
-
-def file_digest(path: str | os.PathLike) -> str:
-    """SHA-256 of a file's bytes.
-
-    Parameters
-    ----------
-    path : a file.
-
-    Returns
-    -------
-    str, 64 hexadecimal digits.
-    """
-    digest = hashlib.sha256()
-    with open(path, "rb") as file:
-        while block := file.read(BLOCK):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def referenced_files(path: str) -> list[str]:

@@ -5,14 +5,14 @@ into one folder of the library and read from there like any model file (docs/des
 What a zip may hold, checked before anything is written: its end record (read here, before
 `zipfile` parses the directory) lists at most MAX_MEMBERS entries in a directory of at most
 MAX_DIRECTORY bytes, so a zip listing a million entries is refused in microseconds; at most
-MAX_MEMBERS members of at most `limit` bytes unpacked in all (a zip bomb is refused before it
-is extracted, and each member is counted again as it is written: a header cannot lie about its
-size); relative paths that stay inside the folder (no absolute path, drive, `..` or link), of
-at most MAX_DEPTH folders, MAX_PATH characters and NAME_MAX bytes a name, none both a file and
-a folder; no encryption; model files, the files models name (buffers, MTLs, images) and documents (licence,
-read-me), which are skipped. Anything else is refused in one line naming it. The model read is
-the zip's one model file — the first kind found of glTF, OBJ, PLY/OFF/STL, then what Blender
-converts (a zip holding one model in several formats); two of that kind are refused.
+MAX_MEMBERS members of at most `limit` bytes unpacked in all (a zip bomb is refused before it is
+extracted, and each member is counted again as it is written: a header cannot lie about its
+size); relative paths that stay inside the folder (no absolute path, drive, `..` or link), of at
+most MAX_DEPTH folders, MAX_PATH characters and NAME_MAX bytes a name, none both a file and a
+folder; no encryption; model files, the files models name (buffers, MTLs, images) and documents
+(licence, read-me), which are skipped. Anything else is refused in one line naming it. The model
+read is the zip's one model file — the first kind found of glTF, OBJ, PLY/OFF/STL, then what
+Blender converts (a zip holding one model in several formats); two of that kind are refused.
 """
 
 from __future__ import annotations

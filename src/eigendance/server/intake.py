@@ -1,12 +1,12 @@
 """Files into the library: meshes, songs, mappings and rigs (docs/design.md#server).
 
-A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind:
-a mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a
-skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its
-skin cannot be analysed). One
-item per distinct content (`server.contents`): the same bytes again answer the item already
-there — unless that item is a mesh whose solve failed (its worker killed, out of memory): then
-the same bytes make a new item, whose solve starts again, and the failed one is removed. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
+A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind: a
+mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a skeleton
+JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its skin cannot
+be analysed). One item per distinct content (`server.contents`): the same bytes again answer the
+item already there — unless that item is a mesh whose solve failed (its worker killed, out of
+memory): then the same bytes make a new item, whose solve starts again, and the failed one is
+removed. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
 Files are read and analysed through `run` (`server.analysis` in the server's worker processes;
