@@ -67,7 +67,8 @@ def write_box(folder, suffix: str) -> str:
     else:
         box.visual = trimesh.visual.TextureVisuals(uv=uv)
         text = box.export(file_type="ply", encoding="ascii").decode()
-        text = text.replace("format ascii 1.0\n", "format ascii 1.0\ncomment TextureFile huge.png\n")
+        text = text.replace("format ascii 1.0\n",
+                            "format ascii 1.0\ncomment TextureFile huge.png\n")
     (folder / f"box{suffix}").write_text(text)
     (folder / "huge.png").write_bytes(png_header(SIDE, SIDE))
     return str(folder / f"box{suffix}")
