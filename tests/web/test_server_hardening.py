@@ -13,11 +13,13 @@ import zipfile
 
 import pytest
 from starlette.testclient import TestClient
-from web_helpers import write_icosphere
+from web_helpers import write_icosphere, write_song
 
+import eigendance.server.intake as intake_module
 import eigendance.server.routes as routes_module
 import eigendance.server.solver as solver_module
-from eigendance.server import archive
+from eigendance.server import analysis, archive
+from eigendance.server import workers as workers_module
 from eigendance.server.app import create_app
 from eigendance.server.library import Library
 
@@ -62,14 +64,14 @@ def test_a_solve_whose_worker_was_killed_is_retried_by_the_same_upload(client, t
         body = file.read()
     run = solver_module.workers.run
 
-    def killed_at_start(*arguments, started=None, **options):
-        if started is None:  # not the solve: reading the file
-            return run(*arguments, **options)
+    def killed_at_start(function, *arguments, started=None, **options):
+        if function is not analysis.solve_basis:  # reading the file
+            return run(function, *arguments, started=started, **options)
 
         def start(process):
             started(process)
             process.kill()  # what the OOM killer or a segfault does
-        return run(*arguments, started=start, **options)
+        return run(function, *arguments, started=start, **options)
 
     monkeypatch.setattr(solver_module.workers, "run", killed_at_start)
     first = client.post("/api/upload?name=ball.obj", content=body)
@@ -204,3 +206,64 @@ def test_a_zip_listing_too_much_is_refused_from_its_end_record(client, library, 
     message = error_of(client.post("/api/upload?name=big.zip", content=head + tail), 413)
     assert words in message
     assert not os.listdir(library.folder)
+
+
+# --- analyses: a deadline, songs in a worker process charged before decoding -----------------
+
+def test_an_analysis_past_its_deadline_is_stopped_in_one_line(client, tmp_path, monkeypatch):
+    """The deadline grows with the file (ANALYSIS_SECONDS + size / ANALYSIS_BYTES_PER_SECOND);
+    set to nothing here, the reading's worker is killed at once: 422, and the upload slot and
+    the content are free again."""
+    with open(write_icosphere(tmp_path / "ball.obj", 1), "rb") as file:
+        body = file.read()
+    monkeypatch.setattr(intake_module, "ANALYSIS_SECONDS", 0.0)
+    monkeypatch.setattr(intake_module, "ANALYSIS_BYTES_PER_SECOND", 1e18)
+    message = error_of(client.post("/api/upload?name=ball.obj", content=body), 422)
+    assert message.startswith("ball.obj: the analysis took more than its 0 s")
+    monkeypatch.undo()
+    answer = client.post("/api/upload?name=ball.obj", content=body)
+    assert answer.status_code == 201, answer.text
+
+
+@pytest.fixture
+def worker_calls(monkeypatch):
+    """The functions run in worker processes (`workers.run`), in order."""
+    run, called = workers_module.run, []
+
+    def noted(function, *arguments, **options):
+        called.append(function.__name__)
+        return run(function, *arguments, **options)
+
+    monkeypatch.setattr(workers_module, "run", noted)
+    return called
+
+
+def test_a_song_is_decoded_in_a_worker_process(client, tmp_path, worker_calls):
+    with open(write_song(tmp_path / "tune.wav", 1.0), "rb") as file:
+        answer = client.post("/api/upload?name=tune.wav", content=file.read())
+    assert answer.status_code == 201, answer.text
+    assert worker_calls == ["song_seconds", "read_song"]
+    assert answer.json()["item"]["duration"] == pytest.approx(1.0, abs=0.01)
+
+
+def test_a_song_too_long_for_the_budget_is_refused_before_decoding(tmp_path, worker_calls):
+    """60 s of spectrogram (6,001 frames × 64 bands, about 3.5 MB) in a budget of 1 MB: 413
+    from the length in the header, nothing decoded."""
+    library = Library(str(tmp_path / "library"), k=8, memory_budget=1 << 20)
+    try:
+        with TestClient(create_app(library, "127.0.0.1", 8765), base_url=LOCAL) as client:
+            with open(write_song(tmp_path / "long.wav", 60.0), "rb") as file:
+                message = error_of(client.post("/api/upload?name=long.wav",
+                                               content=file.read()), 413)
+        assert "long.wav" in message and "budget" in message
+        assert worker_calls == ["song_seconds"]
+        assert library.budget.used == 0 and not library.songs
+    finally:
+        library.close()
+
+
+def test_a_songs_length_is_read_without_decoding(tmp_path):
+    path = write_song(tmp_path / "tune.wav", 2.5)
+    assert analysis.song_seconds(path, "tune.wav") == pytest.approx(2.5, abs=1e-3)
+    assert analysis.song_seconds(str(tmp_path / "none.ogg"), "none.ogg") == 0.0
+    assert analysis.song_bytes(60.0, {}) > 6001 * 64 * 8
