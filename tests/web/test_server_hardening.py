@@ -9,11 +9,10 @@ import io
 import os
 import struct
 import time
-import zipfile
 
 import pytest
 from starlette.testclient import TestClient
-from web_helpers import write_icosphere, write_song
+from web_helpers import write_icosphere, write_song, zipped
 
 import eigendance.server.intake as intake_module
 import eigendance.server.routes as routes_module
@@ -91,14 +90,6 @@ def test_a_solve_whose_worker_was_killed_is_retried_by_the_same_upload(client, t
 
 
 # --- zips the file system or zlib refuse, a full disk ----------------------------------------
-
-def zipped(members: dict, method=zipfile.ZIP_DEFLATED) -> bytes:
-    buffer = io.BytesIO()
-    with zipfile.ZipFile(buffer, "w", method) as archive:
-        for name, data in members.items():
-            archive.writestr(name, data)
-    return buffer.getvalue()
-
 
 @pytest.fixture(scope="module")
 def ball(tmp_path_factory) -> bytes:
