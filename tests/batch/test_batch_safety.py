@@ -79,14 +79,21 @@ def test_an_output_that_would_replace_an_input_is_refused_before_any_work(folder
     assert contents(folder) == before  # nothing written, no input touched
 
 
-def test_an_output_named_like_a_file_a_model_names_is_refused(folder, capsys):
-    """A point cache writes `{stem}.mtl`: never over the MTL an OBJ input names."""
-    (folder / "m-s-0.mtl").write_text("newmtl skin\nKd 1 0 0\n")
-    (folder / "m.obj").write_text("mtllib m-s-0.mtl\n" + (folder / "m.obj").read_text())
+@pytest.mark.parametrize("named", ["m-s-0.mtl", "m-s-1_texture0.png"])
+def test_an_output_named_like_a_file_a_model_names_is_refused(folder, capsys, named):
+    """A point cache writes `{stem}.mtl` and a look's `{stem}_texture<i>.png`: never over the
+    MTL an OBJ input names, nor over an image its MTL names."""
+    if named.endswith(".mtl"):
+        (folder / named).write_text("newmtl skin\nKd 1 0 0\n")
+        (folder / "m.obj").write_text(f"mtllib {named}\n" + (folder / "m.obj").read_text())
+    else:
+        (folder / named).write_bytes(b"\x89PNG\r\n\x1a\n")
+        (folder / "look.mtl").write_text(f"newmtl skin\nmap_Kd {named}\n")
+        (folder / "m.obj").write_text("mtllib look.mtl\n" + (folder / "m.obj").read_text())
     plan = write_plan(str(folder), models=["m.obj"], songs=["s.wav"], out=".", **CHEAP)
     before = contents(folder)
     assert main(["batch", plan, "--force"]) == 1
-    assert "m-s-0.mtl" in one_error(capsys)
+    assert named in one_error(capsys)
     assert contents(folder) == before
 
 

@@ -21,13 +21,14 @@ from eigendance.batch.record import RECORD, REPORT
 from eigendance.errors import InputError
 from eigendance.writes import same_file
 
-TEXTURES = re.compile(r"_texture[0-9]+\.[A-Za-z0-9]+")  # `export.look_files.texture_files`
+# A look's image beside an export (`export.look_files.texture_files`), its stem the group.
+TEXTURES = re.compile(r"(.+)_texture[0-9]+\.[a-z0-9]+")
 
 
 def written_names(job: Job, format: str) -> list[str]:
     """The names an output of a job writes in the output folder: its file, the song beside an
-    export, a point cache's rest mesh and its materials (the images of a look, named after the
-    stem, are matched by `writes_name`).
+    export, a point cache's rest mesh and its materials (the images of a look are named after
+    the stem: TEXTURES).
 
     Parameters
     ----------
@@ -44,26 +45,6 @@ def written_names(job: Job, format: str) -> list[str]:
     if format == "pc2":
         names += [job.stem + ".obj", job.stem + ".mtl"]
     return names
-
-
-def writes_name(job: Job, format: str, name: str) -> bool:
-    """Whether an output of a job may write a file of this name (ignoring case).
-
-    Parameters
-    ----------
-    job : the job.
-    format : one of FORMATS.
-    name : a file name in the output folder.
-
-    Returns
-    -------
-    bool.
-    """
-    folded = name.lower()
-    if folded in (written.lower() for written in written_names(job, format)):
-        return True
-    return format in ("pc2", "usd") and folded.startswith(job.stem.lower()) and \
-        TEXTURES.fullmatch(name[len(job.stem):]) is not None
 
 
 def inputs_of(plan: Plan) -> list[str]:
@@ -89,30 +70,36 @@ def inputs_of(plan: Plan) -> list[str]:
 
 def check_outputs(plan: Plan) -> None:
     """InputError, before any work and whatever `--force` says, for two outputs of one name
-    (ignoring case) or an output that would replace an input (module docstring).
+    (ignoring case) or an output that would replace an input (module docstring). The names of a
+    job all start with its stem, so the stems are compared, and each input in the output folder
+    with the names of the job whose stem its name starts with.
 
     Parameters
     ----------
     plan : the plan.
     """
-    jobs = plan.jobs()
-    seen: dict[str, str] = {}
-    for job in jobs:
-        for format in plan.outputs:
-            for name in written_names(job, format):
-                other = seen.setdefault(name.lower(), job.stem)
-                if other != job.stem:
-                    raise InputError(f"{plan.path}: jobs {other} and {job.stem} would both "
-                                     f"write {name}; rename an input")
+    stems: dict[str, Job] = {}
+    for job in plan.jobs():
+        other = stems.setdefault(job.stem.lower(), job)
+        if other is not job:
+            raise InputError(f"{plan.path}: jobs {other.stem} and {job.stem} would write the "
+                             "same files (names differ only in case); rename an input")
+    textures = bool(set(plan.outputs) & {"pc2", "usd"})  # a look's images beside them
     for path in inputs_of(plan):
         if not _in_folder(path, plan.out):
             continue
-        name = os.path.basename(path)
-        for job in jobs:
-            if any(writes_name(job, format, name) for format in plan.outputs):
-                raise InputError(f"{plan.path}: job {job.stem} would write over {path}, an "
-                                 "input of the plan; an input is never overwritten: give "
-                                 "another out folder")
+        name = os.path.basename(path).lower()
+        job = stems.get(os.path.splitext(name)[0])
+        written = job is not None and name in {written.lower() for format in plan.outputs
+                                               for written in written_names(job, format)}
+        image = TEXTURES.fullmatch(name)
+        if not written and image is not None and textures:
+            job = stems.get(image.group(1))
+            written = job is not None
+        if written:
+            raise InputError(f"{plan.path}: job {job.stem} would write over {path}, an input "
+                             "of the plan; an input is never overwritten: give another out "
+                             "folder")
 
 
 def _in_folder(path: str, folder: str) -> bool:
