@@ -13,6 +13,8 @@ front ends add their own hints from `remedy` (the CLI turns {"solver": "eigsh"} 
 
 from __future__ import annotations
 
+import errno
+
 
 class EigendanceError(Exception):
     """Base of the errors eigendance raises on purpose; ``str(error)`` is one line.
@@ -95,3 +97,22 @@ def one_line(error: BaseException | str, limit: int = 300) -> str:
 class ModelWarning(UserWarning):
     """What a model file holds that eigendance cannot keep (points, lines, an unreadable
     texture, morph targets of its own): one line naming the file, issued once per read."""
+
+
+def disk_full(error: BaseException) -> bool:
+    """Whether an error is a full disk or an exhausted quota (the server answers 507).
+
+    Parameters
+    ----------
+    error : any exception.
+
+    Returns
+    -------
+    bool.
+
+    Example
+    -------
+    >>> disk_full(OSError(errno.ENOSPC, "No space left on device")), disk_full(ValueError())
+    (True, False)
+    """
+    return isinstance(error, OSError) and error.errno in (errno.ENOSPC, errno.EDQUOT)

@@ -37,9 +37,11 @@ PR_SET_PDEATHSIG = 1
 # eigen-solver (bands, and every other kind of worker solves), the server's analysis and a
 # batch's tasks (`batch.work`: export, rigs, songs). The last costs the server's fork server
 # 94 MB resident, but 5 MB proportional (shared libraries, mostly), and 0.15 s when it starts;
-# without it each batch worker imported it itself (0.15 s, 22 MB of its own).
+# without it each batch worker imported it itself (0.15 s, 22 MB of its own). `music.compiled`
+# compiles librosa's numba kernels once in the fork server (2–15 s when it starts), so that each
+# worker that analyses a song (the server's, a batch's) does not.
 PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis",
-           "eigendance.batch.work")
+           "eigendance.batch.work", "eigendance.music.compiled")
 # How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
 TRACKER_WARNING = "ignore:resource_tracker:UserWarning"
 # Resolved here, in the parent: the child of a fork runs only this C call before exec (a

@@ -15,6 +15,7 @@ import contextvars
 import fcntl
 import os
 import re
+import shutil
 import tempfile
 import time
 
@@ -29,6 +30,7 @@ from eigendance.errors import InputError, one_line
 TEMPORARY_PREFIX, TEMPORARY_SUFFIX = ".eigendance-", ".part"
 TEMPORARY_NAME = re.compile(r"\.eigendance-.+\.part(\.[A-Za-z0-9]{1,8})?")
 FRESH_SECONDS = 60.0
+LOCK_NAME = ".lock"  # in a `locked_folder`: held (flock) by the process that owns the folder
 
 
 def locked_temporary(folder: str, suffix: str = "") -> tuple[int, str]:
@@ -164,6 +166,66 @@ def temporary_beside(path: str | os.PathLike, suffix: str = "") -> tuple[int, st
     os.makedirs(folder, exist_ok=True)
     sweep_temporary_files(folder)
     return locked_temporary(folder, suffix)
+
+
+def locked_folder(prefix: str, parent: str | None = None) -> tuple[str, int]:
+    """A new private folder for a process's temporary files (a server's library, a batch's
+    store), with a `.lock` file this process holds (flock) for as long as it keeps the returned
+    descriptor open: the system drops the lock when the process dies, however it dies, so
+    `sweep_locked_folders` can tell the folders of killed processes.
+
+    Parameters
+    ----------
+    prefix : the start of the folder's name (its owner's kind, e.g. "eigendance-batch-").
+    parent : where to make it (default: the system's temporary folder).
+
+    Returns
+    -------
+    (folder, descriptor of its held lock file); close the descriptor after removing the folder.
+    """
+    folder = tempfile.mkdtemp(prefix=prefix, dir=parent)
+    handle = os.open(os.path.join(folder, LOCK_NAME), os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        pass  # a file system without locks: the folder is still ours, only the sweep skips it
+    return folder, handle
+
+
+def sweep_locked_folders(prefix: str, parent: str | None = None,
+                         fresh: float = FRESH_SECONDS) -> int:
+    """Remove the folders of `locked_folder` that killed processes left. A folder is left alone
+    while its lock is held, when it has no lock file (not ours to judge) and while it is younger
+    than `fresh` seconds (its process may be about to take the lock).
+
+    Parameters
+    ----------
+    prefix : the folders' prefix.
+    parent : where to look (default: the system's temporary folder).
+    fresh : seconds.
+
+    Returns
+    -------
+    int, how many were removed.
+    """
+    parent = parent or tempfile.gettempdir()
+    removed = 0
+    try:
+        entries = [entry for entry in os.scandir(parent) if entry.name.startswith(prefix)
+                   and entry.is_dir(follow_symlinks=False)]
+    except OSError:
+        return 0
+    for entry in entries:
+        try:
+            if time.time() - entry.stat(follow_symlinks=False).st_mtime < fresh:
+                continue
+            with open(os.path.join(entry.path, LOCK_NAME), "rb") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)  # OSError while its owner runs
+                shutil.rmtree(entry.path)
+                removed += 1
+        except OSError:
+            continue
+    return removed
 
 
 # The renames a command defers until all its outputs are written (`all_or_nothing`), or None

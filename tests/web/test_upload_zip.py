@@ -13,6 +13,7 @@ import zipfile
 import pytest
 from PIL import Image
 from starlette.testclient import TestClient
+from web_helpers import zipped
 
 from eigendance.server.app import create_app
 from eigendance.server.library import UNPACKED_FACTOR, Library
@@ -28,15 +29,6 @@ def client(tmp_path):
         test_client.library = library
         yield test_client
     library.close()
-
-
-def zipped(members: dict, method=zipfile.ZIP_DEFLATED) -> bytes:
-    """A zip of {name or ZipInfo: bytes}."""
-    buffer = io.BytesIO()
-    with zipfile.ZipFile(buffer, "w", method) as archive:
-        for name, data in members.items():
-            archive.writestr(name, data)
-    return buffer.getvalue()
 
 
 def read(*parts) -> bytes:

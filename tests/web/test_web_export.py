@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import time
 
 import av
@@ -149,6 +150,10 @@ def test_a_rig_exports_its_clip_too(client):
     ({"duration": 301}, 400, "duration"),
     ({"size": "3840x2160"}, 400, "pixels"),
     ({"size": "big"}, 400, "size"),
+    ({"size": "32²x240"}, 400, "size"),  # isdigit() takes '²', int() does not
+    ({"size": "１２８０x７２０"}, 400, "size"),  # full-width digits
+    ({"format": ["mp4"]}, 400, "format"),
+    ({"format": {"mp4": 1}}, 400, "format"),
     ({"fps": 0}, 400, "fps"),
     ({"mesh": "nothing"}, 404, "no mesh"),
     ({"mapping": {"transfer": [2]}}, 400, "mapping"),
@@ -190,3 +195,29 @@ def test_one_export_at_a_time(client):
                       "model/gltf-binary")
     assert refused.value.status_code == 409
     release.set()
+
+
+def test_removing_the_song_during_its_mp4_export_leaves_the_export_whole(client, mapping, tmp_path,
+                                                                        monkeypatch):
+    """The export holds the song's file of its own: removed from the library while ffmpeg is
+    about to read it, the video is still made, with its sound (issue 34 case 12)."""
+    import eigendance.server.export_route as export_route
+
+    with open(write_song(tmp_path / "gone.wav", 2.0), "rb") as file:  # a song of its own
+        song = client.post("/api/upload?name=gone.wav", content=file.read())
+    assert song.status_code == 201, song.text
+    song_id = song.json()["item"]["id"]
+    render = export_route.render_video
+
+    def render_after_removal(*arguments, **options):
+        assert client.delete(f"/api/songs/{song_id}").status_code == 200
+        return render(*arguments, **options)
+
+    monkeypatch.setattr(export_route, "render_video", render_after_removal)
+    state, data = export(client, mesh=client.ids["mesh"], song=song_id,
+                         mapping=mapping.to_json(), format="mp4", start=0.5, duration=0.5,
+                         size="160x120", fps=20)
+    with av.open(io.BytesIO(data)) as container:
+        assert container.streams.audio and container.streams.video[0].frames == 10
+    folder = client.library.folder
+    assert not [name for name in os.listdir(folder) if "-song" in name]  # its link is gone

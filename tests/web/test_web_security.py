@@ -166,6 +166,8 @@ def library_ids(client) -> list[str]:
     {"Sec-Fetch-Site": "cross-site"},
     {"Sec-Fetch-Site": "same-site"},
     {"Origin": LOCAL, "Sec-Fetch-Site": "cross-site"},
+    {"Sec-Fetch-Site": "same-origin, cross-site"},  # joined by a proxy: each value counts
+    {"Sec-Fetch-Site": "same-origin,same-site"},
 ])
 def test_state_changing_requests_from_other_sites_are_refused(client, files, headers):
     before, folder = library_ids(client), stored_files(client.app.state.library)

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import contextlib
+import io
 import os
 import socket
 import subprocess
 import sys
 import time
+import zipfile
 
 from helpers import start
 
@@ -60,6 +62,15 @@ def write_icosphere(path, subdivisions=2) -> str:
 
     trimesh.creation.icosphere(subdivisions).export(path)
     return str(path)
+
+
+def zipped(members: dict, method=zipfile.ZIP_DEFLATED) -> bytes:
+    """A zip of {name or ZipInfo: bytes}."""
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", method) as archive:
+        for name, data in members.items():
+            archive.writestr(name, data)
+    return buffer.getvalue()
 
 
 def write_song(path, seconds=6.0) -> str:

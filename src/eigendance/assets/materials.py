@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import io
 import math
+import warnings
 
 import numpy as np
 
@@ -57,22 +58,43 @@ class Images:
         return self.index[key]
 
 
-def _check_decodes(data: bytes) -> None:
-    """InputError unless Pillow can read the image's header and structure, and the size its
-    header declares is within MAX_IMAGE_SIDE and MAX_IMAGE_PIXELS (checked before anything
-    decodes it: a PNG of a few kB may declare 100,000 × 100,000 pixels)."""
+def check_image_header(data: bytes) -> None:
+    """InputError when an image's header declares more than MAX_IMAGE_SIDE pixels a side or
+    MAX_IMAGE_PIXELS in all, read before a pixel is decoded (a PNG of a few kB may declare
+    100,000 × 100,000 pixels); nothing for bytes Pillow does not take for an image (they fail
+    where they are decoded). Every path that reads a model's images calls it first: glTF
+    (`Images.add`), OBJ/MTL and PLY (`other_formats`' resolver), Blender's formats.
+
+    Parameters
+    ----------
+    data : the image file's bytes.
+    """
     from PIL import Image as PillowImage  # imported when a textured model is read
 
+    limits = f"at most {MAX_IMAGE_SIDE} a side and {MAX_IMAGE_PIXELS >> 20} M pixels"
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", PillowImage.DecompressionBombWarning)
+            with PillowImage.open(io.BytesIO(data)) as image:
+                width, height = image.size
+    except PillowImage.DecompressionBombError:  # Pillow's own limit, above ours
+        raise InputError(f"an image of more than {2 * PillowImage.MAX_IMAGE_PIXELS >> 20} M "
+                         f"pixels ({limits})") from None
+    except Exception:  # noqa: BLE001 - not an image Pillow reads: said where it is decoded
+        return
+    if max(width, height) > MAX_IMAGE_SIDE or width * height > MAX_IMAGE_PIXELS:
+        raise InputError(f"an image of {width} × {height} pixels ({limits})")
+
+
+def _check_decodes(data: bytes) -> None:
+    """InputError unless the image's size is within the limits (`check_image_header`) and
+    Pillow can read its header and structure."""
+    from PIL import Image as PillowImage  # imported when a textured model is read
+
+    check_image_header(data)
     try:
         with PillowImage.open(io.BytesIO(data)) as image:
-            width, height = image.size
-            if max(width, height) > MAX_IMAGE_SIDE or width * height > MAX_IMAGE_PIXELS:
-                raise InputError(f"an image of {width} × {height} pixels (at most "
-                                 f"{MAX_IMAGE_SIDE} a side and {MAX_IMAGE_PIXELS >> 20} M "
-                                 "pixels)")
             image.verify()
-    except InputError:
-        raise
     except Exception as error:  # noqa: BLE001 - Pillow raises many kinds on broken images
         raise InputError(f"a broken image ({type(error).__name__})") from None
 

@@ -17,7 +17,7 @@ import tempfile
 import numpy as np
 
 from eigendance.assets.appearance import srgb_to_linear
-from eigendance.assets.materials import Images, trimesh_material
+from eigendance.assets.materials import Images, check_image_header, trimesh_material
 from eigendance.assets.model import Model, combine
 from eigendance.assets.primitives import Piece
 from eigendance.errors import InputError, one_line
@@ -47,7 +47,8 @@ def read_with_trimesh(path: str, name: str) -> Model:
     if path.lower().endswith(".obj"):
         _check_obj_indices(path, name)
     try:
-        loaded = trimesh.load(path, process=False, resolver=_FolderResolver(path))
+        resolver = _FolderResolver(path, name)
+        loaded = trimesh.load(path, process=False, resolver=resolver)
         geometries = list(loaded.geometry.values()) if isinstance(loaded, trimesh.Scene) \
             else [loaded]
         styled = any(_styled(geometry) for geometry in geometries)
@@ -67,7 +68,8 @@ def read_with_trimesh(path: str, name: str) -> Model:
     pieces, materials = [], []
     for geometry in geometries:
         pieces.append(_piece(geometry, materials, images, name, styled))
-    model = combine(name, pieces, materials, images.images, problems=images.problems)
+    model = combine(name, pieces, materials, images.images,
+                    problems=resolver.problems + images.problems)
     model.styled = styled
     return model
 
@@ -100,10 +102,14 @@ def _piece(geometry, materials: list, images: Images, name: str, styled: bool) -
 
 class _FolderResolver:
     """trimesh's file resolver, reading only regular files inside the model's folder (an MTL or
-    image named with `..` or an absolute path is not read: trimesh then goes on without it)."""
+    image named with `..` or an absolute path is not read: trimesh then goes on without it),
+    and no image whose header declares too many pixels (`materials.check_image_header`: trimesh
+    would decode it whole; it goes on without it, and the model's warning says why)."""
 
-    def __init__(self, path: str):
+    def __init__(self, path: str, model: str = ""):
         self.folder = os.path.dirname(os.path.abspath(path))
+        self.model = model
+        self.problems: list[str] = []
 
     def get(self, name: str) -> bytes:
         parts = str(name).replace("\\", "/").split("/")
@@ -112,7 +118,14 @@ class _FolderResolver:
                 os.path.realpath(self.folder) + os.sep) or not os.path.isfile(path):
             raise FileNotFoundError(name)
         with open(path, "rb") as file:
-            return file.read()
+            data = file.read()
+        if not name.lower().endswith(".mtl"):
+            try:
+                check_image_header(data)
+            except InputError as error:
+                self.problems.append(f"{name}: {error}")
+                raise FileNotFoundError(name) from None
+        return data
 
     __getitem__ = get
 
@@ -160,14 +173,16 @@ def blender_available() -> bool:
 
 
 @contextlib.contextmanager
-def converted(path: str, name: str):
+def converted(path: str, name: str, problems: list | None = None):
     """A temporary .glb of a file Blender imports (FBX, .blend, .dae, .3ds), made with bpy;
-    without bpy, one InputError saying how to convert it.
+    without bpy, one InputError saying how to convert it. Images whose headers declare too
+    many pixels are dropped before Blender decodes any (`large_images`).
 
     Parameters
     ----------
     path : the file.
     name : how messages call it.
+    problems : where the dropped images are said (the model's warnings), or None.
 
     Yields
     ------
@@ -182,11 +197,46 @@ def converted(path: str, name: str):
                          "(pip install 'eigendance[blender]')", status=415)
     with tempfile.TemporaryDirectory(prefix="eigendance-convert-") as folder:
         glb = os.path.join(folder, "converted.glb")
-        _blender_export(path, glb, CONVERTIBLE[suffix], name)
+        _blender_export(path, glb, CONVERTIBLE[suffix], name,
+                        problems if problems is not None else [])
         yield glb
 
 
-def _blender_export(path: str, glb: str, operator: str | None, name: str) -> None:
+def large_images(images, absolute) -> list[tuple[object, str]]:
+    """The images of a Blender file whose headers declare too many pixels
+    (`materials.check_image_header`), read from their packed bytes or their files: nothing is
+    decoded.
+
+    Parameters
+    ----------
+    images : Blender's images (`bpy.data.images`): each with `name`, `packed_file` (None, or
+        with `data`) and `filepath`.
+    absolute : Blender's path → an absolute path (`bpy.path.abspath`).
+
+    Returns
+    -------
+    [(image, its problem in one line)].
+    """
+    found = []
+    for image in images:
+        packed = getattr(image, "packed_file", None)
+        try:
+            if packed is not None:
+                data = bytes(packed.data)
+            else:
+                with open(absolute(image.filepath), "rb") as file:
+                    data = file.read()
+        except (OSError, ValueError, TypeError):  # not there: Blender goes on without it
+            continue
+        try:
+            check_image_header(data)
+        except InputError as error:
+            found.append((image, f"{image.name}: {error}"))
+    return found
+
+
+def _blender_export(path: str, glb: str, operator: str | None, name: str,
+                    problems: list) -> None:
     import bpy  # optional: the `blender` extra
 
     try:
@@ -199,6 +249,9 @@ def _blender_export(path: str, glb: str, operator: str | None, name: str) -> Non
             if not importer.poll():
                 raise RuntimeError(f"this Blender ({bpy.app.version_string}) has no importer")
             importer(filepath=path)
+        for image, problem in large_images(list(bpy.data.images), bpy.path.abspath):
+            problems.append(problem)
+            bpy.data.images.remove(image)  # before the exporter decodes it
         bpy.ops.export_scene.gltf(filepath=glb, export_format="GLB", export_animations=False)
     except Exception as error:  # noqa: BLE001 - Blender raises RuntimeError with its report
         raise InputError(f"{name}: Blender could not convert it ({one_line(error, 200)})") \

@@ -46,8 +46,10 @@ def read_model(path: str | os.PathLike, name: str | None = None, warn: bool = Tr
     name = name or os.path.basename(path)
     suffix = suffix_of(path)
     if suffix in CONVERTIBLE:
-        with converted(path, name) as glb:
+        dropped: list[str] = []
+        with converted(path, name, dropped) as glb:
             model = read_gltf(glb, name)
+        model.warnings[:0] = dropped
     elif suffix in GLTF_SUFFIXES:
         model = read_gltf(path, name)
     else:

@@ -6,7 +6,8 @@ A name part is the input's file name without its suffix, reduced to ASCII letter
 only ever separates the three parts and a name is the same on every file system. Inputs of one
 kind whose parts would collide (ignoring case, as macOS and Windows do) are told apart by their
 suffix first (`bunny_obj`, `bunny_ply`), then by their folders (`a_bunny`, `b_bunny`), then by
-their position in the plan (`bunny_2`).
+their position in the plan (`bunny_2`, the first number no other part holds): distinct
+ignoring case by construction.
 """
 
 from __future__ import annotations
@@ -56,6 +57,8 @@ def unique_parts(paths: list[str], fallback: str) -> list[str]:
     -------
     >>> unique_parts(["a/bunny.obj", "a/bunny.ply", "b/cat.obj", "c/cat.obj", "x.obj"], "model")
     ['bunny_obj', 'bunny_ply', 'b_cat', 'c_cat', 'x']
+    >>> unique_parts(["d1/a/b/c/bunny.obj", "d2/a/b/c/bunny.obj", "a_b_c_bunny_2.obj"], "model")
+    ['a_b_c_bunny', 'a_b_c_bunny_3', 'a_b_c_bunny_2']
     """
     def stem(path):
         return safe_part(os.path.splitext(os.path.basename(path))[0], fallback)
@@ -74,11 +77,16 @@ def unique_parts(paths: list[str], fallback: str) -> list[str]:
             return parts
         parts = [rename(path) if index in clashing else part
                  for index, (path, part) in enumerate(zip(paths, parts, strict=True))]
-    seen: dict[str, int] = {}
-    for index, part in enumerate(parts):  # still the same: number them in the plan's order
-        count = seen[part.lower()] = seen.get(part.lower(), 0) + 1
-        if count > 1:
+    # Still the same: numbered in the plan's order, each number checked against every part
+    # taken (`d1/…/bunny`, `d2/…/bunny` and `bunny_2` give bunny, bunny_3, bunny_2).
+    clashing = _clashes(parts)
+    taken = {part.lower() for index, part in enumerate(parts) if index not in clashing}
+    for index in sorted(clashing):
+        part, count = parts[index], 1
+        while parts[index].lower() in taken:
+            count += 1
             parts[index] = f"{part}_{count}"
+        taken.add(parts[index].lower())
     return parts
 
 

@@ -5,7 +5,8 @@ Every problem is one `InputError` naming the plan file and the key ("plan.toml: 
 greater than 0 and at most 240, not 0"): an unknown key, a value of the wrong type or out of
 range (the command line's ranges, through `checks.number`), a glob that matches nothing, a file
 that cannot be read or is of the wrong kind, a mapping file that is not a mapping. Paths are
-relative to the plan's folder.
+relative to the plan's folder. A glob never takes a file the output folder's record lists (a
+rest mesh or a song copy of an earlier run in the inputs' own folder stays an output).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ except ModuleNotFoundError:  # Python 3.10: the same parser, as a package
 
 from eigendance import checks
 from eigendance.batch.names import unique_parts
+from eigendance.batch.record import recorded_files
 from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
@@ -187,6 +189,8 @@ def read_plan(path: str | os.PathLike) -> Plan:
             document = tomllib.load(file)
     except tomllib.TOMLDecodeError as error:
         raise InputError(f"{path}: not a TOML plan ({one_line(error)})") from None
+    except RecursionError:
+        raise InputError(f"{path}: not a TOML plan (nested too deeply)") from None
     except (OSError, UnicodeDecodeError) as error:
         raise InputError(f"{path}: cannot read ({one_line(error)})") from None
     reader = _Reader(path, document)
@@ -207,10 +211,12 @@ class _Reader:
         raise InputError(f"{self.path}: {key} {problem}")
 
     def plan(self) -> Plan:
+        out = self.folder_of("out")
+        self.recorded = recorded_files(out) if os.path.isdir(out) else set()
         outputs = self.outputs()
         items = self.items()
         songs = self.songs(outputs)
-        plan = Plan(self.path, self.folder_of("out"), self.models(), songs, items, outputs)
+        plan = Plan(self.path, out, self.models(), songs, items, outputs)
         if "size" in self.document:
             plan.size = self.size()
         plan.fps = self.number("fps", 30.0, *FPS, above=True)
@@ -235,14 +241,18 @@ class _Reader:
         if not isinstance(value, list) or not value or \
                 not all(isinstance(entry, str) and entry for entry in value):
             self.fail(key, f"must be a non-empty list of strings, not {checks.shown(value)}")
+        if any("\0" in entry for entry in value):
+            self.fail(key, "holds a NUL character, which no path may hold")
         return value
 
     def files(self, key: str, pattern: str) -> list[str]:
-        """The files a pattern names (a glob, or one file), sorted, absolute."""
+        """The files a pattern names (a glob, or one file), sorted, absolute; a glob never takes
+        what a batch wrote in the output folder (`record.recorded_files`)."""
         full = os.path.join(self.folder, os.path.expanduser(pattern))
         if glob.has_magic(pattern):
             found = sorted(found for found in glob.glob(full, recursive=True)
-                           if os.path.isfile(found))
+                           if os.path.isfile(found) and
+                           os.path.normpath(os.path.abspath(found)) not in self.recorded)
             if not found:
                 self.fail(key, f"{pattern!r} matches no file")
         else:
@@ -345,7 +355,7 @@ class _Reader:
         value = self.document.get(key)
         if value is None and not required:
             return None
-        if not isinstance(value, str) or not value:
+        if not isinstance(value, str) or not value or "\0" in value:
             self.fail(key, f"must be a folder's path, not {checks.shown(value)}")
         folder = os.path.normpath(os.path.join(self.folder, os.path.expanduser(value)))
         if os.path.exists(folder) and not os.path.isdir(folder):

@@ -24,8 +24,8 @@ import fcntl
 import json
 import os
 
-from eigendance.batch.content import file_digest
 from eigendance.errors import InputError
+from eigendance.files import file_digest  # noqa: F401 - the record's content key
 from eigendance.writes import atomic_write
 
 RECORD, REPORT = "batch-record.jsonl", "batch-report.jsonl"
@@ -74,9 +74,28 @@ class Record:
             self._lock = None
             raise InputError(f"{self.out}: another batch is writing there; wait for it or "
                              "give another out folder") from None
-        self.entries = read_entries(os.path.join(self.out, RECORD))
-        self._journal = open(os.path.join(self.out, RECORD), "a", encoding="utf-8")
+        try:
+            self._open_journal()
+        except BaseException:
+            os.close(self._lock)
+            self._lock = None
+            raise
         return self
+
+    def _open_journal(self) -> None:
+        """Read the record and open it for appending: never through a link (a planted one would
+        get our lines appended to its target), nor a report that is one."""
+        for name in (RECORD, REPORT):
+            if os.path.islink(os.path.join(self.out, name)):
+                raise InputError(f"{os.path.join(self.out, name)}: is a link; a batch writes its "
+                                 "record and report only as files of their own: remove it")
+        path = os.path.join(self.out, RECORD)
+        self.entries = read_entries(path)
+        flags = os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0)
+        try:
+            self._journal = os.fdopen(os.open(path, flags, 0o644), "a", encoding="utf-8")
+        except OSError as error:
+            raise InputError(f"{path}: cannot write the record ({error.strerror})") from None
 
     def __exit__(self, *exception) -> None:
         try:
@@ -169,6 +188,26 @@ class Record:
                        for entry in self.entries.values())
         atomic_write(os.path.join(self.out, RECORD), lambda file: file.write(text.encode()),
                      alone=True)
+
+
+def recorded_files(out: str) -> set[str]:
+    """The files of `out` that a batch wrote or claimed (any recorded output's files), with the
+    record and the report themselves: what a plan's globs never take as inputs.
+
+    Parameters
+    ----------
+    out : the output folder.
+
+    Returns
+    -------
+    set of normalized absolute paths.
+    """
+    path = os.path.join(out, RECORD)
+    names = {RECORD, REPORT}
+    if not os.path.islink(path):
+        for entry in read_entries(path).values():
+            names.update(name for name in entry["files"] if isinstance(name, str))
+    return {os.path.normpath(os.path.join(os.path.abspath(out), name)) for name in names}
 
 
 def read_entries(path: str) -> dict[str, dict]:

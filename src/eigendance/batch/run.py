@@ -1,7 +1,8 @@
 """The driver of a batch: what is left to make, the tasks in order, the record and the report
 (docs/design.md#batch).
 
-`run_plan` hashes the inputs (`content`), finds the outputs the record already holds complete,
+`run_plan` refuses a plan whose outputs would collide or replace an input (`outputs`), hashes
+the inputs (`content`), finds the outputs the record already holds complete,
 refuses to overwrite files it did not write (unless forced), then runs the rest on an engine:
 each model prepared once (its basis or rig), each song once per band count (its spectrogram),
 each (model, song) gallery once, then the jobs, each as soon as its inputs are ready — songs in
@@ -27,6 +28,7 @@ from eigendance.batch.content import (
     output_key,
 )
 from eigendance.batch.engines import Task
+from eigendance.batch.outputs import check_outputs, written_names
 from eigendance.batch.plan import FORMATS, Job, Plan
 from eigendance.batch.record import Record, write_report
 from eigendance.errors import InputError
@@ -146,27 +148,6 @@ def pending_jobs(plan: Plan, record: Record, found: dict[str, str]) -> list[Pend
     return result
 
 
-def written_names(job: Job, format: str) -> list[str]:
-    """The names an output of a job writes in the output folder: its file, the song beside an
-    export, a point cache's rest mesh.
-
-    Parameters
-    ----------
-    job : the job.
-    format : one of FORMATS.
-
-    Returns
-    -------
-    list of file names, the output's first.
-    """
-    names = [job.stem + FORMATS[format]]
-    if format in ("glb", "pc2", "usd"):
-        names.append(job.stem + os.path.splitext(job.song.path)[1].lower())
-    if format == "pc2":
-        names.append(job.stem + ".obj")
-    return names
-
-
 def check_foreign(plan: Plan, pending: list[Pending], record: Record, force: bool) -> None:
     """InputError, before any work, for a file in the way of an output that no batch wrote
     there (unless `force`).
@@ -206,6 +187,7 @@ def run_plan(plan: Plan, engine_factory, observer, force: bool = False,
     """
     began = time.perf_counter()
     outcome = Outcome()
+    check_outputs(plan)  # no two outputs of one name, none over an input, --force or not
     found = digests(plan)
     with Record(plan.out) as record:
         pending = pending_jobs(plan, record, found)

@@ -8,7 +8,9 @@ every array is a read-only view of pages the system shares among all the process
 the file: a basis is read from disk once per machine, not once per worker.
 
 The files live in a folder private to the run (`Store`), removed when the batch ends; only the
-batch's own processes read them.
+batch's own processes read them. The run holds the folder's lock (`writes.locked_folder`, as a
+server holds its library's), so the folder of a killed batch driver — every prepared basis, rig
+and spectrogram — is swept by the next batch to start.
 """
 
 from __future__ import annotations
@@ -19,13 +21,13 @@ import os
 import pickle
 import shutil
 import struct
-import tempfile
 
-from eigendance.writes import atomic_write
+from eigendance.writes import atomic_write, locked_folder, sweep_locked_folders
 
 ALIGN = 64
 HEADER = struct.Struct("<8sQQ")  # magic, pickle length, buffer count
 MAGIC = b"EDSHARE1"
+STORE_PREFIX = "eigendance-batch-"
 
 
 def save(obj, path: str) -> str:
@@ -100,7 +102,8 @@ class Store:
     """
 
     def __init__(self, parent: str | None = None):
-        self.folder = tempfile.mkdtemp(prefix="eigendance-batch-", dir=parent)
+        sweep_locked_folders(STORE_PREFIX, parent)  # the stores of killed batches
+        self.folder, self._lock = locked_folder(STORE_PREFIX, parent)
         self._count = 0
 
     def put(self, obj) -> str:
@@ -131,5 +134,8 @@ class Store:
         return os.path.join(self.folder, name + ".shared")
 
     def close(self) -> None:
-        """Remove the folder and everything in it."""
+        """Remove the folder and everything in it, then drop its lock."""
         shutil.rmtree(self.folder, ignore_errors=True)
+        if self._lock is not None:
+            os.close(self._lock)
+            self._lock = None

@@ -23,7 +23,7 @@ from starlette.responses import HTMLResponse, JSONResponse
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
-from eigendance.errors import InputError, one_line
+from eigendance.errors import InputError, disk_full, one_line
 from eigendance.server.export_route import download_export, export_clip
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library
@@ -148,6 +148,25 @@ async def on_input_error(request: Request, problem: InputError):
     return error_response(request, problem.status, str(problem))
 
 
+async def on_os_error(request: Request, problem: OSError):
+    """A full disk (or quota) under the library as one line of JSON, 507; any other OSError
+    goes on to the guard (500, one line).
+
+    Parameters
+    ----------
+    request : the request that failed.
+    problem : the exception.
+
+    Returns
+    -------
+    JSONResponse 507.
+    """
+    if not disk_full(problem):
+        raise problem
+    return error_response(request, 507, "the library's disk is full (no space left for the "
+                                        "file); free some space or remove items")
+
+
 API_ROUTES = [
     Route("/api/config", get_config),
     Route("/api/library", get_library),
@@ -200,7 +219,8 @@ def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = No
         Route("/", no_front_end)
     app = Starlette(routes=[*API_ROUTES, front_end],
                     middleware=[Middleware(Guard, host=host, port=port, scrub=library.public)],
-                    exception_handlers={HTTPException: on_http_error, InputError: on_input_error})
+                    exception_handlers={HTTPException: on_http_error, InputError: on_input_error,
+                                        OSError: on_os_error})
     app.state.library = library
     app.state.uploads = asyncio.Semaphore(UPLOADS_AT_ONCE)
     return app

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import os
+import shutil
 import threading
 
 from starlette.exceptions import HTTPException
@@ -105,6 +106,18 @@ def _remove(path: str) -> None:
         pass
 
 
+def _own_link(path: str, link: str) -> str:
+    """A second name of `path` (a hard link; a copy where links fail), held by one export."""
+    try:
+        try:
+            os.link(path, link)
+        except OSError:
+            shutil.copyfile(path, link)
+    except OSError as error:
+        raise HTTPException(409, f"the song's file cannot be read ({error.strerror})") from None
+    return link
+
+
 def exports_of(request: Request) -> Exports:
     """The app's `Exports` (made on first use).
 
@@ -133,7 +146,8 @@ def _number(body: dict, key: str, default: float | None, low: float, high: float
 def _size(body: dict) -> tuple[int, int]:
     text = body.get("size", DEFAULT_SIZE)
     parts = text.lower().split("x") if isinstance(text, str) else []
-    if len(parts) != 2 or not all(part.isdigit() for part in parts):
+    # ASCII digits only: str.isdigit() also takes '²' (which int() refuses) and full-width ones.
+    if len(parts) != 2 or not all(part.isascii() and part.isdigit() for part in parts):
         raise HTTPException(400, "size must be WIDTHxHEIGHT in pixels, e.g. 1280x720")
     width, height = int(parts[0]), int(parts[1])
     check_size(width, height)
@@ -163,7 +177,7 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
         raise HTTPException(400, "expected a JSON object {mesh or rig, song, mapping, format, "
                                  "start, duration}")
     format = body.get("format", "mp4")
-    if format not in FORMATS:
+    if not isinstance(format, str) or format not in FORMATS:
         raise HTTPException(400, f"format must be one of {', '.join(FORMATS)}")
     window = Window.of(_number(body, "start", 0.0, 0.0, 1e6),
                        _number(body, "duration", 15.0, 0.01, MAX_SECONDS),
@@ -194,13 +208,27 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
     job = Job(new_id(), "export", max(1, math.ceil(duration * fps)), name=item.name)
     path = os.path.join(library.folder, f"export-{job.id}.{format}")
 
-    def work(progress):
-        if format == "mp4":
-            render_video(path, [dance], [look], song.path, fps, size, progress=progress)
-        else:
-            export_dance(dance, path, "glb", fps, progress=progress)
+    # The song's file as the export began: a link of its own, so that removing the song from
+    # the library while ffmpeg reads it does not fail the export.
+    sound = _own_link(song.path, f"{path}-song{os.path.splitext(song.path)[1]}") \
+        if format == "mp4" else None
 
-    exports_of(request).start(job, work, path, FORMATS[format])
+    def work(progress):
+        try:
+            if format == "mp4":
+                render_video(path, [dance], [look], sound, fps, size, progress=progress)
+            else:
+                export_dance(dance, path, "glb", fps, progress=progress)
+        finally:
+            if sound is not None:
+                _remove(sound)
+
+    try:
+        exports_of(request).start(job, work, path, FORMATS[format])
+    except HTTPException:
+        if sound is not None:
+            _remove(sound)
+        raise
     return JSONResponse({"job": job.as_json()}, status_code=202)
 
 

@@ -9,7 +9,8 @@ browser only keeps it from reading most answers. So, for every request:
   name resolve to 127.0.0.1 (DNS rebinding) sends its own name and is refused (400).
 - Fetch metadata: a request to ``/api/`` that the browser marks as coming from another site
   (``Sec-Fetch-Site: cross-site`` or ``same-site``: another port or subdomain) is refused
-  (403), reads included (an ``<img>`` or ``<script>`` of another page).
+  (403), reads included (an ``<img>`` or ``<script>`` of another page); so is a comma-joined
+  value naming either (``same-origin, cross-site``).
 - Requests that change the library (any method but GET, HEAD, OPTIONS): an ``Origin`` header,
   where sent, must be this server's own; the content type must not be one a plain HTML form or
   a "simple" cross-origin fetch can send (``text/*``, ``multipart/form-data``,
@@ -211,8 +212,10 @@ def refusal(scope, hosts: Hosts) -> tuple[int, str] | None:
         shown = one_line(host or "(none)", 80)
         return 400, (f"Host '{shown}' is not an address of this server (a page of another "
                      "site reached it through its own name)")
+    # Each value of a comma-joined header counts (what a proxy joining two copies sends).
     site = (header_of(scope, b"sec-fetch-site") or "").lower()
-    if path.startswith("/api/") and site in ("cross-site", "same-site"):
+    sites = {value.strip() for value in site.split(",")}
+    if path.startswith("/api/") and sites & {"cross-site", "same-site"}:
         return 403, "requests from other sites are refused"
     if scope.get("method") in SAFE_METHODS:
         return None

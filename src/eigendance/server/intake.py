@@ -1,15 +1,17 @@
 """Files into the library: meshes, songs, mappings and rigs (docs/design.md#server).
 
-A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind:
-a mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a
-skeleton JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its
-skin cannot be analysed). One
-item per distinct content (`server.contents`): the same bytes again answer the item already
-there. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
+A file given to `serve` (`add_path`) or uploaded (`add_upload`) becomes an item by its kind: a
+mesh (its basis queued), a song (decoded into its spectrogram), a mapping, or a rig (a skeleton
+JSON is a rig, any other JSON a mapping; a skinned glTF is a rig, or a mesh when its skin cannot
+be analysed). One item per distinct content (`server.contents`): the same bytes again answer the
+item already there — unless that item is a mesh whose solve failed (its worker killed, out of
+memory): then the same bytes make a new item, whose solve starts again, and the failed one is
+removed. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
-Files are read and analysed through `run` (`server.analysis` in the server's worker processes;
-songs in the calling worker thread).
+Files are read and analysed through `run` (`server.analysis` in the server's worker processes,
+songs included), each within a deadline proportional to its size (`analysed`); a song's
+spectrogram is charged to the memory budget from its length before it is decoded.
 """
 
 from __future__ import annotations
@@ -30,6 +32,10 @@ from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
 
 UPLOAD_PREFIX = "upload-"
+# An analysis of a file (reading a mesh, a rig or a song) is stopped past ANALYSIS_SECONDS plus
+# a second per ANALYSIS_BYTES_PER_SECOND of the file (a 64 MB upload: 316 s), so that stuck
+# analyses do not hold the upload slots forever (docs/design.md#server).
+ANALYSIS_SECONDS, ANALYSIS_BYTES_PER_SECOND = 60.0, 256 << 10
 # A model's zip may unpack to this many times the upload limit (docs/design.md#server).
 UNPACKED_FACTOR = 4
 
@@ -151,11 +157,21 @@ class Intake:
         suffix = suffix_of(name)
         document = None
         if kind == "mapping" or suffix in (".glb", ".gltf"):
-            kind, document = self.run(analysis.classify, path, name, kind)
+            kind, document = self.analysed(analysis.classify, path, name, kind)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
         if kind == "mapping":
             return self.add_mapping(document, name, origin)
-        existing = self.shelf.contents.claim(key, self.shelf.touched)
+        failed: list[MeshItem] = []  # the same content's mesh whose solve failed: retried
+
+        def usable(item_id):
+            item = self.shelf.touched(item_id)
+            if isinstance(item, MeshItem) and item.job is not None and \
+                    item.job.state == "error":
+                failed.append(item)
+                return None
+            return item
+
+        existing = self.shelf.contents.claim(key, usable)
         if existing is not None:
             return existing, False
         try:
@@ -172,6 +188,11 @@ class Intake:
                 item = self.add_rig(path, name, origin, key)
         finally:
             self.shelf.contents.release(key)
+        for old in failed:  # replaced by the new item (which keeps the stored file)
+            try:
+                self.shelf.remove("mesh", old.id)
+            except InputError:  # removed meanwhile
+                pass
         return item, True
 
     def add_mesh(self, path: str, name: str, k: int | None = None,
@@ -189,7 +210,7 @@ class Intake:
         -------
         MeshItem; EigendanceError when the mesh cannot be read, InputError when it cannot fit.
         """
-        mesh, laplacian = self.run(analysis.read_mesh, path, name)
+        mesh, laplacian = self.analysed(analysis.read_mesh, path, name)
         k = max(2, min(k or self.k, len(mesh.vertices) - 2))
         construction = choose_construction(mesh.n, k) if self.construction == "auto" \
             else self.construction
@@ -214,13 +235,37 @@ class Intake:
         -------
         SongItem; InputError when the audio cannot be decoded or cannot fit.
         """
-        # In this thread: librosa's numba kernels load once per process (about 4 s), which a
-        # worker process would pay for every song.
-        spectrogram, bundle = analysis.read_song(path, name, self.spectrogram_options)
-        item = SongItem(new_id(), name, path, spectrogram, content=content)
-        item.bundle = bundle
-        self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")
+        seconds = self.analysed(analysis.song_seconds, path, name)
+        item_id = new_id()
+        with self.shelf.reserving(item_id, analysis.song_bytes(seconds, self.spectrogram_options),
+                                  f"{name}: the spectrogram of {seconds:.0f} s"):
+            spectrogram, bundle = self.analysed(analysis.read_song, path, name,
+                                                self.spectrogram_options)
+            item = SongItem(item_id, name, path, spectrogram, content=content)
+            item.bundle = bundle
+            self.shelf.admit(item, self.shelf.songs, f"{name}: its spectrogram")
         return item
+
+    def analysed(self, function, path: str, name: str, *rest):
+        """function(path, name, *rest) of `server.analysis` through `run`, within the deadline
+        of the file's size (ANALYSIS_SECONDS, ANALYSIS_BYTES_PER_SECOND).
+
+        Parameters
+        ----------
+        function : a function of `server.analysis` taking a file and its name first.
+        path, name : the file and its name.
+        *rest : its other arguments.
+
+        Returns
+        -------
+        Its result; InputError (422) past the deadline.
+        """
+        try:
+            size = os.path.getsize(path)
+        except OSError:
+            size = 0
+        return self.run(function, path, name, *rest,
+                        seconds=ANALYSIS_SECONDS + size / ANALYSIS_BYTES_PER_SECOND)
 
     def add_mapping(self, data, name: str, origin: str = "upload") -> tuple[MappingItem, bool]:
         """A mapping item from a parsed mapping document.
@@ -261,7 +306,7 @@ class Intake:
         RigItem; InputError when it is not a rig that can be analysed, or cannot fit (its
         planned memory is charged before the analysis: `rigs.planned_bytes`).
         """
-        skeleton = self.run(analysis.read_rig, path, name)
+        skeleton = self.analysed(analysis.read_rig, path, name)
         item = RigItem(new_id(), name, origin, path, content=content)
         with self.shelf.reserving(item.id, rigs.planned_bytes(skeleton),
                                   f"{name}: the analysis of {skeleton.n_bodies} bodies"):

@@ -210,22 +210,48 @@ class Library:
         """
         return self.edit_rig(item, lambda skeleton: item.original)
 
-    def run(self, function, *args):
+    def run(self, function, *args, seconds: float | None = None):
         """function(*args) in a worker process (`workers.run`), unless the library is
-        stopping.
+        stopping; killed past its deadline.
 
         Parameters
         ----------
         function : a function of `server.analysis`.
         *args : its arguments.
+        seconds : its deadline (None: none), counted once its process runs; the message
+            past it names args[1], the file's name for every analysis of a file (path, name, …).
 
         Returns
         -------
-        Its result; InternalError once the library is stopping.
+        Its result; InternalError once the library is stopping; InputError (422) past the
+        deadline.
         """
         if self.stopping.is_set():
             raise InternalError("the server is stopping")
-        return workers.run(function, *args)
+        if seconds is None:
+            return workers.run(function, *args)
+        timers, expired = [], threading.Event()
+
+        def started(process):
+            def expire():
+                expired.set()
+                workers.kill(process)
+
+            timers.append(threading.Timer(seconds, expire))
+            timers[-1].daemon = True
+            timers[-1].start()
+
+        try:
+            return workers.run(function, *args, started=started)
+        except InternalError:
+            if expired.is_set():
+                raise InputError(f"{args[1] if len(args) > 1 else function.__name__}: the "
+                                 f"analysis took more than its {seconds:.0f} s (the deadline "
+                                 "for a file of this size) and was stopped", status=422) from None
+            raise
+        finally:
+            for timer in timers:
+                timer.cancel()
 
     # --- the end --------------------------------------------------------------------------------
     def wait(self, timeout: float | None = None) -> bool:

@@ -23,13 +23,14 @@ from eigendance.server.items import RigItem
 Run = Callable[..., object]
 
 
-def direct(function, *args):
+def direct(function, *args, seconds: float | None = None):
     """function(*args) here, in this thread: the `run` of a caller without worker processes.
 
     Parameters
     ----------
     function : what to call.
     *args : its arguments.
+    seconds : the deadline a worker process would have (here there is none to kill).
 
     Returns
     -------

@@ -15,7 +15,6 @@ import atexit
 import contextlib
 import ctypes
 import errno
-import fcntl
 import os
 import resource
 import shutil
@@ -38,12 +37,11 @@ from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 from eigendance.server.workers import warm
-from eigendance.writes import FRESH_SECONDS
+from eigendance.writes import LOCK_NAME, locked_folder, sweep_locked_folders
 
 DEFAULT_PORT = 8765
 DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
-LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
 # glibc's mallopt parameters (malloc.h) and our values (`return_freed_memory`).
 M_MMAP_THRESHOLD, M_ARENA_MAX = -3, -8
@@ -56,8 +54,8 @@ OPEN_FILES = 4 * MAX_CONNECTIONS + 1024
 # before `Connection` sees them: 2 × MAX_CONNECTIONS descriptors at most, under Linux's
 # customary 1024.)
 
-__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "demo_paths", "library_session", "listen",
-           "run", "terminal_progress"]
+__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "LOCK_NAME", "demo_paths",
+           "library_session", "listen", "run", "terminal_progress"]
 
 
 class _Server(uvicorn.Server):
@@ -237,11 +235,9 @@ def library_session(**options) -> Iterator[Library]:
     Library.
     """
     sweep_library_folders()
-    folder = tempfile.mkdtemp(prefix=FOLDER_PREFIX)
+    folder, lock = locked_folder(FOLDER_PREFIX)
     try:
-        with open(os.path.join(folder, LOCK_NAME), "wb") as lock, \
-                _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        with _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
             library = Library(folder, **options)
             warm()  # the worker processes' fork server loads while the server starts
             try:
@@ -250,12 +246,12 @@ def library_session(**options) -> Iterator[Library]:
                 library.close()
     finally:
         shutil.rmtree(folder, ignore_errors=True)
+        os.close(lock)
 
 
 def sweep_library_folders(parent: str | None = None) -> int:
-    """Remove the library folders that killed servers left. A folder is left alone while its lock
-    is held, when it has no lock file (not ours to judge) and while it is younger than
-    FRESH_SECONDS (its server may be about to take the lock).
+    """Remove the library folders that killed servers left (`writes.sweep_locked_folders`: not
+    while their lock is held, nor without a lock file, nor younger than FRESH_SECONDS).
 
     Parameters
     ----------
@@ -265,24 +261,7 @@ def sweep_library_folders(parent: str | None = None) -> int:
     -------
     int, how many were removed.
     """
-    parent = parent or tempfile.gettempdir()
-    removed = 0
-    try:
-        entries = [entry for entry in os.scandir(parent) if entry.name.startswith(FOLDER_PREFIX)
-                   and entry.is_dir(follow_symlinks=False)]
-    except OSError:
-        return 0
-    for entry in entries:
-        try:
-            if time.time() - entry.stat(follow_symlinks=False).st_mtime < FRESH_SECONDS:
-                continue
-            with open(os.path.join(entry.path, LOCK_NAME), "rb") as lock:
-                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)  # OSError while a server runs
-                shutil.rmtree(entry.path)
-                removed += 1
-        except OSError:
-            continue
-    return removed
+    return sweep_locked_folders(FOLDER_PREFIX, parent)
 
 
 @contextlib.contextmanager

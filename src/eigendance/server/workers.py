@@ -10,9 +10,9 @@ A thread shares the interpreter's lock (the GIL) with the event loop: pure-Pytho
 JSON into dataclasses, trimesh's OBJ parser, a rig's joint graph, `bytes.join` of a bundle)
 makes every request wait, up to 0.8 s at once. The analysis of an added file therefore runs in
 a worker process of its own (`run`, called from a worker thread, which waits without the lock):
-a mesh file read and cleaned, a file's kind found, a rig loaded, analysed and bundled, a basis
-solved. Their results come back through `server.transfer`, without a copy under the lock. A
-song is decoded in a worker thread: librosa's numba kernels load once per process (about 4 s).
+a mesh file read and cleaned, a file's kind found, a rig loaded, analysed and bundled, a song
+decoded (librosa's kernels compiled once, in the fork server: `music.compiled`), a basis
+solved. Their results come back through `server.transfer`, without a copy under the lock.
 """
 
 from __future__ import annotations
