@@ -183,8 +183,9 @@ def linear_blend_skinning(vertices, weights, transforms, normals=None, displacem
     positions = np.einsum("ntij,nj->tni", blended[..., :3], vertices) + \
         blended[..., 3].transpose(1, 0, 2)
     if displacements is not None:
-        positions += np.einsum("ntij,tnj->tni", blended[..., :3],
-                               np.asarray(displacements, dtype=float).reshape(positions.shape))
+        moves = np.asarray(displacements, dtype=float).reshape(positions.shape)
+        positions += np.matmul(blended[..., :3], moves.transpose(1, 0, 2)[..., None])[
+            ..., 0].transpose(1, 0, 2)
     if normals is None:
         return positions
     turned = np.einsum("ntij,nj->tni", blended[..., :3], np.asarray(normals, dtype=float))
