@@ -28,8 +28,8 @@ def test_animate_rig_with_a_surface_plays_what_the_export_plays(tmp_path, capsys
     mapping.save(path)
     output = tmp_path / "fox.npz"
     assert main(["animate-rig", FOX, SONG, "--surface", str(path), "--surface-k", "20",
-                 "--surface-gain", "2", "--skinning", "lbs", "--fps", "10", "-o",
-                 str(output)]) == 0
+                 "--surface-gain", "2", "--skinning", "lbs", "--fps", "10", "--save-mapping",
+                 str(tmp_path / "whole.json"), "-o", str(output)]) == 0
     printed = capsys.readouterr().out
     assert "surface: " in printed and "of the skin's motion" in printed
     mapping.gain = 2.0
@@ -43,6 +43,13 @@ def test_animate_rig_with_a_surface_plays_what_the_export_plays(tmp_path, capsys
     assert np.abs(positions[frames] - expected).max() <= 1e-5 * diagonal
     bones = rig.positions(rig.coefficients(song, rig.mapping(song, None), times[frames]), "lbs")
     assert np.abs(positions[frames] - bones).max() > 1e-3 * diagonal  # the skin ripples
+    # The saved mapping holds both halves: played again without --surface, the same dance.
+    again = tmp_path / "again.npz"
+    assert main(["animate-rig", FOX, SONG, "--mapping", str(tmp_path / "whole.json"),
+                 "--surface-k", "20", "--skinning", "lbs", "--fps", "10", "-o",
+                 str(again)]) == 0
+    with np.load(again) as data:
+        np.testing.assert_allclose(data["positions"], positions, atol=1e-6 * diagonal)
 
 
 def test_export_of_a_rig_with_a_surface_has_morph_targets_under_its_skin(tmp_path):

@@ -106,3 +106,30 @@ def test_a_surface_mapping_of_other_bands_is_refused(gun, song):
     from eigendance.music.mapping import Mapping
     with pytest.raises(EigendanceError, match="bands"):
         SurfaceDance(gun.surface(K, cache=False), song, Mapping(np.zeros(8), np.ones(K)))
+
+
+def test_a_rig_dance_carries_and_breeds_its_surface_genes(tmp_path):
+    """A rig's mapping holds its skin's mapping (`surface`, in the file too); breeding two such
+    dances crosses their surface genes as it crosses any mapping's (the same draws as breeding
+    the two surface mappings alone), and a parent without them passes none."""
+    from eigendance.music.breeding import SURFACE_STREAM, breed
+    from eigendance.music.mapping import Mapping
+
+    ripple_a = Mapping(np.linspace(0, 0.5, 8), np.ones(6), name="a")
+    ripple_b = Mapping(np.linspace(0.5, 1, 8), -np.ones(6), name="b")
+    first = Mapping(np.linspace(0, 1, 8), np.ones(3), name="one", surface=ripple_a)
+    second = Mapping(np.linspace(1, 0, 8), np.ones(3), name="two", surface=ripple_b, gain=2.0)
+    first.save(tmp_path / "one.json")
+    assert Mapping.load(tmp_path / "one.json").surface.transfer.tolist() == \
+        ripple_a.transfer.tolist()
+    children = breed([first, second], 4, seed=5)
+    for index, child in enumerate(children):  # parents i, j in the order the child drew them
+        pair = [ripple_a, ripple_b] if child.gain == 1.0 else [ripple_b, ripple_a]
+        alone = breed(pair, 1, 5 + SURFACE_STREAM + index)[0]
+        assert child.surface.transfer.tolist() == alone.transfer.tolist()
+        assert child.surface.amplification.tolist() == alone.amplification.tolist()
+    plain = Mapping(np.linspace(1, 0, 8), np.ones(3), name="plain")
+    assert all(child.surface is None or child.surface == ripple_a
+               for child in breed([first, plain], 6, seed=2))
+    with pytest.raises(EigendanceError, match="surface of its own"):
+        Mapping(np.zeros(8), np.ones(3), surface=first)

@@ -243,26 +243,28 @@ def _dance(job: dict, model, spectrogram, mapping):
     if isinstance(model, Rig):
         mapping = model.mapping(spectrogram, mapping)
         dance = rig_dance(model, spectrogram, mapping, "modal", job["song"], job["stem"],
-                          surface=job_surface(job, model, spectrogram))
+                          surface=job_surface(job, model, spectrogram, mapping))
     else:
         dance = HarmonicDance(model, spectrogram, mapping, job["song"], job["stem"])
     return dance.window(job["start"], job["duration"])
 
 
-def job_surface(job: dict, rig: Rig, spectrogram) -> SurfaceDance | None:
-    """The rig's rippling skin a job asks for (the plan's `surface`), or None.
+def job_surface(job: dict, rig: Rig, spectrogram, mapping=None) -> SurfaceDance | None:
+    """The rig's rippling skin a job asks for (the plan's `surface`, else the surface genes of
+    its mapping), or None.
 
     Parameters
     ----------
     job : the job's description ("surface": a Mapping, "auto" or None).
     rig : the rig.
     spectrogram : the song (the surface mapping must have its bands).
+    mapping : the job's mapping (its `surface` genes), or None.
 
     Returns
     -------
     SurfaceDance or None.
     """
-    surface = job.get("surface")
+    surface = job.get("surface") or (None if mapping is None else mapping.surface)
     if surface is None:
         return None
     harmonics = rig.surface()

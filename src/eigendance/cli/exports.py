@@ -131,7 +131,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
                               amplitude=args.amplitude, time_scale=args.time_scale,
                               offset=args.offset)
         dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name,
-                          surface=surface_of(args, rig, spectrogram))
+                          surface=surface_of(args, rig, spectrogram, mapping))
     else:
         if getattr(args, "surface", None):
             raise InputError("--surface ripples a rig's skin; a mesh ripples in its "

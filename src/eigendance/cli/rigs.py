@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import sys
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -178,7 +179,7 @@ def run_animate_rig(args) -> None:
     palette = rig.palette_of(mapping)
     check_rig_animation(rig, len(times), args.output)
     coefficients = rig.coefficients(spectrogram, mapping, window.start + times)
-    surface = surface_of(args, rig, spectrogram)
+    surface = surface_of(args, rig, spectrogram, mapping)
     ripple = None if surface is None else \
         (lambda first, stop: surface.displacements(window.start + times[first:stop]))
     bar, update = progress_bar(len(times), "frames", unit="frame")
@@ -186,8 +187,9 @@ def run_animate_rig(args) -> None:
         arrays = rig.animation(times, coefficients, palette, args.skinning, progress=update,
                                surface=ripple)
     save_animation(args.output, arrays)
-    if args.save_mapping:
-        mapping.save(args.save_mapping)
+    if args.save_mapping:  # with the surface genes that played
+        replace(mapping, surface=None if surface is None else surface.mapping).save(
+            args.save_mapping)
     scaled = model.frequencies[palette.selected] * palette.time_scale
     print(f"{args.output}: {len(times)} frames at {args.fps:g} fps, "
           f"{len(skeleton.vertices)} vertices, {skeleton.n_bodies} bodies, modes "

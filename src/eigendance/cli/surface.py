@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from eigendance.cli.options import number, spectrogram_from
 from eigendance.errors import InputError
 from eigendance.modal.rig import Rig
@@ -32,29 +34,35 @@ def add_surface_options(parser) -> None:
                         help=f"harmonics of the rig's skin (default {SURFACE_K})")
 
 
-def surface_of(args, rig: Rig, spectrogram: Spectrogram | None) -> SurfaceDance | None:
-    """The skin's ripple the command line asks for, or None without --surface.
+def surface_of(args, rig: Rig, spectrogram: Spectrogram | None,
+               dance: Mapping | None = None) -> SurfaceDance | None:
+    """The skin's ripple the command line asks for: --surface, else the surface genes of the
+    rig's mapping (`Mapping.surface`); None without either.
 
     Parameters
     ----------
     args : the parsed command line (surface, surface_gain, surface_k, audio).
     rig : the rig.
     spectrogram : the song the bones dance to (its bands serve a mapping of as many), or None.
+    dance : the rig's mapping (its surface genes play unless --surface is given), or None.
 
     Returns
     -------
     SurfaceDance or None; InputError without a song.
     """
-    if not getattr(args, "surface", None):
+    genes = None if dance is None else dance.surface
+    if not getattr(args, "surface", None) and genes is None:
         return None
     if spectrogram is None or not getattr(args, "audio", None):
         raise InputError("--surface needs a song (AUDIO): the surface mapping plays its bands")
     harmonics = rig.surface(args.surface_k)
-    if args.surface == AUTO:
+    if not getattr(args, "surface", None):
+        mapping = replace(genes)
+    elif args.surface == AUTO:
         mapping = strongest_item(harmonics.basis, spectrogram)
     else:
         mapping = Mapping.load(args.surface)
-        if mapping.bands != spectrogram.bands:
-            spectrogram = spectrogram_from(args.audio, mapping.bands)
+    if mapping.bands != spectrogram.bands:
+        spectrogram = spectrogram_from(args.audio, mapping.bands)
     mapping.gain *= args.surface_gain
     return SurfaceDance(harmonics, spectrogram, mapping)
