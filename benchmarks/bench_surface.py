@@ -10,10 +10,12 @@ harmonics while its bones sway. For every shared rig, on a real song:
 4. the cost per frame of the skin's positions (modal skinning, as `render` and `animate-rig` ask
    them; linear blend skinning, as the glb plays) with and without the surface, and of
    `render` (the video, 640×360, frames + encoding), with and without the surface, in the same
-   run.
+   run;
+5. with --page: the page's rig player (headless Chromium, `browser_surface.py`): ms per frame
+   with the surface off and on.
 
     EIGENDANCE_SHARED_DATA=/work/shared/data python benchmarks/bench_surface.py
-        [--song kevin_macleod_vibe_ace.ogg] [--frames 120] [--seconds 8] [--no-render]
+        [--song kevin_macleod_vibe_ace.ogg] [--frames 120] [--seconds 8] [--no-render] [--page]
 """
 
 from __future__ import annotations
@@ -116,7 +118,14 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=8.0, help="video length for render")
     parser.add_argument("--no-render", action="store_true")
     parser.add_argument("--rigs", nargs="*", default=RIGS)
+    parser.add_argument("--page", action="store_true", help="only the page's player")
     args = parser.parse_args()
+    if args.page:
+        from browser_surface import player_ms
+
+        for name, value in player_ms([shared_path("rigged", r) for r in args.rigs]).items():
+            print(f"page {name}: {value}", flush=True)
+        return
 
     from eigendance.music.spectrogram import Spectrogram
 

@@ -63,7 +63,7 @@ export class RigStage {
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
-      reset: () => this.reset() });
+      reset: () => this.reset(), surface: () => this.surface.genes });
     this.motion.surfaceFor = () => this.player.prepared;
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
       guard: events.guard, play: (surface) => this.playSurface(surface) });

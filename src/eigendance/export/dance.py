@@ -382,8 +382,7 @@ class HarmonicDance(Dance):
         -------
         (J,) int64, J ≤ B.
         """
-        targets = np.unique(self.mapping.harmonic_indices(self.basis.k))
-        return targets[self.mapping.amplification_for(self.basis.k)[targets] != 0]
+        return self.mapping.driven(self.basis.k)
 
     def morphs(self, times) -> Morphs:
         """The motion at `times` as morph targets (exact: X_φ is linear in φ).

@@ -167,9 +167,7 @@ class SurfaceDance:
         -------
         (J,) int64, ascending.
         """
-        k = self.harmonics.k
-        targets = np.unique(self.mapping.harmonic_indices(k))
-        return targets[self.mapping.amplification_for(k)[targets] != 0]
+        return self.mapping.driven(self.harmonics.k)
 
     def displacements(self, times) -> np.ndarray:
         """The bind-pose ripple d(t) (T, n, 3) at song times.

@@ -210,6 +210,21 @@ class Mapping:
         """
         return harmonic_indices(self.transfer, k)
 
+    def driven(self, k: int) -> np.ndarray:
+        """The targets the mapping moves: ν(ξ) of some band with a non-zero amplification
+        (every other φ_ν stays at the offset), ascending.
+
+        Parameters
+        ----------
+        k : the targets.
+
+        Returns
+        -------
+        (J,) int64, J ≤ B.
+        """
+        targets = np.unique(self.harmonic_indices(k))
+        return targets[self.amplification_for(k)[targets] != 0]
+
     def amplification_for(self, k: int) -> np.ndarray:
         """The amplification resampled to k targets, times the gain.
 
