@@ -133,3 +133,21 @@ def test_a_rig_dance_carries_and_breeds_its_surface_genes(tmp_path):
                for child in breed([first, plain], 6, seed=2))
     with pytest.raises(EigendanceError, match="surface of its own"):
         Mapping(np.zeros(8), np.ones(3), surface=first)
+
+
+def test_the_videos_frames_carry_the_ripple_with_the_moved_skins_normals(gun, song):
+    """What `render` draws (`RigDance.frames`, modal skinning): the positions of
+    `Rig.positions(c, "modal", surface=d)` and unit normals of the moved skin."""
+    from eigendance.export.dance import rig_dance
+    from eigendance.geometry import vertex_normals
+
+    ripple = surface_dance(gun, song, 2)
+    dance = rig_dance(gun, song, None, "modal", surface=ripple).window(5.0, 2.0)
+    times = np.array([0.0, 0.5, 1.5])
+    (first, positions, normals), = list(dance.frames(times))
+    c = dance.pose(times)[1]
+    expected = gun.positions(c, "modal", surface=ripple.displacements(5.0 + times))
+    np.testing.assert_allclose(positions, expected, atol=1e-5 * ripple.harmonics.basis.scale)
+    np.testing.assert_allclose(normals[1], vertex_normals(positions[1], gun.skeleton.faces,
+                                                          [0.0, 0, 1]), atol=1e-5)
+    assert first == 0
