@@ -4,13 +4,13 @@ as the page's positions pass reads them, and a gallery of surface dances on a so
 from __future__ import annotations
 
 import numpy as np
-from starlette.exceptions import HTTPException
 from starlette.requests import Request
 
-from eigendance.music.gallery import DEFAULT_GALLERY, initial_gallery
+from eigendance.music.gallery import initial_gallery
 from eigendance.server.binary import pack, packed_harmonics
-from eigendance.server.lookup import bundle_response, item_of, library_of, ready_rig, song_of
-from eigendance.server.requests import answer, gallery_size, json_body
+from eigendance.server.lookup import bundle_response, ready_rig
+from eigendance.server.requests import answer
+from eigendance.server.rig_routes import gallery_inputs
 from eigendance.server.workers import in_worker
 
 
@@ -68,14 +68,7 @@ async def rig_surface_gallery(request: Request):
     -------
     JSON response {"mappings": [size mapping documents]}.
     """
-    body = await json_body(request)
-    if not isinstance(body, dict):
-        raise HTTPException(400, "expected a JSON object {rig, song, size}")
-    library = library_of(request)
-    item = item_of(request, "rig", body.get("rig"))
-    song = song_of(request, str(body.get("song")))
-    size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    await in_worker(library.ready_rig, item)
+    item, song, size = await gallery_inputs(request)
     rig = item.rig
 
     def make():
