@@ -17,7 +17,7 @@ from web_helpers import open_app
 from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
-from eigendance.modal.surface import SurfaceDance
+from eigendance.modal.surface import SurfaceDance, surface_share
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
@@ -58,6 +58,13 @@ def test_the_surface_ripples_the_skin_on_the_gpu_as_python_does(page, live_serve
             shown = np.array(page.evaluate(f"window.eigendance.rig.{path}('player', {t})"))
             np.testing.assert_allclose(shown.reshape(-1, 3), expected[i], atol=1e-4 * diagonal)
     assert np.abs(expected - bones).max() > 1e-3 * diagonal  # it ripples
+    # The share shown beside the gain: `surface_share` over 16 moments spread over the song.
+    moments = (np.arange(16) + 0.5) * song.duration / 16
+    still = rig.skin.positions(rig_coefficients(rig.model, song, mapping, moments))
+    share = surface_share(still, still + ripple.displacements(moments), rig.skeleton.vertices)
+    shown = page.evaluate("document.getElementById('rig-surface-share').textContent")
+    assert shown.endswith("% of the motion") and 0 < share < 1, shown
+    assert abs(int(shown.split("%")[0]) - 100 * share) <= 1, (shown, share)  # float32, rounding
     page.evaluate(SWITCH, False)
     page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
     back = np.array(page.evaluate(f"window.eigendance.rig.readPositions('player', {TIMES[1]})"))

@@ -13,6 +13,8 @@ export interface RigSurfaceEvents {
   /** draw the rig with this surface (null: the modal skin alone) */
   play(surface: SurfacePlay | null): void;
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the surface's share of the player's motion (null: off) */
+  share(): number | null;
 }
 
 export class RigSurfaceView {
@@ -31,6 +33,7 @@ export class RigSurfaceView {
     gain.addEventListener("input", () => {
       $("rig-surface-gain-out").textContent = `${Number(gain.value).toFixed(2)}×`;
       if (this.current) this.current.gain = Number(gain.value);
+      this.showShare();
     });
   }
 
@@ -43,6 +46,7 @@ export class RigSurfaceView {
     this.current = null;
     $<HTMLInputElement>("rig-surface").checked = false;
     this.enable(false);
+    $("rig-surface-share").textContent = "";
   }
 
   /** A new song: the surface dances are calibrated on it again. */
@@ -56,6 +60,7 @@ export class RigSurfaceView {
       this.current = null;
       this.enable(false);
       this.events.play(null);
+      this.showShare();
       return;
     }
     this.surface ??= await rigSurface(rig.id);
@@ -75,6 +80,14 @@ export class RigSurfaceView {
     this.current = new SurfacePlay(this.surface, this.dances[index],
       Number($<HTMLInputElement>("rig-surface-gain").value));
     this.events.play(this.current);
+    this.showShare();
+  }
+
+  /** The surface's share of the motion beside its gain (`modal.surface.surface_share`). */
+  showShare(): void {
+    const share = this.current ? this.events.share() : null;
+    $("rig-surface-share").textContent = share === null ? ""
+      : `${Math.round(100 * share)}% of the motion`;
   }
 
   private enable(on: boolean): void {

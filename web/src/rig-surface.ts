@@ -6,7 +6,7 @@
 import * as api from "./api";
 import type { Basis } from "./bundle";
 import { parseBundle } from "./bundle";
-import { filterValues, prepare } from "./filter";
+import { deformCPU, filterValues, prepare } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import type { Motion } from "./motion";
 import type { Rig } from "./rig-bundle";
@@ -93,4 +93,20 @@ export class SurfacePlay {
   genes(): Mapping {
     return { ...this.mapping, gain: (this.mapping.gain ?? 1) * this.gain } as Mapping;
   }
+}
+
+/** The surface's share of the motion (`modal.surface.surface_share`): RMS over `times` and the
+ * vertices of (whole − bones) over that of (whole − rest), from the CPU path. `weights(t, on)`
+ * gives the pass's weights with the surface on or off. */
+export function surfaceShare(basis: Basis, times: number[],
+                             weights: (t: number, on: boolean) => Float32Array): number {
+  let moved = 0, ripple = 0;
+  for (const t of times) {
+    const whole = deformCPU(basis, weights(t, true)), bones = deformCPU(basis, weights(t, false));
+    for (let i = 0; i < whole.length; i++) {
+      moved += (whole[i] - basis.vertices[i]) ** 2;
+      ripple += (whole[i] - bones[i]) ** 2;
+    }
+  }
+  return moved > 0 ? Math.sqrt(ripple / moved) : 0;
 }

@@ -8,13 +8,13 @@ import { loadAppearance } from "./look";
 import type { Appearance } from "./look";
 import type { Mapping } from "./filter";
 import { RigFigure } from "./bones";
-import { RigMotion, bodyMatrices } from "./modal-skin";
+import { RigMotion, bodyMatrices, modalWeights } from "./modal-skin";
 import type { Motion } from "./motion";
 import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
 import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
-import { surfaceBasis } from "./rig-surface";
+import { surfaceBasis, surfaceShare } from "./rig-surface";
 import type { SurfacePlay } from "./rig-surface";
 import { RigSurfaceView } from "./rig-surface-view";
 import type { Clock } from "./transport";
@@ -66,7 +66,8 @@ export class RigStage {
       reset: () => this.reset(), surface: () => this.surface.genes });
     this.motion.surfaceFor = () => this.player.prepared;
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
-      guard: events.guard, play: (surface) => this.playSurface(surface) });
+      guard: events.guard, play: (surface) => this.playSurface(surface),
+      share: () => this.surfaceShare() });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
@@ -208,6 +209,26 @@ export class RigStage {
       this.viewer.setPath(this.viewer.path);
     }
     this.viewer.requestDraw();
+  }
+
+  /** The surface's share of the player's motion, over 16 moments spread over the song (null:
+   * no surface or no song). */
+  surfaceShare(): number | null {
+    const prepared = this.player.prepared, deformer = this.viewer.deformer;
+    const spectrum = this.motion.music.spectrum;
+    if (!this.motion.surface || !prepared || !deformer || !spectrum) return null;
+    const times = [...Array(16).keys()].map((i) => (i + 0.5) * spectrum.duration / 16);
+    const surface = this.motion.surface;
+    return surfaceShare(deformer.basis, times, (t, on) => {
+      this.motion.surface = on ? surface : null;
+      try {
+        return on ? this.motion.weights(prepared, t)
+          : modalWeights(this.rig!, this.motion.coefficients(prepared, t),
+            new Float32Array(12 * deformer.basis.k4));
+      } finally {
+        this.motion.surface = surface;
+      }
+    });
   }
 
   /** An edit answered by a new bundle: the modes are recomputed, gallery and player follow. */
