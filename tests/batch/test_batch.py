@@ -6,9 +6,11 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 from batch_helpers import write_plan
 
 from eigendance.cli.main import main
+from eigendance.music.mapping import Mapping
 
 PLAN = {"models": ["sphere.obj", "loop4"], "songs": ["*.wav"],
         "outputs": ["glb", "npz", "pc2", "mp4"], "gallery": 2, "out": "out", "size": "32x32",
@@ -109,3 +111,25 @@ def test_the_command_line_runs_a_batch_in_a_fresh_process(inputs):
     assert done.returncode == 0, done.stderr
     assert "sphere-a-0: sphere-a-0.glb (" in done.stderr
     assert [line["status"] for line in report(inputs / "out")] == ["done"] * 4
+
+
+def test_a_plans_surface_ripples_the_rigs_skin_as_animate_rig_does(inputs):
+    """`surface = "auto"`: each rig's skin also ripples (docs/design.md#surface-of-a-rig); the
+    animation file holds what `animate-rig --surface auto` writes; meshes are as before."""
+    Mapping(np.linspace(0, 1, 64), np.ones(4), name="sway").save(inputs / "sway.json")
+    settings = {key: value for key, value in PLAN.items() if key != "gallery"}
+    plan = write_plan(str(inputs), **{**settings, "models": ["loop4"], "songs": ["b.wav"],
+                                      "outputs": ["npz", "glb"], "mappings": ["sway.json"],
+                                      "surface": "auto"})
+    out = inputs / "out"
+    assert main(["batch", plan, "-j", "1"]) == 0
+    here = inputs / "by-hand.npz"
+    assert main(["animate-rig", "loop4", str(inputs / "b.wav"), "--fps", "10", "--mapping",
+                 str(inputs / "sway.json"), "--surface", "auto", "-o", str(here)]) == 0
+    with np.load(here) as made, np.load(out / "loop4-b-sway.npz") as batch:
+        np.testing.assert_allclose(batch["positions"], made["positions"], atol=1e-6)
+    plain = inputs / "plain.npz"
+    assert main(["animate-rig", "loop4", str(inputs / "b.wav"), "--fps", "10", "--mapping",
+                 str(inputs / "sway.json"), "-o", str(plain)]) == 0
+    with np.load(plain) as still, np.load(here) as rippled:
+        assert np.abs(still["positions"] - rippled["positions"]).max() > 1e-3

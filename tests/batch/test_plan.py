@@ -48,6 +48,9 @@ BAD = [  # (what changes, the key the message must name)
     ({"out": "sphere.obj"}, "out"),
     ({"out": 3}, "out"),
     ({"cache": "a.wav"}, "cache"),
+    ({"surface": "bad.json"}, "surface"),
+    ({"surface": 3}, "surface"),
+    ({"surface": "none/*.json"}, "surface"),
 ]
 
 

@@ -6,9 +6,10 @@ import numpy as np
 import pytest
 from export_helpers import LONG_SONG, SONG, rig
 
-from eigendance.export.dance import HarmonicDance
+from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.modal.surface import SurfaceDance
 from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.spectrogram import Spectrogram
 from helpers import bumpy_sphere, fixture_path
@@ -105,3 +106,19 @@ def gun_lbs(long_song):
 def gun_modal(long_song):
     return rig(fixture_path("rigged", "quaternius_Character_Gun.glb"), "modal", long_song,
                audio=LONG_SONG)
+
+
+@pytest.fixture(scope="session")
+def gun_surface(long_song):
+    """The gun rig on the 21 s song with its skin rippling too (docs/design.md#surface-of-a-rig):
+    gallery item 2 of the skin's harmonics with amplifications of alternating sign at gain 4,
+    so that the surface's morph weights go below 0 and above 1 under the skin."""
+    dance = rig(fixture_path("rigged", "quaternius_Character_Gun.glb"), "lbs", long_song,
+                audio=LONG_SONG)
+    harmonics = dance.rig.surface(40, cache=False)
+    item = initial_gallery(harmonics.basis, long_song, 4)[2]
+    signs = np.where(np.arange(len(item.amplification)) % 2, -1.0, 1.0)
+    mapping = item.with_genes(item.transfer, item.amplification * signs, item.seed, "ripple")
+    mapping.gain = 4.0
+    return rig_dance(dance.rig, long_song, dance.rig.mapping(long_song, None), "lbs", LONG_SONG,
+                     "surface-rig", surface=SurfaceDance(harmonics, long_song, mapping))

@@ -32,14 +32,15 @@ LONG_FPS = 5  # the 21 s song
 
 @pytest.fixture(scope="module")
 def glbs(tmp_path_factory, harmonic, reduced_harmonic, chain_lbs, figure_modal, fox_lbs,
-         cake, gun_lbs):
+         cake, gun_lbs, gun_surface):
     """Every kind of glb the exporter writes: morph targets, and skins of built-in and glTF
     rigs (linear blend and modal skinning), a reduced basis's skin on its samples; with a
     look: the textured, multi-part cake whose morph weights go below 0 and above 1 on a 21 s
     song, a rig with a gun on its hand."""
     folder = tmp_path_factory.mktemp("glbs")
     dances = {"sphere": harmonic, "reduced": reduced_harmonic, "chain": chain_lbs,
-              "figure": figure_modal, "fox": fox_lbs, "cake": cake, "gun": gun_lbs}
+              "figure": figure_modal, "fox": fox_lbs, "cake": cake, "gun": gun_lbs,
+              "surface": gun_surface}
     for name, dance in dances.items():
         export_dance(dance, folder / f"{name}.glb", fps=fps_of(dance))
     return folder, dances
@@ -85,7 +86,8 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
 
 
 @pytest.mark.web
-@pytest.mark.parametrize("name", ["sphere", "reduced", "chain", "figure", "fox", "cake", "gun"])
+@pytest.mark.parametrize("name", ["sphere", "reduced", "chain", "figure", "fox", "cake", "gun",
+                                  "surface"])
 def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromium, name):
     """At three sample times (first, middle, last but one: the mixer loops at the end)."""
     _, dances = glbs
@@ -112,6 +114,8 @@ def test_three_js_plays_the_glb_as_the_reference_moves(glbs, three_page, chromiu
     else:
         expected = dance.blend_positions(np.array(times))  # what a glTF skin plays
         assert result["skinned"]
+        if name == "surface":  # the ripple's morph targets under the skin
+            assert result["targets"] == len(dance.surface.driven())
     expected = dance.drawn(expected)  # drawn vertices, each on its welded vertex
     played = np.array(result["frames"]).reshape(len(times), len(expected[0]), 3)
     check_positions(played, expected, dance.diagonal, 1e-4, f"three.js r{result['revision']}")

@@ -8,6 +8,8 @@ import type { Motion } from "./motion";
 import type { ModeSettings, Rig } from "./rig-bundle";
 import { lockedPhase, lockRatio, paletteOf } from "./palette";
 import { normalising } from "./rig-bundle";
+import { surfaceWeights } from "./rig-surface";
+import type { SurfacePlay } from "./rig-surface";
 
 /** A mode mapping prepared for one rig: the filter over its k′ selected modes (`Prepared`,
  * k = k′) and the resolved palette, targets ν = 0 … k′−1 being the selected modes ascending. */
@@ -144,6 +146,11 @@ export function bodyMatrices(rig: Rig, c: ArrayLike<number>, out?: Float32Array)
  * harmonics' `Motion` holds its spectrum) and the shader weights of modal skinning. */
 export class RigMotion {
   rig: Rig | null = null;
+  /** the skin's ripple (docs/design.md#surface-of-a-rig), drawn with the basis of
+   * `surfaceBasis`; null: off */
+  surface: SurfacePlay | null = null;
+  /** the mapping the surface plays with (the player's) */
+  surfaceFor: () => Prepared | null = () => null;
   private coefficientsBuffer = new Float64Array(0);
 
   constructor(readonly music: Motion) {}
@@ -175,8 +182,17 @@ export class RigMotion {
   }
 
   weights(prepared: Prepared, t: number): Float32Array {
-    return modalWeights(this.rig!, this.coefficients(prepared as RigPrepared, t));
+    const c = this.coefficients(prepared as RigPrepared, t);
+    if (!this.surface) return modalWeights(this.rig!, c);
+    // The skin's ripple (rig-surface.ts): its texels follow the modal skin's, the player's only.
+    const weights = modalWeights(this.rig!, c, new Float32Array(12 * this.texels()));
+    return prepared === this.surfaceFor()
+      ? surfaceWeights(this.rig!, this.surface.surface, this.surface.phi(this.music, t), weights)
+      : weights;
   }
+
+  /** Texels per vertex of the basis drawn: the modal skin's 3G, and the surface's. */
+  texels(): number { return 3 * this.rig!.G + (this.surface?.surface.G ?? 0); }
 
   loudestTimes(count: number): number[] {
     return this.music.spectrum ? this.music.loudestTimes(count) : [];
@@ -197,7 +213,7 @@ export class RigMotion {
     const pose = (modes: number[], sign: number) => {
       c.fill(0);
       for (const v of modes) c[p.selected[v]] = sign * largest[v] * p.amplitudes[v] / rig.reach[p.selected[v]];
-      poses.push(modalWeights(rig, c));
+      poses.push(modalWeights(rig, c, new Float32Array(12 * this.texels())));
     };
     const all = [...p.selected.keys()];
     for (const sign of [1, -1]) {

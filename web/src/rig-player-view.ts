@@ -24,6 +24,8 @@ export interface RigPlayerEvents {
   pose(joint: number, rotation: [number, number, number]): Promise<void>;
   stiffness(joint: number, value: number | "auto"): Promise<void>;
   reset(): Promise<void>;
+  /** the surface's mapping as played (saved as the mapping's `surface` genes), or null */
+  surface?(): Mapping | null;
 }
 
 const DEGREES = Math.PI / 180;
@@ -130,9 +132,12 @@ export class RigPlayerView {
    * Music off (φ ≡ 1) is saved as gain 0 and offset 1: the same motion in every player. */
   saved(): Mapping | null {
     if (!this.mapping || !this.palette) return null;
-    return { ...this.mapping, version: 3, gain: this.music ? this.mapping.gain ?? 1 : 0,
-      smoothing: this.mapping.smoothing ?? 0, offset: this.music ? this.mapping.offset ?? 0 : 1,
-      modes: { ...this.palette }, look: { ...this.mapping.look, materials: RIG_LOOK.materials } };
+    const saved: Mapping = { ...this.mapping, version: 3,
+      gain: this.music ? this.mapping.gain ?? 1 : 0, smoothing: this.mapping.smoothing ?? 0,
+      offset: this.music ? this.mapping.offset ?? 0 : 1, modes: { ...this.palette },
+      look: { ...this.mapping.look, materials: RIG_LOOK.materials } };
+    const surface = this.events.surface?.() ?? null; // docs/design.md#surface-of-a-rig
+    return surface ? Object.assign(saved, { surface }) : saved;
   }
 
   shot(element: HTMLElement): Shot | null {

@@ -8,12 +8,15 @@ import { loadAppearance } from "./look";
 import type { Appearance } from "./look";
 import type { Mapping } from "./filter";
 import { RigFigure } from "./bones";
-import { RigMotion, bodyMatrices } from "./modal-skin";
+import { RigMotion, bodyMatrices, modalWeights } from "./modal-skin";
 import type { Motion } from "./motion";
 import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
 import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
+import { surfaceBasis, surfaceShare } from "./rig-surface";
+import type { SurfacePlay } from "./rig-surface";
+import { RigSurfaceView } from "./rig-surface-view";
 import type { Clock } from "./transport";
 import { Viewer } from "./viewer";
 import type { DeformationPath, Stage, View } from "./viewer";
@@ -31,6 +34,7 @@ export class RigStage {
   readonly viewer: Viewer;
   readonly gallery: RigGalleryView;
   readonly player: RigPlayerView;
+  readonly surface: RigSurfaceView;
   rig: Rig | null = null;
   /** the rig's skin's materials (its drawn vertices follow the skin's), or null: clay */
   appearance: Appearance | null = null;
@@ -59,7 +63,11 @@ export class RigStage {
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
-      reset: () => this.reset() });
+      reset: () => this.reset(), surface: () => this.surface.genes });
+    this.motion.surfaceFor = () => this.player.prepared;
+    this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
+      guard: events.guard, play: (surface) => this.playSurface(surface),
+      share: () => this.surfaceShare() });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
@@ -99,6 +107,7 @@ export class RigStage {
     const gallery = await rigGallery(this.rig.id, this.events.songId(), null);
     this.defaultMapping = gallery.default;
     this.gallery.setDances(gallery.mappings);
+    await this.surface.songChanged();
   }
 
   /** Back to the harmonics (another model chosen). */
@@ -171,15 +180,55 @@ export class RigStage {
 
   /** Show a rig: its modal skin as a basis for the viewer, its figure (bones, LBS skin). */
   private setRig(rig: Rig, fresh: boolean): void {
-    this.viewer.setBasis(rigBasis(rig), this.batch, this.appearance);
-    this.figure?.dispose();
-    this.figure = new RigFigure(rig, this.viewer.deformer!.look);
-    this.viewer.deformer!.scene.add(this.figure.group);
+    this.motion.surface = null; // a new rest pose: new skin harmonics
+    this.surface.reset();
+    this.drawRig(rig);
     this.rig = rig;
     this.motion.rig = rig;
     this.player.setRig(rig, fresh);
     this.gallery.setRig(rig, fresh);
     if (!fresh) this.viewer.setPath(this.viewer.path);
+  }
+
+  /** The viewer's basis: the modal skin, with the skin's harmonics when the surface is on. */
+  private drawRig(rig: Rig): void {
+    const surface = this.motion.surface;
+    this.viewer.setBasis(surface ? surfaceBasis(rig, surface.surface) : rigBasis(rig), this.batch,
+      this.appearance);
+    this.figure?.dispose();
+    this.figure = new RigFigure(rig, this.viewer.deformer!.look);
+    this.viewer.deformer!.scene.add(this.figure.group);
+  }
+
+  /** The surface section's choice: the skin ripples (or not) in the player. */
+  private playSurface(surface: SurfacePlay | null): void {
+    const changed = (surface === null) !== (this.motion.surface === null);
+    this.motion.surface = surface;
+    if (changed && this.rig) {
+      this.drawRig(this.rig);
+      this.viewer.setPath(this.viewer.path);
+    }
+    this.viewer.requestDraw();
+  }
+
+  /** The surface's share of the player's motion, over 16 moments spread over the song (null:
+   * no surface or no song). */
+  surfaceShare(): number | null {
+    const prepared = this.player.prepared, deformer = this.viewer.deformer;
+    const spectrum = this.motion.music.spectrum;
+    if (!this.motion.surface || !prepared || !deformer || !spectrum) return null;
+    const times = [...Array(16).keys()].map((i) => (i + 0.5) * spectrum.duration / 16);
+    const surface = this.motion.surface;
+    return surfaceShare(deformer.basis, times, (t, on) => {
+      this.motion.surface = on ? surface : null;
+      try {
+        return on ? this.motion.weights(prepared, t)
+          : modalWeights(this.rig!, this.motion.coefficients(prepared, t),
+            new Float32Array(12 * deformer.basis.k4));
+      } finally {
+        this.motion.surface = surface;
+      }
+    });
   }
 
   /** An edit answered by a new bundle: the modes are recomputed, gallery and player follow. */

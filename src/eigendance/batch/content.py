@@ -117,6 +117,9 @@ def output_key(plan: Plan, job: Job, format: str, digests: dict[str, str]) -> st
                 "duration": plan.duration, "kind": job.model.kind}
     if job.model.kind == "mesh":
         settings["k"] = plan.k
+    elif plan.surface is not None:  # a rig's rippling skin (docs/design.md#surface-of-a-rig)
+        settings["surface"] = plan.surface if isinstance(plan.surface, str) else \
+            plan.surface.to_json()
     if format == "mp4":
         settings["size"] = list(plan.size)
     identity = {"eigendance": __version__, "record": RECORD_VERSION, "stem": job.stem,

@@ -38,7 +38,7 @@ HARMONICS = (1, 20000)
 FPS = (0, 240)
 SECONDS = (0, 24 * 3600)
 KEYS = ("models", "songs", "outputs", "gallery", "mappings", "out", "size", "fps", "k",
-        "start", "duration", "cache")
+        "start", "duration", "cache", "surface")
 
 EXAMPLE = """\
 # eigendance batch plan (TOML; paths relative to this file; docs/design.md#batch)
@@ -54,6 +54,7 @@ k = 300                           # harmonics of a mesh (optional, default 300)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
 # cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
+# surface = "ripple.json"         # rigs' skins also ripple by this mapping, or "auto" (optional)
 """
 
 
@@ -144,7 +145,8 @@ class Plan:
     ----------
     path : the plan file; out : the output folder; models, songs, items : the inputs;
     outputs : formats; size : (width, height) px; fps; k; start, duration : s (duration None:
-    to the song's end); cache : the content cache's folder, or None (the default).
+    to the song's end); cache : the content cache's folder, or None (the default);
+    surface : the rigs' surface mapping (docs/design.md#surface-of-a-rig), "auto", or None.
     """
 
     path: str
@@ -159,6 +161,7 @@ class Plan:
     start: float = 0.0
     duration: float | None = None
     cache: str | None = None
+    surface: Mapping | str | None = None
 
     def jobs(self) -> list[Job]:
         """Every (model, song, item), song by song (a song's inputs are needed together).
@@ -224,7 +227,20 @@ class _Reader:
         plan.start = self.number("start", 0.0, *SECONDS)
         plan.duration = self.number("duration", None, *SECONDS, above=True)
         plan.cache = self.folder_of("cache", required=False)
+        plan.surface = self.surface()
         return plan
+
+    def surface(self) -> Mapping | str | None:
+        value = self.document.get("surface")
+        if value is None or value == "auto":
+            return value
+        if not isinstance(value, str) or not value:
+            self.fail("surface", f"must be a mapping file or \"auto\", not {checks.shown(value)}")
+        file = self.files("surface", value)[0]
+        try:
+            return Mapping.load(file)
+        except InputError as error:
+            self.fail("surface", f"{file}: {error}")
 
     def number(self, key, default, low, high, integer=False, above=False):
         if key not in self.document:

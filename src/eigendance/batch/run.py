@@ -304,7 +304,8 @@ class Scheduler:
             inputs.append(gallery)
         spec = {"stem": job.stem, "out": plan.out, "formats": list(each.keys),
                 "song": job.song.path, "fps": plan.fps, "size": plan.size,
-                "start": plan.start, "duration": plan.duration}
+                "start": plan.start, "duration": plan.duration,
+                "surface": plan.surface if job.model.kind == "rig" else None}
         mapping = inputs[2] if job.item.gallery is not None else job.item.mapping
         task = Task(job.stem, "make_outputs", (spec, model, song, mapping, job.item.index),
                     extra={"what": "job", "pending": each, "inputs": inputs})

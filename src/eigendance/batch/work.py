@@ -34,7 +34,8 @@ from eigendance.modal.motion import save_animation
 from eigendance.modal.rig import Rig
 from eigendance.modal.rig_gallery import rig_gallery
 from eigendance.modal.sample_rigs import load_rig
-from eigendance.music.gallery import initial_gallery
+from eigendance.modal.surface import SurfaceDance
+from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
 from eigendance.window import Window
@@ -241,10 +242,35 @@ def _dance(job: dict, model, spectrogram, mapping):
     """The windowed dance of a job (`export.dance`)."""
     if isinstance(model, Rig):
         mapping = model.mapping(spectrogram, mapping)
-        dance = rig_dance(model, spectrogram, mapping, "modal", job["song"], job["stem"])
+        dance = rig_dance(model, spectrogram, mapping, "modal", job["song"], job["stem"],
+                          surface=job_surface(job, model, spectrogram, mapping))
     else:
         dance = HarmonicDance(model, spectrogram, mapping, job["song"], job["stem"])
     return dance.window(job["start"], job["duration"])
+
+
+def job_surface(job: dict, rig: Rig, spectrogram, mapping=None) -> SurfaceDance | None:
+    """The rig's rippling skin a job asks for (the plan's `surface`, else the surface genes of
+    its mapping), or None.
+
+    Parameters
+    ----------
+    job : the job's description ("surface": a Mapping, "auto" or None).
+    rig : the rig.
+    spectrogram : the song (the surface mapping must have its bands).
+    mapping : the job's mapping (its `surface` genes), or None.
+
+    Returns
+    -------
+    SurfaceDance or None.
+    """
+    surface = job.get("surface") or (None if mapping is None else mapping.surface)
+    if surface is None:
+        return None
+    harmonics = rig.surface()
+    if surface == "auto":
+        surface = strongest_item(harmonics.basis, spectrogram)
+    return SurfaceDance(harmonics, spectrogram, surface)
 
 
 def _write(format: str, path: str, job: dict, dance, model, spectrogram, mapping) -> list[str]:
@@ -271,6 +297,9 @@ def _write_animation(path: str, dance, model, spectrogram, mapping, fps: float) 
         mapping = model.mapping(spectrogram, mapping)
         times = frame_times(window.duration, fps)
         coefficients = model.coefficients(spectrogram, mapping, window.start + times)
-        save_animation(path, model.animation(times, coefficients, model.palette_of(mapping)))
+        ripple = None if dance.surface is None else \
+            (lambda first, stop: dance.ripple(times[first:stop]))
+        save_animation(path, model.animation(times, coefficients, model.palette_of(mapping),
+                                             surface=ripple))
     else:
         write_animation(path, model, spectrogram, mapping, fps, window=window)

@@ -23,6 +23,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
@@ -71,6 +72,7 @@ def add_dance_inputs(parser, audio_help: str) -> None:
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness of a rig (default 1)")
     add_window_options(parser)
+    add_surface_options(parser)
 
 
 def is_rig(args) -> bool:
@@ -128,8 +130,12 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
                               selected=parse_modes(args.modes, rig.model.n_modes),
                               amplitude=args.amplitude, time_scale=args.time_scale,
                               offset=args.offset)
-        dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name)
+        dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name,
+                          surface=surface_of(args, rig, spectrogram, mapping))
     else:
+        if getattr(args, "surface", None):
+            raise InputError("--surface ripples a rig's skin; a mesh ripples in its "
+                             "harmonics anyway (use --mapping)")
         basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
         mapping = mapping or strongest_item(basis, spectrogram)
         dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)

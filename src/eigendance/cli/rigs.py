@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import sys
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -20,6 +21,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
 from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
@@ -27,6 +29,7 @@ from eigendance.modal.motion import parse_modes, save_animation
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.skeleton_file import read_joint_stiffness
+from eigendance.modal.surface import surface_share
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import frame_times
 from eigendance.window import Window
@@ -138,6 +141,7 @@ def add_animate_rig(parser):
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
                         help="bands of the audio's spectrogram without a mapping (default 64)")
     add_rig_options(parser)
+    add_surface_options(parser)
     parser.add_argument("--save-mapping", metavar="JSON",
                         help="also write the mapping that made the motion, every setting "
                              "explicit (the page and the exports play it the same)")
@@ -175,12 +179,17 @@ def run_animate_rig(args) -> None:
     palette = rig.palette_of(mapping)
     check_rig_animation(rig, len(times), args.output)
     coefficients = rig.coefficients(spectrogram, mapping, window.start + times)
+    surface = surface_of(args, rig, spectrogram, mapping)
+    ripple = None if surface is None else \
+        (lambda first, stop: surface.displacements(window.start + times[first:stop]))
     bar, update = progress_bar(len(times), "frames", unit="frame")
     with bar:
-        arrays = rig.animation(times, coefficients, palette, args.skinning, progress=update)
+        arrays = rig.animation(times, coefficients, palette, args.skinning, progress=update,
+                               surface=ripple)
     save_animation(args.output, arrays)
-    if args.save_mapping:
-        mapping.save(args.save_mapping)
+    if args.save_mapping:  # with the surface genes that played
+        replace(mapping, surface=None if surface is None else surface.mapping).save(
+            args.save_mapping)
     scaled = model.frequencies[palette.selected] * palette.time_scale
     print(f"{args.output}: {len(times)} frames at {args.fps:g} fps, "
           f"{len(skeleton.vertices)} vertices, {skeleton.n_bodies} bodies, modes "
@@ -188,6 +197,31 @@ def run_animate_rig(args) -> None:
           f"{', '.join(f'{f:.2f}' for f in scaled)} Hz (time scale "
           f"{palette.time_scale:.3g}), {'music' if spectrogram is not None else 'steady'} "
           f"drive, {time.perf_counter() - began:.1f} s")
+    if surface is not None:
+        print(surface_line(rig, surface, arrays, args.skinning))
+
+
+def surface_line(rig: Rig, surface, arrays: dict, skinning: str) -> str:
+    """What the surface did: its harmonics and its share of the skin's motion
+    (`modal.surface.surface_share`, measured on at most 64 frames spread over the animation).
+
+    Parameters
+    ----------
+    rig : the rig.
+    surface : its `SurfaceDance`.
+    arrays : the animation's arrays (`Rig.animation`).
+    skinning : "modal" or "lbs".
+
+    Returns
+    -------
+    str.
+    """
+    frames = np.unique(np.linspace(0, len(arrays["times"]) - 1, 64).astype(int))
+    bones = rig.positions(arrays["coefficients"][frames], skinning)
+    share = surface_share(bones, arrays["positions"][frames], rig.skeleton.vertices)
+    return (f"surface: {surface.mapping.name}, {len(surface.driven())} of "
+            f"{surface.harmonics.k} harmonics of the skin, gain {surface.mapping.gain:.3g}: "
+            f"{share:.0%} of the skin's motion (RMS)")
 
 
 def check_rig_animation(rig: Rig, frames: int, output: str) -> None:

@@ -14,7 +14,8 @@ file's coordinates:
   rest pose → posed), the skin by linear blend skinning x′ = Σ_b w_ib T_b(t)x (exactly what a
   glTF skin plays) or by modal skinning (docs/design.md#skinning), both asked of the rig.
   `pose(times)` gives the transforms and mode coefficients: the one place rig motion enters the
-  exports.
+  exports. With a `surface` (`modal.surface.SurfaceDance`) the skin also ripples in its
+  harmonics, added in the bind pose before skinning: exactly morph targets under a skin.
 
 Positions come chunk by chunk (`frames`), so a long song never holds all frames in memory.
 `dance.window(start, duration)` is the part of the song from `start` (docs/design.md#window):
@@ -381,8 +382,7 @@ class HarmonicDance(Dance):
         -------
         (J,) int64, J ≤ B.
         """
-        targets = np.unique(self.mapping.harmonic_indices(self.basis.k))
-        return targets[self.mapping.amplification_for(self.basis.k)[targets] != 0]
+        return self.mapping.driven(self.basis.k)
 
     def morphs(self, times) -> Morphs:
         """The motion at `times` as morph targets (exact: X_φ is linear in φ).
@@ -450,13 +450,14 @@ class RigDance(Dance):
         the exact body transforms, what a glTF skin plays).
     audio, name : as for `HarmonicDance`.
     info : more to write in the files' metadata.
+    surface : the skin's ripple (`modal.surface.SurfaceDance`), or None.
 
     The skin's look (`assets.Appearance`) is the skeleton's.
     """
 
     def __init__(self, rig: Rig, coefficients: Callable, duration: float,
                  skinning: str = "modal", audio: str | os.PathLike | None = None,
-                 name: str = "dance", info=None):
+                 name: str = "dance", info=None, surface=None):
         if skinning not in SKINNINGS:
             raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
         skeleton = rig.skeleton
@@ -473,6 +474,44 @@ class RigDance(Dance):
         self.name = name
         self.info = {"kind": "rig", "skinning": skinning, **(info or {})}
         self.appearance = getattr(skeleton, "appearance", None)
+        self.surface = surface
+        if surface is not None:
+            self.info["surface"] = {"k": surface.harmonics.k,
+                                    "mapping": surface.mapping.to_json()}
+
+    def ripple(self, times):
+        """The surface's bind-pose displacements (T, n, 3) at the dance's times, or None.
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        (T, n, 3) float64 or None (no surface).
+        """
+        if self.surface is None:
+            return None
+        return self.surface.displacements(self.start + np.asarray(times, dtype=float))
+
+    def morphs(self, times) -> Morphs:
+        """The surface's ripple at `times` as morph targets, applied before the skin (exact:
+        d is linear in φ).
+
+        Parameters
+        ----------
+        times : (T,) s of the dance.
+
+        Returns
+        -------
+        Morphs (in the bind pose, the rig's units).
+        """
+        driven = self.surface.driven()
+        weights = self.surface.phi(self.start + np.asarray(times, dtype=float))[:, driven] - 1
+        targets = self.surface.harmonics.targets(driven)
+        largest = np.abs(weights).max(initial=0) * np.abs(targets).max(initial=0) * len(driven)
+        check_motion(largest + np.abs(self.rest).max(initial=0), self.surface.mapping.name)
+        return Morphs(driven, targets, weights)
 
     def pose(self, times) -> tuple[np.ndarray, np.ndarray]:
         """The body transforms and mode coefficients at the dance's times.
@@ -493,7 +532,10 @@ class RigDance(Dance):
         normals = self.rest_normals()
         for first in range(0, len(times), RIG_CHUNK):
             moving = self.coefficients(self.start + times[first:first + RIG_CHUNK])
-            positions, turned = self.rig.skinned(moving, self.skinning, normals)
+            positions, turned = self.rig.skinned(moving, self.skinning, normals,
+                                                 self.ripple(times[first:first + RIG_CHUNK]))
+            if self.surface is not None:
+                check_motion(positions, self.surface.mapping.name)
             yield first, positions.astype(np.float32), turned.astype(np.float32)
 
     def blend_positions(self, times) -> np.ndarray:
@@ -507,12 +549,12 @@ class RigDance(Dance):
         -------
         (T, n, 3) float64.
         """
-        return self.rig.positions(self.pose(times)[1], "lbs")
+        return self.rig.positions(self.pose(times)[1], "lbs", self.ripple(times))
 
 
 def rig_dance(rig: Rig, spectrogram: Spectrogram | None, mapping: Mapping | None,
               skinning: str = "modal", audio=None, name: str = "dance",
-              duration: float | None = None) -> RigDance:
+              duration: float | None = None, surface=None) -> RigDance:
     """A rig dancing to a song, as `eigendance animate-rig` moves it.
 
     Parameters
@@ -523,6 +565,7 @@ def rig_dance(rig: Rig, spectrogram: Spectrogram | None, mapping: Mapping | None
     skinning : "modal" or "lbs".
     audio, name : the song's file (or None) and how files call the dance.
     duration : seconds (default: the song's; 4 s without a song).
+    surface : the skin's ripple (`modal.surface.SurfaceDance`), or None.
 
     Returns
     -------
@@ -544,4 +587,4 @@ def rig_dance(rig: Rig, spectrogram: Spectrogram | None, mapping: Mapping | None
     moving_modes = np.flatnonzero(np.abs(coefficients(np.linspace(0, duration, 64))).max(axis=0))
     info = {"modes": [int(m) for m in moving_modes],
             "frequencies_hz": [float(rig.model.frequencies[m]) for m in moving_modes]}
-    return RigDance(rig, coefficients, duration, skinning, audio, name, info)
+    return RigDance(rig, coefficients, duration, skinning, audio, name, info, surface)

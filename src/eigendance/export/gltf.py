@@ -19,6 +19,9 @@
   1/65535 of P's, so a vertex is within 8/65535 of its largest joint displacement). Its size
   is m·T translations instead of d·n displacements; the translations are computed joint by
   joint as the file is written.
+- A `RigDance` with a surface (docs/design.md#surface-of-a-rig) also gets the harmonics' morph
+  targets, written as above in the same animation: glTF applies morph targets before the skin,
+  so a viewer plays Σ_b w_ib T_b (x + d) — the ripple in the bind pose, skinned.
 - A `RigDance` becomes a skin: one joint node per body, bound in the body's rest frame B_b
   (inverse bind matrix B_b⁻¹), animated by translation and rotation channels so that its world
   transform is T_b(t_i)·B_b; a viewer's joint matrix T_b·B_b·B_b⁻¹ = T_b then plays linear blend
@@ -187,9 +190,13 @@ def write_glb(file, dance: Dance, times, extras: dict) -> int:
     if isinstance(dance, HarmonicDance) and dance.basis.reduced is not None:
         _sample_skin(dance, times, builder, attributes, welded, sample_input)
     elif isinstance(dance, HarmonicDance):
-        base = _morph_targets(dance, times, builder, mesh, welded, sample_input)
+        base = _morph_targets(dance.morphs(times), dance.rest, builder, mesh, welded,
+                              sample_input)
     elif isinstance(dance, RigDance):
         _skin(dance, times, builder, attributes, welded, sample_input)
+        if dance.surface is not None:  # the ripple: morph targets, applied before the skin
+            base = _morph_targets(dance.morphs(times), dance.rest, builder, mesh, welded,
+                                  sample_input)
     else:
         raise TypeError(f"cannot write {type(dance).__name__} as glTF")
     attributes.POSITION = builder.accessor(base.astype("<f4"), 3, pygltflib.ARRAY_BUFFER, True)
@@ -237,13 +244,13 @@ def blender_safe(weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lo, np.where(hi > lo, hi, lo + 1.0)
 
 
-def _morph_targets(dance: HarmonicDance, times, builder, mesh, welded, sample_input):
-    """The targets and their animation (see the module docstring); returns the base
-    positions (n_d, 3)."""
-    morphs = dance.morphs(times)
+def _morph_targets(morphs, rest, builder, mesh, welded, sample_input):
+    """The targets of `morphs` (`export.dance.Morphs`) on `rest` (n, 3) and their animation
+    (see the module docstring), in the file's last animation when it has one (a rig's skin);
+    returns the base positions (n_d, 3)."""
     lo, hi = blender_safe(morphs.weights)
     span = hi - lo
-    base = dance.rest + np.einsum("j,jnd->nd", lo, morphs.targets)
+    base = rest + np.einsum("j,jnd->nd", lo, morphs.targets)
     for target, scale in zip(morphs.targets, span, strict=True):
         accessor = builder.accessor((scale * target[welded]).astype("<f4"), 3,
                                     pygltflib.ARRAY_BUFFER, bounds=True)
@@ -255,12 +262,14 @@ def _morph_targets(dance: HarmonicDance, times, builder, mesh, welded, sample_in
     mesh.extras = {"targetNames": [f"harmonic {int(nu)}" for nu in morphs.harmonics]}
     weights = np.clip((morphs.weights - lo) / span, 0.0, 1.0)
     output = builder.accessor(weights.astype("<f4").ravel(), 1)
-    builder.gltf.animations.append(pygltflib.Animation(
-        name="dance",
-        samplers=[pygltflib.AnimationSampler(input=sample_input, output=output,
-                                             interpolation=pygltflib.ANIM_LINEAR)],
-        channels=[pygltflib.AnimationChannel(
-            sampler=0, target=pygltflib.AnimationChannelTarget(node=0, path="weights"))]))
+    if not builder.gltf.animations:
+        builder.gltf.animations.append(pygltflib.Animation(name="dance"))
+    animation = builder.gltf.animations[-1]
+    animation.channels.append(pygltflib.AnimationChannel(
+        sampler=len(animation.samplers),
+        target=pygltflib.AnimationChannelTarget(node=0, path="weights")))
+    animation.samplers.append(pygltflib.AnimationSampler(
+        input=sample_input, output=output, interpolation=pygltflib.ANIM_LINEAR))
     return base[welded]
 
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.geometry import vertex_normals
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     body_poses,
@@ -29,6 +30,7 @@ from eigendance.modal.palette import Palette, default_palette
 from eigendance.modal.rig_gallery import RigDancer
 from eigendance.modal.skeleton import Skeleton
 from eigendance.modal.skinning import ModalSkin, linear_blend_skinning
+from eigendance.modal.surface import SURFACE_K, SkinHarmonics, surface_skinned
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 
@@ -64,6 +66,7 @@ class Rig:
         self.palette: Palette | None = default_palette(self.model) if self.model.n_modes \
             else None
         self._skin: ModalSkin | None = None
+        self._surfaces: dict[int, SkinHarmonics] = {}
 
     @classmethod
     def from_skeleton(cls, skeleton: Skeleton, dtype=np.float32) -> Rig:
@@ -95,6 +98,23 @@ class Rig:
             self._skin = ModalSkin(self.model, self.skeleton.vertices, self.skeleton.weights,
                                    self.dtype, self.skeleton.name)
         return self._skin
+
+    def surface(self, k: int = SURFACE_K, cache: bool = True) -> SkinHarmonics:
+        """The skin's manifold harmonics in the bind pose (`modal.surface`), made on first use
+        and kept (the basis also goes to the disk cache).
+
+        Parameters
+        ----------
+        k : harmonics (at most the skin's vertices − 1).
+        cache : read and write the basis cache.
+
+        Returns
+        -------
+        SkinHarmonics.
+        """
+        if k not in self._surfaces:
+            self._surfaces[k] = SkinHarmonics(self.skeleton, k, cache)
+        return self._surfaces[k]
 
     @property
     def rest_bones(self) -> np.ndarray:
@@ -190,24 +210,39 @@ class Rig:
         """
         return body_transforms(self.model, coefficients)
 
-    def skinned(self, coefficients, skinning: str = "modal", normals=None):
+    def skinned(self, coefficients, skinning: str = "modal", normals=None, surface=None):
         """The skin moved by coefficients c: modal skinning (first order, as the page plays
-        it) or linear blend skinning of the exact body transforms (what a glTF skin plays).
+        it) or linear blend skinning of the exact body transforms (what a glTF skin plays),
+        with the surface's ripple d added in the bind pose before skinning (`modal.surface`).
 
         Parameters
         ----------
         coefficients : (T, nm).
         skinning : "modal" or "lbs".
-        normals : (n, 3) rest normals to turn with the skin, or None.
+        normals : (n, 3) rest normals to turn with the skin, or None. With a surface the
+            normals are those of the moved skin (area-weighted, `geometry.vertex_normals`).
+        surface : (T, n, 3) bind-pose displacements d (the rig's units; `SurfaceDance`), or
+            None.
 
         Returns
         -------
         positions (T, n, 3) in the rig's `dtype` for "modal", float64 for "lbs"; with
-        `normals`, also the turned unit normals (T, n, 3).
+        `normals`, also the unit normals (T, n, 3).
         """
         if skinning not in SKINNINGS:
             raise InputError(f"skinning must be modal or lbs, got {skinning!r}")
         skeleton = self.skeleton
+        if surface is not None:
+            if skinning == "lbs":
+                positions = linear_blend_skinning(skeleton.vertices, skeleton.weights,
+                                                  self.body_transforms(coefficients),
+                                                  displacements=surface)
+            else:
+                positions = surface_skinned(self.skin, coefficients, surface)
+            if normals is None:
+                return positions
+            return positions, np.stack([vertex_normals(frame, skeleton.faces, [0.0, 0, 1])
+                                        for frame in positions])
         if skinning == "lbs":
             return linear_blend_skinning(skeleton.vertices, skeleton.weights,
                                          self.body_transforms(coefficients), normals)
@@ -215,22 +250,33 @@ class Rig:
         return positions if normals is None else (positions,
                                                   self.skin.normals(coefficients, normals))
 
-    def positions(self, coefficients, skinning: str = "modal") -> np.ndarray:
+    def positions(self, coefficients, skinning: str = "modal", surface=None) -> np.ndarray:
         """The skin's positions for coefficients c (`skinned` without normals).
 
         Parameters
         ----------
         coefficients : (T, nm).
         skinning : "modal" or "lbs".
+        surface : (T, n, 3) the surface's bind-pose displacements (the rig's units), or None.
 
         Returns
         -------
         (T, n, 3) positions, the skeleton's units.
+
+        Example
+        -------
+        >>> from eigendance.modal.sample_rigs import load_rig
+        >>> rig = Rig(load_rig("chain"))
+        >>> still = np.zeros((1, rig.model.n_modes))                # the bones at rest
+        >>> lift = np.zeros((1, len(rig.skeleton.vertices), 3)); lift[..., 2] = 0.01
+        >>> moved = rig.positions(still, "lbs", surface=lift) - rig.skeleton.vertices
+        >>> bool(np.allclose(moved, lift))      # at rest the skin moves by the ripple alone
+        True
         """
-        return self.skinned(coefficients, skinning)
+        return self.skinned(coefficients, skinning, surface=surface)
 
     def animation(self, times, coefficients, palette: Palette, skinning: str = "modal",
-                  progress=None) -> dict:
+                  progress=None, surface=None) -> dict:
         """The arrays of the rig animation file (docs/design.md#animation-file).
 
         Parameters
@@ -240,6 +286,8 @@ class Rig:
         palette : the palette that made them (stored with them).
         skinning : "modal" or "lbs".
         progress : optional callable(frames done).
+        surface : optional callable(first, stop) → (stop − first, n, 3), the surface's
+            bind-pose displacements of those frames (`SurfaceDance.displacements`).
 
         Returns
         -------
@@ -255,7 +303,8 @@ class Rig:
         positions = np.empty((len(times), len(skeleton.vertices), 3), dtype=np.float32)
         for start in range(0, len(times), FRAME_CHUNK):
             stop = min(start + FRAME_CHUNK, len(times))
-            positions[start:stop] = self.positions(coefficients[start:stop], skinning)
+            ripple = None if surface is None else surface(start, stop)
+            positions[start:stop] = self.positions(coefficients[start:stop], skinning, ripple)
             if progress is not None:
                 progress(stop)
         return {"times": times, "faces": skeleton.faces.astype(np.int64), "positions": positions,

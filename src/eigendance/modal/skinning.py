@@ -149,7 +149,7 @@ class ModalSkin:
         return rotate_by_vectors(np.broadcast_to(normals, turn.shape), turn)
 
 
-def linear_blend_skinning(vertices, weights, transforms, normals=None):
+def linear_blend_skinning(vertices, weights, transforms, normals=None, displacements=None):
     """Linear blend skinning: x' = Σ_b w_ib (A_b x + t_b).
 
     Parameters
@@ -159,6 +159,8 @@ def linear_blend_skinning(vertices, weights, transforms, normals=None):
     transforms : (T, n_b, 4, 4) (or (n_b, 4, 4)) world transforms of the bodies from the rest
         pose, e.g. `modal.motion.body_transforms`.
     normals : optional (n, 3) rest normals, turned by the blended linear parts.
+    displacements : optional (T, n, 3) moves of the rest positions before skinning (a rig's
+        surface, `modal.surface`): x' = Σ_b w_ib (A_b (x + d) + t_b).
 
     Returns
     -------
@@ -180,6 +182,10 @@ def linear_blend_skinning(vertices, weights, transforms, normals=None):
     blended = np.asarray(weights @ rows).reshape(len(vertices), frames, 3, 4)
     positions = np.einsum("ntij,nj->tni", blended[..., :3], vertices) + \
         blended[..., 3].transpose(1, 0, 2)
+    if displacements is not None:
+        moves = np.asarray(displacements, dtype=float).reshape(positions.shape)
+        positions += np.matmul(blended[..., :3], moves.transpose(1, 0, 2)[..., None])[
+            ..., 0].transpose(1, 0, 2)
     if normals is None:
         return positions
     turned = np.einsum("ntij,nj->tni", blended[..., :3], np.asarray(normals, dtype=float))

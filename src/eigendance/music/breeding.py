@@ -146,6 +146,10 @@ def breed(parents, size: int = 8, seed: int = 0,
          auto-range is parent i's;
       5. pulse: the same as 2 with [amount, decay, low, high] (low and high sorted after);
          the source is parent i's.
+    A rig's dance with a rippling skin carries surface genes (`Mapping.surface`,
+    docs/design.md#surface-of-a-rig): when both parents have them (of one band count), the
+    child's are `breed([surface_i, surface_j], 1, seed + SURFACE_STREAM + c)` (steps 1–5 on
+    them), else parent i's.
     Children carry `seed` in their JSON, and parent i's other settings (gain, smoothing,
     offset, palette, look).
 
@@ -192,12 +196,37 @@ def breed(parents, size: int = 8, seed: int = 0,
         transfer = np.clip(genes[0], 0.0, 1.0)
         # Settings besides the genes (gain, smoothing, offset, palette, look): parent i's.
         child = parents[i].with_genes(transfer, genes[1], int(seed), f"child {c}")
-        children.append(with_rhythm_genes(child, parents[i], parents[j], rhythm_random,
-                                          mean_segment))
+        child = with_rhythm_genes(child, parents[i], parents[j], rhythm_random, mean_segment)
+        children.append(with_surface_genes(child, parents[i], parents[j],
+                                           (int(seed) + SURFACE_STREAM + c) % (1 << 32),
+                                           mean_segment))
     return children
 
 
 RHYTHM_STREAM = 0x9E3779B9  # the rhythm genes' generator starts from seed + this
+SURFACE_STREAM = 0x7F4A7C15  # child c's surface genes are bred with seed + this + c
+
+
+def with_surface_genes(child: Mapping, first: Mapping, second: Mapping, seed: int,
+                       mean_segment) -> Mapping:
+    """The child with its parents' surface genes crossed (`breed`), or parent i's.
+
+    Parameters
+    ----------
+    child : the child (parent i's surface, if any, so far).
+    first, second : its parents i and j.
+    seed : the surface genes' seed.
+    mean_segment : the crossing's mean segment length.
+
+    Returns
+    -------
+    Mapping.
+    """
+    ours, theirs = first.surface, second.surface
+    if ours is None or theirs is None or ours.bands != theirs.bands or first is second:
+        return child
+    bred = breed([ours, theirs], 1, seed, mean_segment)[0]
+    return replace(child, surface=replace(bred, name=f"{child.name} surface"))
 
 
 def with_rhythm_genes(child: Mapping, first: Mapping, second: Mapping, random: Mulberry32,

@@ -141,6 +141,8 @@ class Mapping:
         a model without materials is drawn in clay either way (docs/design.md#mapping-file).
     envelope : per-band attack, release, threshold and auto-range (`Envelope`; version 3).
     pulse : kicks on the beats routed to a range of targets (`Pulse`; version 3).
+    surface : a rig's surface genes: the mapping its skin's harmonics play while its modes
+        follow this one (docs/design.md#surface-of-a-rig), or None.
 
     Example
     -------
@@ -164,6 +166,7 @@ class Mapping:
     materials: bool = True
     envelope: Envelope = field(default_factory=Envelope)
     pulse: Pulse = field(default_factory=Pulse)
+    surface: Mapping | None = None
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
@@ -186,6 +189,8 @@ class Mapping:
                              f"{_shown(self.materials)}")
         self.materials = bool(self.materials)
         self.envelope = self.envelope.for_bands(self.bands, self.name)
+        if self.surface is not None and self.surface.surface is not None:
+            raise InputError(f"{self.name}: a surface mapping has no surface of its own")
 
     @property
     def bands(self) -> int:
@@ -204,6 +209,21 @@ class Mapping:
         (B,).
         """
         return harmonic_indices(self.transfer, k)
+
+    def driven(self, k: int) -> np.ndarray:
+        """The targets the mapping moves: ν(ξ) of some band with a non-zero amplification
+        (every other φ_ν stays at the offset), ascending.
+
+        Parameters
+        ----------
+        k : the targets.
+
+        Returns
+        -------
+        (J,) int64, J ≤ B.
+        """
+        targets = np.unique(self.harmonic_indices(k))
+        return targets[self.amplification_for(k)[targets] != 0]
 
     def amplification_for(self, k: int) -> np.ndarray:
         """The amplification resampled to k targets, times the gain.
@@ -344,7 +364,7 @@ class Mapping:
         -------
         dict, ready for json.dump.
         """
-        return {"format": FORMAT, "version": VERSION, "bands": self.bands,
+        document = {"format": FORMAT, "version": VERSION, "bands": self.bands,
                 "transfer": [float(x) for x in self.transfer],
                 "amplification": [float(x) for x in self.amplification],
                 "seed": None if self.seed is None else int(self.seed),
@@ -353,6 +373,9 @@ class Mapping:
                 "look": {"deformed_normal_weight": self.deformed_normal_weight,
                          "shading": self.shading, "materials": self.materials},
                 "envelope": self.envelope.to_json(), "pulse": self.pulse.to_json()}
+        if self.surface is not None:  # only a rig's dance with a rippling skin has it
+            document["surface"] = self.surface.to_json()
+        return document
 
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> Mapping:
@@ -411,6 +434,8 @@ class Mapping:
                 settings["envelope"] = Envelope.from_json(data["envelope"], name)
             if data.get("pulse") is not None:
                 settings["pulse"] = Pulse.from_json(data["pulse"], name)
+            if data.get("surface") is not None:
+                settings["surface"] = Mapping.from_json(data["surface"], f"{name}: surface")
         return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
                    seed, name, **settings)
 

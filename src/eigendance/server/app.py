@@ -57,6 +57,7 @@ from eigendance.server.routes import (
     take,
     upload,
 )
+from eigendance.server.surface_routes import get_rig_surface, rig_surface_gallery
 
 
 def static_folder() -> str | None:
@@ -195,6 +196,8 @@ API_ROUTES = [
     Route("/api/rigs/{id}/pose", rig_pose, methods=["POST"]),
     Route("/api/rigs/{id}/reset", rig_reset, methods=["POST"]),
     Route("/api/rig-gallery", rig_gallery_route, methods=["POST"]),
+    Route("/api/rigs/{id}/surface.bin", get_rig_surface),
+    Route("/api/rig-surface-gallery", rig_surface_gallery, methods=["POST"]),
     Route("/api/export", export_clip, methods=["POST"]),
     Route("/api/exports/{id}", download_export),
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),

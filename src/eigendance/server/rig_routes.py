@@ -153,6 +153,27 @@ async def rig_reset(request: Request):
     return bundle_response(await in_worker(library_of(request).reset_rig, item))
 
 
+async def gallery_inputs(request: Request):
+    """The rig (analysed), the song and the size of a gallery request {rig, song, size}.
+
+    Parameters
+    ----------
+    request : the JSON body.
+
+    Returns
+    -------
+    (RigItem, SongItem, size); 400 for a body that is not an object, 404 for unknown ids.
+    """
+    body = await json_body(request)
+    if not isinstance(body, dict):
+        raise HTTPException(400, "expected a JSON object {rig, song, size}")
+    item = item_of(request, "rig", body.get("rig"))
+    song = song_of(request, str(body.get("song")))
+    size = gallery_size(body.get("size", DEFAULT_GALLERY))
+    await in_worker(library_of(request).ready_rig, item)
+    return item, song, size
+
+
 async def rig_gallery_route(request: Request):
     """POST /api/rig-gallery {rig, song, size}: the initial gallery of mode mappings.
 
@@ -165,14 +186,7 @@ async def rig_gallery_route(request: Request):
     JSON response {"mappings": [size mapping documents], "default": the default mapping};
     409 for a rig without vibration modes.
     """
-    body = await json_body(request)
-    if not isinstance(body, dict):
-        raise HTTPException(400, "expected a JSON object {rig, song, size}")
-    library = library_of(request)
-    item = item_of(request, "rig", body.get("rig"))
-    song = song_of(request, str(body.get("song")))
-    size = gallery_size(body.get("size", DEFAULT_GALLERY))
-    await in_worker(library.ready_rig, item)
+    item, song, size = await gallery_inputs(request)
     rig = item.rig
     if rig.palette is None:
         raise HTTPException(409, f"{item.name}: the rig has no vibration mode; nothing to "

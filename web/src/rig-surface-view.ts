@@ -1,0 +1,97 @@
+// The rig player's *surface* section (docs/design.md#surface-of-a-rig): off by default; on, the
+// skin ripples in its harmonics while the bones sway — a gallery of surface dances calibrated on
+// the song to choose from, and its gain.
+import { $ } from "./dom";
+import type { Mapping } from "./filter";
+import type { Rig } from "./rig-bundle";
+import { SurfacePlay, rigSurface, surfaceGallery } from "./rig-surface";
+import type { RigSurface } from "./rig-surface";
+
+export interface RigSurfaceEvents {
+  rig(): Rig | null;
+  songId(): string;
+  /** draw the rig with this surface (null: the modal skin alone) */
+  play(surface: SurfacePlay | null): void;
+  guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the surface's share of the player's motion (null: off) */
+  share(): number | null;
+}
+
+export class RigSurfaceView {
+  private surface: RigSurface | null = null;
+  private dances: Mapping[] = [];
+  private song = "";
+  private current: SurfacePlay | null = null;
+
+  constructor(private readonly events: RigSurfaceEvents) {
+    const toggle = $<HTMLInputElement>("rig-surface");
+    toggle.addEventListener("change", () => {
+      void this.events.guard("Could not ripple the skin", () => this.switchTo(toggle.checked));
+    });
+    $<HTMLSelectElement>("rig-surface-dance").addEventListener("change", () => this.choose());
+    const gain = $<HTMLInputElement>("rig-surface-gain");
+    gain.addEventListener("input", () => {
+      $("rig-surface-gain-out").textContent = `${Number(gain.value).toFixed(2)}×`;
+      if (this.current) this.current.gain = Number(gain.value);
+      this.showShare();
+    });
+  }
+
+  /** The surface as played (a rig mapping's `surface` genes), or null when off. */
+  get genes(): Mapping | null { return this.current?.genes() ?? null; }
+
+  /** A new rig (opened or edited: its skin's harmonics change with its rest pose): off. */
+  reset(): void {
+    this.surface = null;
+    this.current = null;
+    $<HTMLInputElement>("rig-surface").checked = false;
+    this.enable(false);
+    $("rig-surface-share").textContent = "";
+  }
+
+  /** A new song: the surface dances are calibrated on it again. */
+  async songChanged(): Promise<void> {
+    if (this.current) await this.switchTo(true);
+  }
+
+  private async switchTo(on: boolean): Promise<void> {
+    const rig = this.events.rig();
+    if (!on || !rig) {
+      this.current = null;
+      this.enable(false);
+      this.events.play(null);
+      this.showShare();
+      return;
+    }
+    this.surface ??= await rigSurface(rig.id);
+    if (this.song !== this.events.songId() || !this.dances.length) {
+      this.song = this.events.songId();
+      this.dances = await surfaceGallery(rig.id, this.song);
+      const select = $<HTMLSelectElement>("rig-surface-dance");
+      select.replaceChildren(...this.dances.map((_, i) => new Option(`dance ${i + 1}`, String(i))));
+    }
+    this.enable(true);
+    this.choose();
+  }
+
+  private choose(): void {
+    if (!this.surface || !this.dances.length) return;
+    const index = Number($<HTMLSelectElement>("rig-surface-dance").value) || 0;
+    this.current = new SurfacePlay(this.surface, this.dances[index],
+      Number($<HTMLInputElement>("rig-surface-gain").value));
+    this.events.play(this.current);
+    this.showShare();
+  }
+
+  /** The surface's share of the motion beside its gain (`modal.surface.surface_share`). */
+  showShare(): void {
+    const share = this.current ? this.events.share() : null;
+    $("rig-surface-share").textContent = share === null ? ""
+      : `${Math.round(100 * share)}% of the motion`;
+  }
+
+  private enable(on: boolean): void {
+    $<HTMLSelectElement>("rig-surface-dance").disabled = !on;
+    $<HTMLInputElement>("rig-surface-gain").disabled = !on;
+  }
+}
