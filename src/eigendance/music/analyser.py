@@ -150,7 +150,15 @@ def exponential_smoothing(values: np.ndarray, memory: float, previous) -> np.nda
 
 class Analyser:
     """Streaming spectrogram: feed mono chunks, get smoothed band values chunk by chunk (and,
-    with rhythm=True, the rhythm's envelope and features)."""
+    with rhythm=True, the rhythm's envelope and features).
+
+    Parameters
+    ----------
+    sample_rate : Hz.
+    rate, bands, fmin, fmax, floor_db, smoothing : the options of docs/design.md#spectrogram.
+    name : how messages call the audio.
+    rhythm : whether to compute the rhythm's envelope (`envelope`) and features (`features`).
+    """
 
     def __init__(self, sample_rate, rate=RATE, bands=BANDS, fmin=FMIN, fmax=FMAX,
                  floor_db=FLOOR_DB, smoothing=SMOOTHING, name="audio", rhythm=True):
@@ -204,6 +212,12 @@ class Analyser:
         self.features = BeatFeatures(self.sample_rate) if rhythm else None
 
     def feed(self, chunk: np.ndarray) -> None:
+        """Analyse the next mono samples.
+
+        Parameters
+        ----------
+        chunk : (m,) samples.
+        """
         chunk = np.asarray(chunk).ravel()
         if not np.all(np.isfinite(chunk)):
             raise InputError(f"{self.name}: the audio holds NaN or infinite samples")
@@ -220,6 +234,12 @@ class Analyser:
         self._process(final=False)
 
     def finish(self) -> np.ndarray:
+        """The last frames, once every chunk was fed.
+
+        Returns
+        -------
+        (T, B) float32 smoothed loudness of every frame.
+        """
         if self.total == 0:
             raise InputError(f"{self.name}: holds no audio samples")
         self.buffer = np.concatenate([self.buffer, np.zeros(self.N + 1, dtype=np.float32)])

@@ -66,8 +66,8 @@ def accents(frames, decibels: np.ndarray, chroma: np.ndarray) -> np.ndarray:
     centres = librosa.mel_frequencies(decibels.shape[1] + 2, fmin=0.0, fmax=SR / 2)[1:-1]
     low = np.flatnonzero(centres < LOW_HZ)
     bounds = np.append(frames, len(chroma))
-    means = np.stack([chroma[a:max(b, a + 1)].mean(axis=0) for a, b in zip(bounds[:-1],
-                                                                            bounds[1:])])
+    means = np.stack([chroma[a:max(b, a + 1)].mean(axis=0)
+                      for a, b in zip(bounds[:-1], bounds[1:], strict=True)])
     norms = np.maximum(np.linalg.norm(means, axis=1), 1e-9)
     similarity = np.einsum("ij,ij->i", means[1:], means[:-1]) / (norms[1:] * norms[:-1])
     change = np.concatenate([[0.0], 1 - similarity])
