@@ -30,8 +30,11 @@ import numpy as np
 import soxr
 from scipy.fft import rfft
 
-SR = 22050  # Hz: librosa's default sample rate, the beat tracker's input
-HOP = 512  # samples between frames (librosa's default hop)
+from eigendance.music.constants import ANALYSIS
+
+# From analysis.json, which the page's live tempo (web/src/live-rhythm.ts) reads too:
+SR = int(ANALYSIS["onset"]["beat_sample_rate"])  # Hz: librosa's default, the tracker's input
+HOP = int(ANALYSIS["onset"]["beat_hop"])  # samples between frames (librosa's default hop)
 N_FFT = 2048  # samples per frame (librosa's default)
 MELS = 128  # librosa's default mel bands
 TOP_DB = 80.0  # librosa.power_to_db's floor below the maximum

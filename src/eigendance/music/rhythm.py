@@ -46,7 +46,7 @@ MEL_FMAX = float(ANALYSIS["onset"]["mel_fmax"])  # Hz: librosa's default analysi
 FLOOR_DB = float(ANALYSIS["onset"]["floor_db"])  # dB of full scale: the mel power's floor
 LAG = float(ANALYSIS["onset"]["lag"])  # s: the flux compares a frame with the one this earlier
 CHUNK_SECONDS = 60.0  # the tempogram is computed over chunks this long
-AC_SIZE = 8.0  # s: librosa.feature.tempo's tempogram window (its ac_size)
+AC_SIZE = float(ANALYSIS["onset"]["tempo_window"])  # s: librosa.feature.tempo's ac_size
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
 QUIET = 1e-3  # an envelope whose 99th percentile is below this is silence
 
