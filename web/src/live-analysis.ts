@@ -5,7 +5,7 @@
 // come from the one file the Python analysis reads (src/eigendance/music/analysis.json).
 import FFT from "fft.js";
 import ANALYSIS from "../../src/eigendance/music/analysis.json";
-import { BeatEnvelope, melBank } from "./live-beat";
+import { BeatEnvelope, compact, melBank } from "./live-beat";
 import type { MelBand } from "./live-beat";
 
 export const RATE = ANALYSIS.rate;
@@ -58,9 +58,9 @@ export class LiveAnalyser {
   private readonly lag: number;
   private readonly history: Float64Array[];
   /** the samples not yet out of every window, from absolute index `start` */
-  private buffer: Float32Array;
-  private held = 0;
-  private start = 0;
+  buffer: Float32Array;
+  held = 0;
+  start = 0;
   private next = 0;
 
   constructor(readonly sampleRate: number) {
@@ -120,16 +120,7 @@ export class LiveAnalyser {
 
   /** Drop the samples every later window has passed, and make room for `more`. */
   private compact(more: number): void {
-    const keepFrom = this.centre(this.next) - this.half;
-    const drop = Math.max(0, Math.min(keepFrom - this.start, this.held));
-    this.buffer.copyWithin(0, drop, this.held);
-    this.held -= drop;
-    this.start += drop;
-    if (this.held + more > this.buffer.length) {
-      const grown = new Float32Array(2 * (this.held + more));
-      grown.set(this.buffer.subarray(0, this.held));
-      this.buffer = grown;
-    }
+    compact(this, this.centre(this.next) - this.half, more);
   }
 
   private analyse(index: number, centre: number): Frame {

@@ -53,6 +53,24 @@ export function melBank(sampleRate: number, N: number,
   return out;
 }
 
+/** A stream's samples kept for its analysis windows: `held` samples from absolute index
+ * `start`. */
+export interface Held { buffer: Float32Array; held: number; start: number; }
+
+/** Drop the samples before absolute index `keepFrom` (every later window has passed them), and
+ * make room for `more`. */
+export function compact(kept: Held, keepFrom: number, more: number): void {
+  const drop = Math.max(0, Math.min(keepFrom - kept.start, kept.held));
+  kept.buffer.copyWithin(0, drop, kept.held);
+  kept.held -= drop;
+  kept.start += drop;
+  if (kept.held + more > kept.buffer.length) {
+    const grown = new Float32Array(2 * (kept.held + more));
+    grown.set(kept.buffer.subarray(0, kept.held));
+    kept.buffer = grown;
+  }
+}
+
 export const FRAME_RATE = ANALYSIS.onset.beat_sample_rate / ANALYSIS.onset.beat_hop;
 const SECONDS = 2048 / ANALYSIS.onset.beat_sample_rate; // librosa's n_fft at its rate
 const TOP_DB = 80;
@@ -76,10 +94,10 @@ export class BeatEnvelope {
   private loudest = FIRST_LOUDEST;
   /** the power's scale to librosa's (its 2048-sample window at 22050 Hz, its bin width) */
   private readonly scale: number;
-  /** samples from absolute index `start` (zeros before the stream) */
-  private buffer: Float32Array;
-  private held: number;
-  private start: number;
+  /** samples from absolute index `start` (zeros before the stream), `held` of them */
+  buffer: Float32Array;
+  held: number;
+  start: number;
   private next = 0;
 
   constructor(readonly sampleRate: number) {
@@ -119,15 +137,7 @@ export class BeatEnvelope {
   }
 
   private compact(more: number): void {
-    const drop = Math.max(0, Math.min(this.centre(this.next) - this.half - this.start, this.held));
-    this.buffer.copyWithin(0, drop, this.held);
-    this.held -= drop;
-    this.start += drop;
-    if (this.held + more > this.buffer.length) {
-      const grown = new Float32Array(2 * (this.held + more));
-      grown.set(this.buffer.subarray(0, this.held));
-      this.buffer = grown;
-    }
+    compact(this, this.centre(this.next) - this.half, more);
   }
 
   private analyse(from: number): [number, number] {

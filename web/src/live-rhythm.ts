@@ -5,6 +5,7 @@
 // so far instead of the song's), librosa's tempo (the autocorrelation tempogram averaged over
 // the frames so far, the same log-normal prior around 120 BPM) — and beats predicted on that
 // tempo's grid at the phase where the 100-frames-per-second envelope's comb peaks.
+import FFT from "fft.js";
 import ANALYSIS from "../../src/eigendance/music/analysis.json";
 import { RATE } from "./live-analysis";
 import { FRAME_RATE as BEAT_RATE } from "./live-beat";
@@ -51,6 +52,12 @@ export class LiveRhythm {
   /** the tempo's envelope (live-beat.ts, frame k at k/BEAT_RATE s): a ring */
   private readonly pooled = new Float64Array(2 * WIN);
   private pooledCount = 0;
+  /** the autocorrelation's FFT (2·WIN rounded up to a power of two: no wrap-around) */
+  private readonly fft = new FFT(2 ** Math.ceil(Math.log2(2 * WIN)));
+  private readonly fftInput = new Float64Array(this.fft.size);
+  private readonly fftSpectrum = this.fft.createComplexArray();
+  private readonly fftPower = this.fft.createComplexArray();
+  private readonly fftOut = this.fft.createComplexArray();
   private readonly window = Float64Array.from({ length: WIN },
     (_, n) => 0.5 - 0.5 * Math.cos((2 * Math.PI * n) / WIN));
 
@@ -67,7 +74,7 @@ export class LiveRhythm {
       this.largest = Math.max(this.largest, mean);
       changed = this.pickPeak(k - POST_AVG + 1) || changed;
     }
-    if (j % TEMPO_EVERY === 0 && this.gramFrames) this.tempo = this.estimateTempo();
+    if (j % TEMPO_EVERY === 0 && this.pooledCount) this.tempo = this.estimateTempo();
     if (this.tempo > 0) changed = this.predictBeat(j) || changed;
     return changed;
   }
@@ -111,32 +118,48 @@ export class LiveRhythm {
   }
 
   /** One column of librosa's autocorrelation tempogram of the tempo's envelope (Hann window of
-   * WIN frames centred on frame c, normalised by its lag-0 value), added to the sum. */
-  private addToTempogram(c: number): void {
-    const w = new Float64Array(WIN);
-    for (let n = 0; n < WIN; n++) w[n] = this.pooledAt(c - WIN / 2 + n) * this.window[n];
-    const column = new Float64Array(WIN);
-    for (let lag = 0; lag < WIN; lag++) {
-      let s = 0;
-      for (let n = lag; n < WIN; n++) s += w[n] * w[n - lag];
-      column[lag] = s;
+   * WIN frames centred on frame c, zeros where the envelope has no frame yet, normalised by its
+   * lag-0 value), added to `sum`; returns whether it was. */
+  private addColumn(c: number, sum: Float64Array): boolean {
+    const x = this.fftInput;
+    x.fill(0);
+    for (let n = 0; n < WIN; n++) x[n] = this.pooledAt(c - WIN / 2 + n) * this.window[n];
+    const spectrum = this.fftSpectrum, power = this.fftPower, out = this.fftOut;
+    this.fft.realTransform(spectrum, x);
+    this.fft.completeSpectrum(spectrum);
+    for (let q = 0; q < spectrum.length; q += 2) {
+      power[q] = spectrum[q] ** 2 + spectrum[q + 1] ** 2;
+      power[q + 1] = 0;
     }
-    let peak = 0;
-    for (const v of column) peak = Math.max(peak, Math.abs(v));
-    if (!(peak > 0)) return;
-    for (let lag = 0; lag < WIN; lag++) this.gram[lag] += column[lag] / peak;
-    this.gramFrames++;
+    this.fft.inverseTransform(out, power); // the autocorrelation, lags 0 … WIN − 1 first
+    const peak = out[0];
+    if (!(peak > 0)) return false;
+    for (let lag = 0; lag < WIN; lag++) sum[lag] += out[2 * lag] / peak;
+    return true;
+  }
+
+  private addToTempogram(c: number): void {
+    if (this.addColumn(c, this.gram)) this.gramFrames++;
   }
 
   /** librosa.feature.tempo of the mean tempogram: argmax over lags of log1p(10⁶·tg) + the
-   * log-normal prior (one octave around 120 BPM), tempi ≥ 320 BPM excluded. */
+   * log-normal prior (one octave around 120 BPM), tempi ≥ 320 BPM excluded. The mean takes the
+   * columns whose window is complete and, as librosa's over a whole song does at its end, the
+   * last WIN/2 frames' columns with zeros for the frames still to come. */
   private estimateTempo(): number {
+    const gram = Float64Array.from(this.gram);
+    let columns = this.gramFrames;
+    const first = Math.max(0, this.pooledCount - WIN / 2);
+    for (let c = first + ((STRIDE - (first % STRIDE)) % STRIDE); c < this.pooledCount; c += STRIDE) {
+      if (this.addColumn(c, gram)) columns++;
+    }
+    if (!columns) return 0;
     let best = -Infinity, bestBpm = 0;
     for (let lag = 1; lag < WIN; lag++) {
       const bpm = (60 * BEAT_RATE) / lag;
       if (bpm >= MAX_BPM) continue;
       const prior = -0.5 * (Math.log2(bpm) - Math.log2(START_BPM)) ** 2;
-      const score = Math.log1p(1e6 * (this.gram[lag] / this.gramFrames)) + prior;
+      const score = Math.log1p(1e6 * (gram[lag] / columns)) + prior;
       if (score > best) { best = score; bestBpm = bpm; }
     }
     return bestBpm;
