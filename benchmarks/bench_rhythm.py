@@ -22,8 +22,15 @@ CC BY 4.0). No annotated real song could be reached from PyPI, npm or Debian.
    F at ±70 ms; "free" is the thesis's free-running palette, "beat" the tempo lock.
 2 and 3 also run on five shared real recordings (45 s each; country, jazz, lo-fi, pop,
 classical), scored against the beats of librosa's default call: no annotations.
+4. Agreement on the eleven shared real recordings (whole files, no annotations): our tempo and
+   librosa's default call's, beat F of ours against its beats (±70 ms, first 5 s trimmed; not
+   trimmed for a file shorter than 10 s), the meter and the number of sections we find, and
+   the rhythm's CPU seconds per minute of audio. Downbeat F (1.) is ours against the pieces'
+   bars; librosa's default call has no downbeats: beside it, every 4th of its beats from the
+   first (a naive bar).
 
 Run: EIGENDANCE_SHARED_DATA=/path/to/shared/data .venv/bin/python benchmarks/bench_rhythm.py
+(`--real` runs 4. alone).
 """
 
 from __future__ import annotations
@@ -74,10 +81,10 @@ def clips(folder: str) -> list[tuple[str, str, np.ndarray, np.ndarray | None]]:
     found = []
     for make in PIECES:
         piece = make()
-        found.append((piece.name, piece.render(folder), piece.beats, piece.onsets))
+        found.append((piece.name, piece.render(folder), piece.beats, piece.onsets, piece.metre))
     kick = shared_path("audio", "beatnet_808kick120bpm.mp3")
     if os.path.exists(kick):
-        found.append(("808kick_120bpm (real)", kick, np.arange(0, 10.0, 0.5), None))
+        found.append(("808kick_120bpm (real)", kick, np.arange(0, 10.0, 0.5), None, 0))
     return found
 
 
@@ -86,9 +93,10 @@ def analysis(clips_) -> dict:
 
     Spectrogram.from_samples(np.random.default_rng(0).normal(0, 0.1, 44100), 44100)  # JIT
     print(f"{'clip':28s} {'beat F ours':>11s} {'librosa':>8s} {'onset F ours':>12s} "
-          f"{'librosa':>8s} {'tempo':>6s} {'CPU s/min: ours':>15s} {'all':>5s} {'librosa':>8s}")
+          f"{'librosa':>8s} {'tempo':>6s} {'CPU s/min: ours':>15s} {'all':>5s} {'librosa':>8s} "
+          f"{'downbeat F':>10s} {'naive':>6s}")
     songs, ours_f, theirs_f = {}, [], []
-    for name, path, beats, onsets in clips_:
+    for name, path, beats, onsets, metre in clips_:
         rate, chunks = open_audio(path)
         samples = np.concatenate(list(chunks))
         minutes = len(samples) / rate / 60
@@ -111,9 +119,13 @@ def analysis(clips_) -> dict:
             f"{mir_eval.onset.f_measure(onsets, rhythm.onsets, window=0.05)[0]:.2f}"
         their_onset = "–" if onsets is None else \
             f"{mir_eval.onset.f_measure(onsets, their_onsets, window=0.05)[0]:.2f}"
+        bars = naive = "–"
+        if metre:
+            bars = f"{beat_f(beats[::metre], rhythm.downbeats):.2f}"
+            naive = f"{beat_f(beats[::metre], their_beats[::4]):.2f}"
         print(f"{name:28s} {ours:11.2f} {theirs:8.2f} {onset:>12s} {their_onset:>8s} "
               f"{rhythm.tempo:6.1f} {ours_time - plain_time:15.2f} {ours_time:5.2f} "
-              f"{their_time:8.2f}")
+              f"{their_time:8.2f} {bars:>10s} {naive:>6s}")
         songs[name] = (song, beats)
     print(f"{'mean':28s} {np.mean(ours_f):11.2f} {np.mean(theirs_f):8.2f}   (CPU seconds per "
           "minute of audio after the JIT warm-up; ours: the rhythm's share, all: the whole "
@@ -200,8 +212,42 @@ def real_songs(seconds: float = 45.0) -> dict:
     return songs
 
 
+def agreement() -> None:
+    """4.: ours against librosa's default call on every shared real recording."""
+    import librosa
+
+    folder = shared_path("audio")
+    names = sorted(n for n in os.listdir(folder) if n.endswith((".ogg", ".mp3")))
+    print("\nshared real recordings (no annotations): ours vs librosa's default call")
+    print(f"{'recording':34s} {'s':>6s} {'tempo ours':>10s} {'librosa':>8s} {'beat F':>7s} "
+          f"{'meter':>5s} {'sections':>8s} {'rhythm CPU s/min':>16s}")
+    for name in names:
+        rate, chunks = open_audio(os.path.join(folder, name))
+        samples = np.concatenate(list(chunks))
+        minutes = len(samples) / rate / 60
+        start = time.process_time()
+        song = Spectrogram.from_samples(samples, rate)
+        ours_time = time.process_time() - start
+        start = time.process_time()
+        Spectrogram.from_samples(samples, rate, rhythm=False)
+        rhythm_time = (ours_time - (time.process_time() - start)) / minutes
+        resampled = librosa.resample(samples, orig_sr=rate, target_sr=22050)
+        tempo, beats = librosa.beat.beat_track(y=resampled, sr=22050, units="time")
+        rhythm = song.rhythm
+        short = song.duration < 10
+        f = mir_eval.beat.f_measure(np.asarray(beats), rhythm.beats) if short else \
+            beat_f(beats, rhythm.beats)
+        print(f"{name[:34]:34s} {song.duration:6.1f} {rhythm.tempo:10.1f} "
+              f"{float(np.ravel(tempo)[0]):8.1f} {f:7.2f} {rhythm.meter:5d} "
+              f"{len(rhythm.sections):8d} {rhythm_time:16.2f}")
+
+
 def main() -> None:
     print(f"load: {os.getloadavg()[0]:.1f} (1-minute average, 2 cores)")
+    Spectrogram.from_samples(np.random.default_rng(0).normal(0, 0.1, 44100), 44100)  # JIT
+    agreement()
+    if "--real" in sys.argv:
+        return
     with tempfile.TemporaryDirectory() as folder:
         songs = analysis(clips(folder))
     songs.update(real_songs())

@@ -3,13 +3,14 @@ import numpy as np
 import pytest
 import soundfile
 
+import eigendance.music.analyser as stream
 import eigendance.music.decode as decode
 import eigendance.music.spectrogram as audio
 from eigendance.cli import main
 from eigendance.errors import EigendanceError
 from eigendance.music.decode import read_audio
 from eigendance.music.demo_music import demo_track, write_demo_wav
-from eigendance.music.rhythm import FILE_KEYS
+from eigendance.music.rhythm import FILE_KEYS, OPTIONAL_KEYS
 from eigendance.music.spectrogram import Spectrogram, window_length
 from helpers import fixture_path
 
@@ -32,7 +33,7 @@ def pcm16(samples):
 def test_hann_is_scipy_periodic_hann():
     from scipy.signal import get_window
 
-    np.testing.assert_allclose(audio.hann(2048), get_window("hann", 2048), atol=1e-15)
+    np.testing.assert_allclose(stream.hann(2048), get_window("hann", 2048), atol=1e-15)
 
 
 def test_exponential_smoothing_matches_recursion_for_any_memory():
@@ -42,7 +43,7 @@ def test_exponential_smoothing_matches_recursion_for_any_memory():
         for j, v in enumerate(values):
             state = memory * state + (1 - memory) * v
             expected[j] = state
-        np.testing.assert_allclose(audio.exponential_smoothing(values, memory, [0.5, 0.2]),
+        np.testing.assert_allclose(stream.exponential_smoothing(values, memory, [0.5, 0.2]),
                                    expected, rtol=1e-9, atol=1e-12)
 
 
@@ -117,13 +118,13 @@ def test_chunked_analysis_matches_one_chunk(monkeypatch):
     samples, sr = demo_track(2.0)
     whole = Spectrogram.from_samples(samples, sr)
     monkeypatch.setattr(audio, "CHUNK_SAMPLES", 777)
-    monkeypatch.setattr(audio, "FRAME_BATCH", 5)
+    monkeypatch.setattr(stream, "FRAME_BATCH", 5)
     chunked = Spectrogram.from_samples(samples, sr)
     np.testing.assert_array_equal(whole.values, chunked.values)
 
 
 def test_streaming_buffer_stays_bounded():
-    analyser = audio._Analyser(SR)
+    analyser = stream.Analyser(SR)
     rng = np.random.default_rng(0)
     largest = 0
     for _ in range(40):  # 40 chunks of 0.25 s: the buffer holds one chunk and a window at most
@@ -135,7 +136,7 @@ def test_streaming_buffer_stays_bounded():
 
 def test_frame_centres_round_half_up():
     # 22050/100 = 220.5 samples per frame: c_1 = 221, c_3 = 662 (not banker's rounding).
-    np.testing.assert_array_equal(audio.frame_centres(0, 4, 22050, 100), [0, 221, 441, 662])
+    np.testing.assert_array_equal(stream.frame_centres(0, 4, 22050, 100), [0, 221, 441, 662])
 
 
 def test_at_interpolates_linearly_and_clamps():
@@ -154,7 +155,7 @@ def test_save_load_round_trip(tmp_path):
     np.testing.assert_array_equal(loaded.band_edges, spectrogram.band_edges)
     assert (loaded.rate, loaded.sample_rate, loaded.duration) == (50.0, SR, spectrogram.duration)
     with np.load(tmp_path / "s.npz") as data:
-        assert set(data.files) == {*audio.FORMAT_KEYS, "version", *FILE_KEYS}
+        assert set(data.files) == {*audio.FORMAT_KEYS, "version", *FILE_KEYS, *OPTIONAL_KEYS}
         assert data["values"].dtype == np.float32
 
 

@@ -44,18 +44,18 @@ SEGMENT = 50  # frames re-aligned at once where the capture slipped
 SLIP = 30  # frames left out after a slip (a window and 3.75 smoothing time constants)
 
 
-def fake_clip(folder, rate=44100, seconds=None):
+def fake_clip(folder, rate=44100, seconds=None, source=CLIP):
     """The real clip (22.05 kHz) as a 16-bit WAV at `rate` (Chromium's capture rate: 44.1 kHz,
     so it reaches the page unresampled), the file the fake microphone plays; it starts with
     half a second of silence, as a room does before the music (the capture starts a few
     chunks into the file, so the clip itself starts whole)."""
-    samples, sample_rate = read_audio(CLIP)
+    samples, sample_rate = read_audio(source)
     samples = mono(samples)
     if seconds:
         samples = samples[:int(seconds * sample_rate)]
     samples = np.concatenate([np.zeros(sample_rate // 2), samples])
     samples = resample_poly(samples, rate, sample_rate)
-    path = os.path.join(folder, f"clip-{rate}.wav")
+    path = os.path.join(folder, f"{os.path.basename(source)}-{rate}.wav")
     soundfile.write(path, samples, rate, subtype="PCM_16")
     return path
 
@@ -209,6 +209,23 @@ def test_live_input_matches_the_offline_analysis(browser, live_server, clip, tmp
     assert len(final["beats"]) >= 20 and max(ticks) > 0.3 and min(ticks) < max(ticks)
     assert moved > 1e-3  # the first tile dances to the input
     assert np.ptp(np.array(rig_moves), axis=0).max() > 1e-3  # and so does the rig
+
+
+COUNTRY = fixture_path("audio", "emegeme_country_20s-45s.ogg")  # a real song, CC0
+
+
+def test_live_tempo_of_a_real_song_is_the_offline_tempo(browser, live_server, tmp_path):
+    """A real country song (whose tempo librosa's tracker finds at 72 BPM on this excerpt, and
+    a tracker on a 100-frames-per-second envelope at 144): after 20 s the page's tempo is the
+    offline tempo of the same samples within 4%, not its double or half."""
+    clip = fake_clip(str(tmp_path), seconds=22, source=COUNTRY)
+    with chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"],
+                  live_server["url"], "?test&source=mic&size=1&scale=0.3") as page:
+        final = wait_for(page, lambda s: s["seconds"] > 20.5, 60)
+        assert page.evaluate("window.eigendance.info().error") is None
+    offline = Spectrogram.from_file(clip, bands=16).rhythm.tempo
+    print(f"\nlive tempo {final['tempo']:.1f} BPM, offline {offline:.1f} BPM")
+    assert abs(final["tempo"] - offline) <= 0.04 * offline
 
 
 def test_source_mic_starts_when_the_first_model_is_a_rig(browser, web_files, clip, tmp_path):

@@ -28,6 +28,7 @@ from eigendance.music.demo_music import demo_track
 from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.onset import BeatFeatures
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
@@ -183,10 +184,14 @@ def live_reference():
     cases = []
     for rate in LIVE_RATES:
         spectrogram = Spectrogram.from_samples(live_signal(rate), rate)
+        stream = BeatFeatures(rate)  # librosa's onset strength: the live tempo's envelope
+        stream.feed(live_signal(rate))
+        beat = stream.finish()[0]
         frames = list(range(0, len(spectrogram.values), LIVE_EVERY))
         cases.append({"sample_rate": rate, "frames": frames,
                       "values": np.round(spectrogram.values[frames], 6).tolist(),
                       "onset": np.round(spectrogram.rhythm.onset_strength[frames], 5).tolist(),
+                      "beat": np.round(beat, 5).tolist(),
                       "edges": spectrogram.band_edges.tolist()})
     return {"live.json": json.dumps({"cases": cases}, indent=0).encode()}
 

@@ -5,6 +5,8 @@
 // come from the one file the Python analysis reads (src/eigendance/music/analysis.json).
 import FFT from "fft.js";
 import ANALYSIS from "../../src/eigendance/music/analysis.json";
+import { BeatEnvelope, compact, melBank } from "./live-beat";
+import type { MelBand } from "./live-beat";
 
 export const RATE = ANALYSIS.rate;
 export const BANDS = ANALYSIS.bands;
@@ -24,53 +26,12 @@ export function bandEdges(sampleRate: number, bands = BANDS): Float64Array {
   return edges;
 }
 
-/** librosa's Slaney mel scale (linear below 1 kHz, logarithmic above). */
-function hzToMel(f: number): number {
-  const fSp = 200 / 3, minLogHz = 1000, minLogMel = minLogHz / fSp, step = Math.log(6.4) / 27;
-  return f >= minLogHz ? minLogMel + Math.log(f / minLogHz) / step : f / fSp;
-}
-
-function melToHz(m: number): number {
-  const fSp = 200 / 3, minLogHz = 1000, minLogMel = minLogHz / fSp, step = Math.log(6.4) / 27;
-  return m >= minLogMel ? minLogHz * Math.exp(step * (m - minLogMel)) : fSp * m;
-}
-
-/** One triangular band of the mel filter bank: its first bin and weights. */
-export interface MelBand { first: number; weights: Float64Array; centre: number; }
-
-/** librosa.filters.mel(sr, n_fft = N, n_mels, fmin = 0, fmax, norm = "slaney") as sparse rows,
- * with each band's centre (Hz). */
-export function melBank(sampleRate: number, N: number,
-                        bands = ANALYSIS.onset.mel_bands): MelBand[] {
-  const fmax = Math.min(ANALYSIS.onset.mel_fmax, sampleRate / 2);
-  const top = hzToMel(fmax);
-  const mel = Float64Array.from({ length: bands + 2 }, (_, i) => melToHz((i * top) / (bands + 1)));
-  const bins = N / 2 + 1;
-  const out: MelBand[] = [];
-  for (let m = 0; m < bands; m++) {
-    const lowWidth = mel[m + 1] - mel[m], highWidth = mel[m + 2] - mel[m + 1];
-    const norm = 2 / (mel[m + 2] - mel[m]);
-    const weights: number[] = [];
-    let first = -1;
-    for (let q = 0; q < bins; q++) {
-      const f = (q * sampleRate) / N;
-      const w = Math.max(0, Math.min((f - mel[m]) / lowWidth, (mel[m + 2] - f) / highWidth));
-      if (w > 0) {
-        if (first < 0) first = q;
-        weights.length = q - first;
-        weights.push(w * norm);
-      }
-    }
-    out.push({ first: Math.max(first, 0), weights: Float64Array.from(weights, (w) => w || 0),
-      centre: mel[m + 1] });
-  }
-  return out;
-}
-
-/** One analysis frame: the smoothed loudness of every band, the onset strength and the bass
- * envelope (dB per frame), and the frame's centre (a sample index of the stream). */
+/** One analysis frame: the smoothed loudness of every band, the onset strength (dB per frame),
+ * the frame's centre (a sample index of the stream), and librosa's onset strength (live-beat.ts,
+ * 22050/512 frames per second: [median, mean] over mels) of the frames completed since the
+ * frame before. */
 export interface Frame { index: number; centre: number; values: Float32Array; onset: number;
-  bass: number; }
+  beat: [number, number][]; }
 
 /** The streaming analysis of one mono stream at `sampleRate`: `push` samples, get frames
  * (100 per second) once their window is complete. Frame j is centred on sample
@@ -92,13 +53,14 @@ export class LiveAnalyser {
   private readonly memory: number;
   private readonly state: Float64Array;
   private readonly mel: MelBand[];
-  private readonly bass: boolean[];
+  private readonly beat: BeatEnvelope;
+  private beatValues: [number, number][] = [];
   private readonly lag: number;
   private readonly history: Float64Array[];
   /** the samples not yet out of every window, from absolute index `start` */
-  private buffer: Float32Array;
-  private held = 0;
-  private start = 0;
+  buffer: Float32Array;
+  held = 0;
+  start = 0;
   private next = 0;
 
   constructor(readonly sampleRate: number) {
@@ -127,7 +89,7 @@ export class LiveAnalyser {
     this.memory = ANALYSIS.smoothing > 0 ? Math.exp(-1 / (RATE * ANALYSIS.smoothing)) : 0;
     this.state = new Float64Array(B);
     this.mel = melBank(sampleRate, N);
-    this.bass = this.mel.map((band) => band.centre < ANALYSIS.onset.bass_fmax);
+    this.beat = new BeatEnvelope(sampleRate);
     this.lag = Math.max(1, Math.round(ANALYSIS.onset.lag * RATE));
     this.history = Array.from({ length: this.lag },
       () => new Float64Array(this.mel.length).fill(ANALYSIS.onset.floor_db));
@@ -144,6 +106,7 @@ export class LiveAnalyser {
     if (this.held + samples.length > this.buffer.length) this.compact(samples.length);
     this.buffer.set(samples, this.held);
     this.held += samples.length;
+    this.beatValues.push(...this.beat.push(samples));
     const frames: Frame[] = [];
     const end = this.start + this.held;
     for (;;) {
@@ -157,16 +120,7 @@ export class LiveAnalyser {
 
   /** Drop the samples every later window has passed, and make room for `more`. */
   private compact(more: number): void {
-    const keepFrom = this.centre(this.next) - this.half;
-    const drop = Math.max(0, Math.min(keepFrom - this.start, this.held));
-    this.buffer.copyWithin(0, drop, this.held);
-    this.held -= drop;
-    this.start += drop;
-    if (this.held + more > this.buffer.length) {
-      const grown = new Float32Array(2 * (this.held + more));
-      grown.set(this.buffer.subarray(0, this.held));
-      this.buffer = grown;
-    }
+    compact(this, this.centre(this.next) - this.half, more);
   }
 
   private analyse(index: number, centre: number): Frame {
@@ -191,16 +145,18 @@ export class LiveAnalyser {
       this.state[b] = this.memory * this.state[b] + (1 - this.memory) * v;
       values[b] = this.state[b];
     }
-    const [onset, bass] = this.onsetStrength();
-    return { index, centre, values, onset, bass };
+    const onset = this.onsetStrength();
+    const beat = this.beatValues;
+    this.beatValues = [];
+    return { index, centre, values, onset, beat };
   }
 
-  /** e_j = mean_m max(0, S_j,m − S_{j−L},m) of the mel power in dB (floor −100 dB), and the
-   * same mean over the bass bands (docs/design.md#rhythm). */
-  private onsetStrength(): [number, number] {
+  /** e_j = mean_m max(0, S_j,m − S_{j−L},m) of the mel power in dB (floor −100 dB)
+   * (docs/design.md#rhythm). */
+  private onsetStrength(): number {
     const level = this.history.shift()!; // S_{j−L}, reused for S_j
     const previous = Float64Array.from(level);
-    let sum = 0, bass = 0, bassCount = 0;
+    let sum = 0;
     for (let m = 0; m < this.mel.length; m++) {
       const { first, weights } = this.mel[m];
       let power = 0;
@@ -208,9 +164,8 @@ export class LiveAnalyser {
       level[m] = Math.max(10 * Math.log10(Math.max(power, 1e-30)), ANALYSIS.onset.floor_db);
       const flux = Math.max(0, level[m] - previous[m]);
       sum += flux;
-      if (this.bass[m]) { bass += flux; bassCount++; }
     }
     this.history.push(level);
-    return [sum / this.mel.length, bassCount ? bass / bassCount : 0];
+    return sum / this.mel.length;
   }
 }

@@ -49,7 +49,7 @@ export class LiveTake {
       s.times[j] = j / RATE;
       s.onsetStrength[j] = frame.onset;
       s.frames = Math.max(s.frames, j + 1);
-      events = this.rhythm.push(frame.onset) || events;
+      events = this.rhythm.push(frame.onset, frame.beat) || events;
     }
     s.duration = (s.frames - 1) / RATE;
     if (events) {

@@ -1,7 +1,17 @@
-"""Rhythm next to the spectrogram: onset strength, onsets, beats, tempo (docs/design.md#rhythm).
+"""Rhythm next to the spectrogram: onset strength, onsets, beats, tempo, bars and sections
+(docs/design.md#rhythm).
 
-The onset-strength envelope is ours, computed frame by frame by the spectrogram's own analysis
-(same frames, same window, same frame rate), so that a streaming analysis can reproduce it:
+Beats and the tempo are librosa's default call, `librosa.beat.beat_track(y=y, sr=22050)`, on the
+envelope `music.onset.BeatFeatures` computes in bounded memory (librosa's onset strength, median
+over mels, at 22050/512 frames per second); the tempo is librosa's (feature.tempo: the
+autocorrelation tempogram averaged over the song, a log-normal prior around 120 BPM), its
+tempogram computed in chunks of CHUNK_SECONDS with the window's half on either side, so that an
+hour needs no more memory than a few minutes and every column is the one librosa computes.
+Onsets are librosa's onset_detect on the mean-over-mels envelope. Bars and sections come from
+`music.structure`.
+
+The file's `onset_strength` is the streaming envelope that the page's live analysis reproduces
+frame by frame (`OnsetEnvelope`, at the spectrogram's frames):
 
 - mel power P_j,m = Σ_q M_m,q·|X_j(q)|², M librosa's mel filter bank (MEL_BANDS Slaney bands
   from 0 to min(MEL_FMAX, sr/2) Hz over the window's bins), |X| the spectrogram's magnitude
@@ -11,12 +21,9 @@ The onset-strength envelope is ours, computed frame by frame by the spectrogram'
 - e_j = mean over m of max(0, S_j,m − S_{j−L},m), L = max(1, round(LAG·rate)) frames, with
   S_{j<0} = FLOOR_DB (silence before the song).
 
-Onsets, beats and the tempo are librosa's (onset_detect, beat_track, feature.tempo) run on
-that envelope at the spectrogram's frame rate (sr = rate, hop_length = 1); the tempo's
-tempogram is averaged over chunks of CHUNK_SECONDS so that an hour of audio needs no more memory
-than a few minutes. The beat phase B(t) (`beat_phase`) counts beats continuously: B(b_i) = i,
-linear between beats and extrapolated with the first and last intervals; the tempo over time is
-60·dB/dt (beats per minute, piecewise constant between beats).
+The beat phase B(t) (`beat_phase`) counts beats continuously: B(b_i) = i, linear between beats
+and extrapolated with the first and last intervals; the tempo over time is 60·dB/dt (beats per
+minute, piecewise constant between beats).
 """
 
 from __future__ import annotations
@@ -30,18 +37,18 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.files import checked_array
 from eigendance.music.constants import ANALYSIS
+from eigendance.music.onset import FRAME_RATE
+from eigendance.music.structure import bars, sections
 
 # From analysis.json, which the page's live analysis reads too:
 MEL_BANDS = int(ANALYSIS["onset"]["mel_bands"])  # bands of the onset envelope's mel spectrum
 MEL_FMAX = float(ANALYSIS["onset"]["mel_fmax"])  # Hz: librosa's default analysis sees no higher
 FLOOR_DB = float(ANALYSIS["onset"]["floor_db"])  # dB of full scale: the mel power's floor
 LAG = float(ANALYSIS["onset"]["lag"])  # s: the flux compares a frame with the one this earlier
-CHUNK_SECONDS = 60.0  # the tempogram is averaged over chunks this long
-BASS_FMAX = float(ANALYSIS["onset"]["bass_fmax"])  # Hz: the bass mel bands are centred below
-OFFBEAT_RATIO = 1.5  # beats move half a beat when the bass hits there this much harder
-FAST = 160.0  # BPM: above this, every other beat is kept when the bass marks one parity
+CHUNK_SECONDS = 60.0  # the tempogram is computed over chunks this long
+AC_SIZE = float(ANALYSIS["onset"]["tempo_window"])  # s: librosa.feature.tempo's ac_size
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
-QUIET = 1e-3  # an envelope whose 99th percentile is below this (dB per frame) is silence
+QUIET = 1e-3  # an envelope whose 99th percentile is below this is silence
 
 
 class OnsetEnvelope:
@@ -61,9 +68,6 @@ class OnsetEnvelope:
             warnings.simplefilter("ignore")
             mel = librosa.filters.mel(sr=sample_rate, n_fft=window, n_mels=MEL_BANDS,
                                       fmin=0.0, fmax=min(MEL_FMAX, sample_rate / 2))
-        centres = librosa.mel_frequencies(MEL_BANDS + 2, fmin=0.0,
-                                          fmax=min(MEL_FMAX, sample_rate / 2))[1:-1]
-        self.low = centres < BASS_FMAX  # the bands of the bass envelope
         used = np.flatnonzero(mel.any(axis=0))
         self.stop = int(used[-1]) + 1 if len(used) else 1
         self.mel = np.ascontiguousarray(mel[:, :self.stop].T, dtype=np.float32)  # (bins, m)
@@ -71,8 +75,7 @@ class OnsetEnvelope:
         self.previous = np.full((self.lag, MEL_BANDS), FLOOR_DB, dtype=np.float32)
 
     def feed(self, magnitude: np.ndarray) -> np.ndarray:
-        """The envelope of the next frames: e_j and the bass envelope (the same mean over the
-        mel bands centred below BASS_FMAX).
+        """The envelope e_j of the next frames.
 
         Parameters
         ----------
@@ -80,29 +83,29 @@ class OnsetEnvelope:
 
         Returns
         -------
-        (F, 2) float32, dB per frame: [:, 0] e_j, [:, 1] the bass envelope.
+        (F,) float32, dB per frame.
         """
         power = np.square(magnitude[:, :self.stop], dtype=np.float32) @ self.mel
         level = np.maximum(10 * np.log10(np.maximum(power, 1e-30)), FLOOR_DB)
         stacked = np.concatenate([self.previous, level])
         flux = np.maximum(stacked[self.lag:] - stacked[:-self.lag], 0)
         self.previous = stacked[-self.lag:]
-        bass = flux[:, self.low].mean(axis=1) if self.low.any() else np.zeros(len(flux))
-        return np.stack([flux.mean(axis=1), bass], axis=1).astype(np.float32)
+        return flux.mean(axis=1).astype(np.float32)
 
 
 @dataclass
 class Rhythm:
     """What the rhythm analysis found in a song (docs/design.md#rhythm).
 
-    onset_strength (T,) ≥ 0 at the spectrogram's frames (dB per frame); onsets, beats and
-    downbeats: times in seconds, ascending (downbeats: empty, librosa's tracker gives none);
-    tempo: the song's tempo, beats per minute (0 when no beat was found); rate: frames per
-    second of `onset_strength`.
+    onset_strength (T,) ≥ 0 at the spectrogram's frames (dB per frame); onsets, beats,
+    downbeats (the beats that start a bar, `music.structure.bars`) and sections (the start
+    times of the song's parts after the first, `music.structure.sections`): times in seconds,
+    ascending; tempo: the song's tempo, beats per minute (0 when no beat was found); rate:
+    frames per second of `onset_strength`.
 
     Parameters
     ----------
-    onset_strength, onsets, beats, tempo, rate, downbeats : as above.
+    onset_strength, onsets, beats, tempo, rate, downbeats, sections : as above.
     """
 
     onset_strength: np.ndarray
@@ -111,6 +114,15 @@ class Rhythm:
     tempo: float
     rate: float
     downbeats: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    sections: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+    @property
+    def meter(self) -> int:
+        """Beats per bar (the median count between downbeats), 0 without bars."""
+        if len(self.downbeats) < 2 or not self.has_beats:
+            return 0
+        index = np.searchsorted(self.beats, self.downbeats)
+        return int(np.median(np.diff(index)))
 
     @property
     def has_beats(self) -> bool:
@@ -191,9 +203,12 @@ def beat_phase(beats, times) -> np.ndarray:
     return np.where(times < beats[0], before, np.where(times > beats[-1], after, inside))
 
 
-def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
-    """librosa's tempo (feature.tempo, its default prior around 120 BPM) of the tempogram
-    averaged over chunks of CHUNK_SECONDS.
+def librosa_tempo(envelope: np.ndarray, rate: float) -> float:
+    """librosa.feature.tempo of the envelope with its defaults (the tempogram averaged over the
+    song, the log-normal prior around 120 BPM), the tempogram built CHUNK_SECONDS at a time.
+
+    Each chunk's tempogram is computed with half its window (AC_SIZE) of the envelope on either
+    side, so every column equals the one of the whole envelope's tempogram.
 
     Parameters
     ----------
@@ -206,108 +221,65 @@ def mean_tempogram_tempo(envelope: np.ndarray, rate: float) -> float:
     """
     import librosa  # heavy (numba): only when a song is analysed
 
+    window = int(math.floor(AC_SIZE * rate))  # librosa.time_to_frames(ac_size)
+    half = window // 2
     chunk = max(1, int(CHUNK_SECONDS * rate))
-    total, frames = None, 0
+    total = np.zeros(window)
     for start in range(0, len(envelope), chunk):
-        piece = envelope[start:start + chunk]
-        gram = librosa.feature.tempogram(onset_envelope=piece, sr=rate, hop_length=1)
-        total = gram.sum(axis=1) if total is None else total + gram.sum(axis=1)
-        frames += gram.shape[1]
-    tempo = librosa.feature.tempo(tg=(total / frames)[:, None], sr=rate, hop_length=1,
+        first = max(0, start - half)
+        stop = min(len(envelope), start + chunk + half)
+        gram = librosa.feature.tempogram(onset_envelope=envelope[first:stop], sr=rate,
+                                         hop_length=1, win_length=window)
+        columns = gram[:, start - first:start - first + min(chunk, len(envelope) - start)]
+        total += columns.sum(axis=1)
+    tempo = librosa.feature.tempo(tg=(total / len(envelope))[:, None], sr=rate, hop_length=1,
                                   aggregate=None)
     return float(np.ravel(tempo)[0])
 
 
-def bass_phase(beats: np.ndarray, bass: np.ndarray, rate: float) -> np.ndarray:
-    """The beats, moved by half a beat where the bass hits the half-beats harder.
-
-    A tracker can lock onto the off-beat (a guitar's "chick", off-beat hi-hats), or onto the
-    eighth notes; the bass and the kick drum mark the beat itself. With h the largest bass
-    envelope within ±30 ms (`bass`, (T,) at `rate`): if the mean h at the midpoints between
-    beats is more than OFFBEAT_RATIO times the mean h at the beats, the midpoints are the
-    beats; then, above FAST beats per minute, if one parity of the beats (even or odd) has a
-    mean h more than OFFBEAT_RATIO times the other's, only that parity is kept.
+def analyse_rhythm(envelope, rate: float, features) -> Rhythm:
+    """Onsets, beats, tempo, bars and sections of a song.
 
     Parameters
     ----------
-    beats : (n,) s, ascending.
-    bass : (T,) the bass envelope at `rate`.
-    rate : frames per second.
-
-    Returns
-    -------
-    (m,) s: the beats, moved or thinned (themselves when the bass says nothing).
-    """
-    if len(beats) < MIN_BEATS or not np.any(bass > 0):
-        return beats
-    reach = max(1, round(0.03 * rate))
-
-    def strength(times):
-        frames = np.clip(np.round(times * rate).astype(np.int64), 0, len(bass) - 1)
-        window = frames[:, None] + np.arange(-reach, reach + 1)
-        return bass[np.clip(window, 0, len(bass) - 1)].max(axis=1).mean()
-
-    middles = (beats[:-1] + beats[1:]) / 2
-    if strength(middles) > OFFBEAT_RATIO * strength(beats[:-1]):
-        beats = middles
-    if 60 / np.median(np.diff(beats)) > FAST and len(beats) >= 2 * MIN_BEATS:
-        even, odd = strength(beats[0::2]), strength(beats[1::2])
-        if max(even, odd) > OFFBEAT_RATIO * min(even, odd):  # a tracker at double tempo
-            beats = beats[0::2] if even >= odd else beats[1::2]
-    return beats
-
-
-def analyse_rhythm(envelope, rate: float, bass=None) -> Rhythm:
-    """Onsets, beats and the tempo from the onset-strength envelope (T,) at `rate` frames/s
-    (bass: the bass envelope (T,) that `bass_phase` checks the beats' phase with).
-
-    Parameters
-    ----------
-    envelope : (T,) onset strength e_j (`OnsetEnvelope`), dB per frame.
-    rate : frames per second.
-    bass : (T,) the bass envelope, or None (no check of the beats' phase).
+    envelope : (T,) the streaming onset strength e_j at the spectrogram's frames (`OnsetEnvelope`),
+        kept as the Rhythm's `onset_strength`.
+    rate : the spectrogram's frames per second.
+    features : `music.onset.BeatFeatures.finish()` of the same song: the median and mean onset
+        strength, mel dB and chroma at FRAME_RATE.
 
     Returns
     -------
     Rhythm (no beat, tempo 0, for silence or fewer than MIN_BEATS beats).
-
-    Example
-    -------
-    >>> rate = 100.0
-    >>> envelope = np.zeros(1000, dtype=np.float32)
-    >>> envelope[25::50] = 10.0                      # a click every 0.5 s: 120 BPM
-    >>> rhythm = analyse_rhythm(envelope, rate)
-    >>> round(rhythm.tempo), len(rhythm.beats) >= 15
-    (120, True)
     """
     import librosa  # heavy (numba): only when a song is analysed
 
     envelope = np.asarray(envelope, dtype=np.float32)
+    median, mean, decibels, chroma = features
     nothing = Rhythm(envelope, np.zeros(0), np.zeros(0), 0.0, float(rate))
-    if len(envelope) < 3 or not np.percentile(envelope, 99) > QUIET:
+    if len(median) < 3 or not np.percentile(mean, 99) > QUIET:
         return nothing
-    onsets = librosa.onset.onset_detect(onset_envelope=envelope, sr=rate, hop_length=1,
+    onsets = librosa.onset.onset_detect(onset_envelope=mean, sr=FRAME_RATE, hop_length=1,
                                         units="time")
-    tempo = mean_tempogram_tempo(envelope, rate)
+    onsets = np.asarray(onsets, dtype=np.float64)
+    tempo = librosa_tempo(median, FRAME_RATE) if median.any() else 0.0
     if not (math.isfinite(tempo) and tempo > 0):
         return Rhythm(envelope, onsets, np.zeros(0), 0.0, float(rate))
-    _, beats = librosa.beat.beat_track(onset_envelope=envelope, sr=rate, hop_length=1,
-                                       bpm=tempo, units="time")
-    beats = np.asarray(beats, dtype=np.float64)
-    if bass is not None:
-        checked = bass_phase(beats, np.asarray(bass, dtype=np.float32), rate)
-        if len(checked) < len(beats) * 0.75:  # every other beat: half the tempo
-            tempo /= 2
-        beats = checked
+    _, frames = librosa.beat.beat_track(onset_envelope=median, sr=FRAME_RATE, hop_length=1,
+                                        bpm=tempo)
+    beats = np.asarray(frames, dtype=np.float64) / FRAME_RATE
     if len(beats) < MIN_BEATS:
         return Rhythm(envelope, onsets, beats, 0.0, float(rate))
-    return Rhythm(envelope, np.asarray(onsets, dtype=np.float64), beats, tempo, float(rate))
+    downbeats = beats[bars(frames, decibels, chroma)]
+    parts = sections(frames, decibels, chroma, len(median) / FRAME_RATE)
+    return Rhythm(envelope, onsets, beats, tempo, float(rate), downbeats, parts)
 
 
 # ---------------------------------------------------------------------------------------------
 # The spectrogram file's rhythm fields (docs/design.md#spectrogram-file, version 2)
 
 FILE_KEYS = ("onset_strength", "onsets", "beats", "downbeats", "tempo")
+OPTIONAL_KEYS = ("sections",)  # version-2 files written before sections existed lack them
 
 
 def rhythm_arrays(rhythm: Rhythm) -> dict:
@@ -319,12 +291,13 @@ def rhythm_arrays(rhythm: Rhythm) -> dict:
 
     Returns
     -------
-    dict of FILE_KEYS → arrays (float32 strength, float64 times and tempo).
+    dict of FILE_KEYS and OPTIONAL_KEYS → arrays (float32 strength, float64 times and tempo).
     """
     return {"onset_strength": np.asarray(rhythm.onset_strength, dtype=np.float32),
             "onsets": np.asarray(rhythm.onsets, dtype=np.float64),
             "beats": np.asarray(rhythm.beats, dtype=np.float64),
             "downbeats": np.asarray(rhythm.downbeats, dtype=np.float64),
+            "sections": np.asarray(rhythm.sections, dtype=np.float64),
             "tempo": np.float64(rhythm.tempo)}
 
 
@@ -350,7 +323,10 @@ def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: flo
     if np.any(strength < 0):
         raise InputError(f"{path}: onset_strength must be ≥ 0")
     times = {}
-    for key in ("onsets", "beats", "downbeats"):
+    for key in ("onsets", "beats", "downbeats", "sections"):
+        if key not in data:  # sections: optional
+            times[key] = np.zeros(0)
+            continue
         values = checked_array(data, key, path, shape=(None,))
         if np.any(np.diff(values) <= 0) or np.any(values < 0) or \
                 np.any(values > duration + 1.0):
@@ -361,5 +337,5 @@ def rhythm_from_arrays(data: dict, path, frames: int, rate: float, duration: flo
     if not 0 <= tempo <= 1000:
         raise InputError(f"{path}: tempo must be 0 … 1000 beats per minute, got {tempo:g}")
     return Rhythm(strength.astype(np.float32), times["onsets"], times["beats"], tempo, rate,
-                  times["downbeats"])
+                  times["downbeats"], times["sections"])
 

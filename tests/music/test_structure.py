@@ -1,0 +1,104 @@
+"""The rhythm on real recordings against librosa's default call, bars (meter and phase) and
+sections (docs/design.md#rhythm)."""
+
+import librosa
+import mir_eval
+import numpy as np
+import pytest
+
+from eigendance.music.decode import read_audio
+from eigendance.music.rhythm import beat_phase
+from eigendance.music.spectrogram import Spectrogram
+from eigendance.music.structure import bar_scores
+from helpers import fixture_path
+
+SR = 22050
+REAL = [fixture_path("audio", "emegeme_country_20s-45s.ogg"),  # CC0, 25 s
+        fixture_path("audio", "kevin_macleod_vibe_ace_0s-21s.ogg")]  # CC BY 3.0, 21 s
+
+
+def at_22050(path):
+    samples, rate = read_audio(path)
+    return librosa.resample(samples, orig_sr=rate, target_sr=SR)
+
+
+def beat_f(reference, estimate):
+    return mir_eval.beat.f_measure(mir_eval.beat.trim_beats(np.asarray(reference)),
+                                   mir_eval.beat.trim_beats(np.asarray(estimate)))
+
+
+@pytest.mark.parametrize("path", REAL)
+def test_real_recordings_have_librosas_tempo_and_beats(path):
+    """The reference is `librosa.beat.beat_track(y=y, sr=22050)` with its defaults."""
+    tempo, beats = librosa.beat.beat_track(y=at_22050(path), sr=SR, units="time")
+    tempo = float(np.ravel(tempo)[0])
+    rhythm = Spectrogram.from_file(path, bands=16).rhythm
+    assert abs(rhythm.tempo - tempo) <= 0.04 * tempo
+    assert beat_f(beats, rhythm.beats) >= 0.9
+    assert rhythm.meter in (3, 4)
+    index = np.searchsorted(rhythm.beats, rhythm.downbeats)
+    np.testing.assert_array_equal(np.diff(index), rhythm.meter)  # every m-th beat
+
+
+def test_sections_find_where_two_real_songs_are_joined():
+    first, second = (at_22050(path) for path in REAL)
+    joined = np.concatenate([first, second])
+    rhythm = Spectrogram.from_samples(joined, SR, bands=16).rhythm
+    join = len(first) / SR
+    assert len(rhythm.sections) >= 1
+    assert np.min(np.abs(rhythm.sections - join)) <= 3.0, (join, rhythm.sections)
+
+
+def tone(frequency, seconds, level):
+    t = np.arange(int(seconds * SR)) / SR
+    return level * np.sin(2 * np.pi * frequency * t) * np.exp(-t / 0.25)
+
+
+def bars_piece(meter, bpm=120.0, bars=12, first=0.5):
+    """A bass note on every downbeat, a chord on every beat, the chord changing with the bar."""
+    period = 60 / bpm
+    beats = first + period * np.arange(meter * bars)
+    track = np.zeros(int((beats[-1] + 1) * SR))
+    chords = ([261.6, 329.6, 392.0], [220.0, 261.6, 329.6], [174.6, 220.0, 261.6],
+              [196.0, 246.9, 293.7])
+    for i, b in enumerate(beats):
+        start = int(round(b * SR))
+        chord = chords[(i // meter) % len(chords)]
+        sound = sum(tone(f, period, 0.15) for f in chord)
+        if i % meter == 0:
+            sound = sound + tone(chord[0] / 4, period, 0.6)
+        track[start:start + len(sound)] += sound[:len(track) - start]
+    return track, beats, beats[::meter]
+
+
+@pytest.mark.parametrize("meter", [3, 4])
+def test_bars_find_the_meter_and_phase_of_a_piece(meter):
+    """A code path check on a synthesised piece with known bars: the meter, and downbeat F."""
+    samples, beats, downbeats = bars_piece(meter)
+    rhythm = Spectrogram.from_samples(samples, SR, bands=16).rhythm
+    assert beat_f(beats, rhythm.beats) >= 0.85
+    assert rhythm.meter == meter
+    assert beat_f(downbeats, rhythm.downbeats) >= 0.8
+
+
+def test_bar_scores_by_hand():
+    """Accents 1, 0, 0 repeated: phase 0 of meter 3 stands out; meter 4 mixes them."""
+    accent = np.tile([1.0, 0.0, 0.0], 8) + np.linspace(0, 0.01, 24)
+    scores = bar_scores(accent)
+    assert max(scores, key=scores.get) == (3, 0)
+    assert scores[3, 0] > 10 and abs(scores[4, 0]) < 3
+
+
+def test_downbeats_and_sections_round_trip_and_old_files_load(tmp_path):
+    samples, _, _ = bars_piece(3, bars=16)
+    song = Spectrogram.from_samples(samples, SR, bands=16)
+    song.save(tmp_path / "s.npz")
+    loaded = Spectrogram.load(tmp_path / "s.npz")
+    np.testing.assert_array_equal(loaded.rhythm.downbeats, song.rhythm.downbeats)
+    np.testing.assert_array_equal(loaded.rhythm.sections, song.rhythm.sections)
+    assert loaded.rhythm.meter == 3
+    with np.load(tmp_path / "s.npz") as data:  # a version-2 file from before sections
+        arrays = {key: data[key] for key in data.files if key != "sections"}
+    np.savez(tmp_path / "older.npz", **arrays)
+    assert len(Spectrogram.load(tmp_path / "older.npz").rhythm.sections) == 0
+    assert np.all(np.isfinite(beat_phase(song.rhythm.beats, [0.0, 5.0])))
