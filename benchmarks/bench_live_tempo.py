@@ -17,14 +17,14 @@ import time
 
 import numpy as np
 import soundfile
-from bench_live import CHROMIUM_ARGS
 from playwright.sync_api import sync_playwright
 from scipy.signal import resample_poly
-from shared_data import shared_path
 
+from bench_live import CHROMIUM_ARGS
 from eigendance.music.decode import mono, read_audio
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.serve import demo_paths
+from shared_data import shared_path
 
 
 def clip_of(path: str, folder: str, seconds: float) -> str:
