@@ -31,7 +31,8 @@ from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.items import MeshItem
 from eigendance.server.library import Library
-from eigendance.server.requests import JSON_LIMIT, MAX_HARMONICS
+from eigendance.inputs.mapping import MAX_HARMONICS
+from eigendance.server.requests import JSON_LIMIT
 from eigendance.server.serve import (
     FOLDER_PREFIX,
     LOCK_NAME,

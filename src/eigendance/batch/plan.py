@@ -24,7 +24,8 @@ from eigendance.batch.names import unique_parts
 from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
-from eigendance.modal.gltf_skin import has_skin
+from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
+from eigendance.inputs.model import model_kind
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
 from eigendance.music.mapping import Mapping
@@ -48,7 +49,7 @@ gallery = 4                       # an initial gallery of 4 items per pair ...
 out = "renders"                   # {model}-{song}-{item}.{ext} are written here
 size = "1280x720"                 # video size (optional)
 fps = 30                          # frames per second (optional, default 30)
-k = 300                           # harmonics of a mesh (optional, default 300)
+k = 150                           # harmonics of a mesh (optional, default 150)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
 # cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
@@ -152,8 +153,8 @@ class Plan:
     items: list[Item]
     outputs: tuple[str, ...]
     size: tuple[int, int] = (1280, 720)
-    fps: float = 30.0
-    k: int = 300
+    fps: float = DEFAULT_FPS
+    k: int = DEFAULT_K
     start: float = 0.0
     duration: float | None = None
     cache: str | None = None
@@ -213,8 +214,8 @@ class _Reader:
         plan = Plan(self.path, self.folder_of("out"), self.models(), songs, items, outputs)
         if "size" in self.document:
             plan.size = self.size()
-        plan.fps = self.number("fps", 30.0, *FPS, above=True)
-        plan.k = self.number("k", 300, *HARMONICS, integer=True)
+        plan.fps = self.number("fps", DEFAULT_FPS, *FPS, above=True)
+        plan.k = self.number("k", DEFAULT_K, *HARMONICS, integer=True)
         plan.start = self.number("start", 0.0, *SECONDS)
         plan.duration = self.number("duration", None, *SECONDS, above=True)
         plan.cache = self.folder_of("cache", required=False)
@@ -271,16 +272,14 @@ class _Reader:
         return [Model(*fields) for fields in zip(names, paths, kinds, strict=True)]
 
     def model_kind(self, file: str) -> str:
-        suffix = suffix_of(file)
-        if suffix == ".json":
-            return "rig"
-        if suffix in (".glb", ".gltf"):
-            return "rig" if has_skin(file) else "mesh"  # a skinned glTF is a rig, as served
-        if suffix in MESH_SUFFIXES:
-            return "mesh"
-        self.fail("models", f"{file}: unknown model format {suffix or '(none)'!r} (meshes: "
-                            f"{' '.join(MESH_SUFFIXES)}; rigs: .json .glb .gltf, or "
-                            f"{', '.join(SAMPLE_RIGS)})")
+        try:  # the one rule of every front end: a skinned glTF is a rig, as served
+            kind = model_kind(file)
+        except InputError as error:
+            self.fail("models", f"{one_line(error)} (meshes: {' '.join(MESH_SUFFIXES)}; rigs: "
+                                f".json .glb .gltf, or {', '.join(SAMPLE_RIGS)})")
+        if kind == "basis":
+            self.fail("models", f"{file}: a basis file; give the mesh it was solved from")
+        return kind
 
     def songs(self, outputs) -> list[Song]:
         paths = []

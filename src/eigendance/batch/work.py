@@ -27,13 +27,12 @@ from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import render_video
-from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.motion import write_animation
+from eigendance.inputs.model import read_model
 from eigendance.modal.motion import save_animation
 from eigendance.modal.rig import Rig
 from eigendance.modal.rig_gallery import rig_gallery
-from eigendance.modal.sample_rigs import load_rig
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
@@ -125,9 +124,10 @@ def prepare_model(path: str, kind: str, k: int):
     -------
     HarmonicBasis or Rig (float64, as the exports use it).
     """
+    model = read_model(path, kind=kind)
     if kind == "mesh":
-        return HarmonicBasis.from_mesh(path, k)
-    rig = Rig(load_rig(path), np.float64)
+        return model.problem.basis(k)
+    rig = Rig(model.skeleton, np.float64)
     if rig.model.n_modes == 0:
         raise InputError(f"{rig.skeleton.name}: the rig has no vibration mode (no elastic "
                          "joint); nothing to move")

@@ -5,12 +5,12 @@ from __future__ import annotations
 import sys
 
 from eigendance.cli.options import HARMONICS, PORT, add_construction, number
+from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.serve import (
     DEFAULT_HOST,
     DEFAULT_PORT,
-    DEMO_K,
     demo_paths,
     library_session,
     listen,
@@ -55,7 +55,7 @@ def add_serve(parser):
                              "mapping JSON and skeleton JSON files to put in the library (a "
                              "glTF with a skin is a rig too; the built-in rigs are always "
                              "there)")
-    add_server_options(parser, 150, "harmonics per mesh basis")
+    add_server_options(parser, DEFAULT_K, "harmonics per mesh basis")
 
 
 def run_serve(args) -> None:
@@ -75,7 +75,7 @@ def add_demo(parser):
     ----------
     parser : the command's parser.
     """
-    add_server_options(parser, DEMO_K, "harmonics of the demo mesh")
+    add_server_options(parser, DEFAULT_K, "harmonics of the demo mesh")
 
 
 def run_demo(args) -> None:

@@ -29,6 +29,7 @@ from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs, check_space
 from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
 from eigendance.export.song import seek_options
+from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.limits import check_disk
 from eigendance.music.decode import open_audio
 from eigendance.processes import die_with_parent
@@ -327,7 +328,7 @@ def video_bytes(width: int, height: int, frames: int, duration: float) -> float:
 
 
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
-                 audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
+                 audio: str | os.PathLike, fps: float = DEFAULT_FPS, size=(1280, 720),
                  force: bool = False, progress=None, workers: int = WORKERS,
                  inputs=()) -> dict:
     """Render dances (one, or a gallery of the same mesh) with their song into an MP4.

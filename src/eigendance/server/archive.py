@@ -20,13 +20,9 @@ import stat
 import zipfile
 
 from eigendance.errors import InputError
-from eigendance.files import MESH_SUFFIXES, suffix_of
+from eigendance.files import ARCHIVE_SUFFIXES, COMPANION_SUFFIXES, MESH_SUFFIXES, suffix_of
 
-ARCHIVE_SUFFIXES = (".zip",)
 MAX_MEMBERS = 256
-# Files a model names beside it (glTF buffers and images, an OBJ's MTL and its maps).
-COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg", ".webp", ".ktx2", ".tga",
-                      ".bmp", ".tif", ".tiff")
 # Files an artist's zip carries that are no part of the model: skipped.
 DOCUMENT_SUFFIXES = (".txt", ".md", ".pdf", ".html", ".htm", ".url", ".rtf", ".json")
 SKIPPED_NAMES = (".ds_store", "thumbs.db", "desktop.ini")

@@ -25,11 +25,13 @@ from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import check_size, render_video
+from eigendance.inputs.defaults import DEFAULT_FPS
+from eigendance.inputs.mapping import check_mapping_size
 from eigendance.music.mapping import Mapping
 from eigendance.server.items import Job, new_id
 from eigendance.server.library import Library
 from eigendance.server.lookup import item_of, library_of, ready_basis, song_of
-from eigendance.server.requests import check_mapping_size, json_body
+from eigendance.server.requests import json_body
 from eigendance.server.solver import Stopped
 from eigendance.server.workers import in_worker
 from eigendance.window import Window
@@ -37,7 +39,7 @@ from eigendance.window import Window
 FORMATS = {"mp4": "video/mp4", "glb": "model/gltf-binary"}
 MAX_SECONDS = 300.0  # the longest part of a song the page exports (s): a few minutes of CPU
 MAX_PIXELS = 1920 * 1080  # the largest video frame
-DEFAULT_SIZE, DEFAULT_FPS, MAX_FPS = "1280x720", 30.0, 60.0
+DEFAULT_SIZE, MAX_FPS = "1280x720", 60.0
 
 
 class Exports:

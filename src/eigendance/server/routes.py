@@ -22,6 +22,7 @@ from starlette.responses import (
 
 from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
+from eigendance.inputs.mapping import check_mapping_size
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
 from eigendance.music.mapping import Mapping
@@ -37,12 +38,7 @@ from eigendance.server.lookup import (
     ready_basis,
     song_of,
 )
-from eigendance.server.requests import (
-    answer,
-    check_mapping_size,
-    gallery_size,
-    json_body,
-)
+from eigendance.server.requests import answer, gallery_size, json_body
 from eigendance.server.workers import in_worker
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",

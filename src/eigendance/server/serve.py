@@ -41,7 +41,6 @@ from eigendance.server.workers import warm
 from eigendance.writes import FRESH_SECONDS
 
 DEFAULT_PORT = 8765
-DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
 LOCK_NAME = ".lock"  # held (flock) by the server that owns the folder, for as long as it runs
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
@@ -56,7 +55,7 @@ OPEN_FILES = 4 * MAX_CONNECTIONS + 1024
 # before `Connection` sees them: 2 × MAX_CONNECTIONS descriptors at most, under Linux's
 # customary 1024.)
 
-__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "demo_paths", "library_session", "listen",
+__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "demo_paths", "library_session", "listen",
            "run", "terminal_progress"]
 
 
