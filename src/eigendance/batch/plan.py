@@ -25,6 +25,7 @@ from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
 from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
+from eigendance.inputs.mapping import read_mapping
 from eigendance.inputs.model import model_kind
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
@@ -49,7 +50,8 @@ gallery = 4                       # an initial gallery of 4 items per pair ...
 out = "renders"                   # {model}-{song}-{item}.{ext} are written here
 size = "1280x720"                 # video size (optional)
 fps = 30                          # frames per second (optional, default 30)
-k = 150                           # harmonics of a mesh (optional, default 150)
+k = 150                           # harmonics of a mesh (optional; default: the k the
+                                  # mappings were made on, else 150)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
 # cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
@@ -215,11 +217,21 @@ class _Reader:
         if "size" in self.document:
             plan.size = self.size()
         plan.fps = self.number("fps", DEFAULT_FPS, *FPS, above=True)
-        plan.k = self.number("k", DEFAULT_K, *HARMONICS, integer=True)
+        plan.k = self.number("k", self.recorded_k(items), *HARMONICS, integer=True)
         plan.start = self.number("start", 0.0, *SECONDS)
         plan.duration = self.number("duration", None, *SECONDS, above=True)
         plan.cache = self.folder_of("cache", required=False)
         return plan
+
+    def recorded_k(self, items) -> int:
+        """The k of the mappings' basis when they record one (`inputs.mapping`), else
+        DEFAULT_K: the default of `k`."""
+        recorded = sorted({item.mapping.basis.k for item in items
+                           if item.mapping is not None and item.mapping.basis is not None})
+        if len(recorded) > 1 and "k" not in self.document:
+            made = ", ".join(map(str, recorded))
+            self.fail("mappings", f"were made on bases of different k ({made}); set k")
+        return recorded[0] if recorded else DEFAULT_K
 
     def number(self, key, default, low, high, integer=False, above=False):
         if key not in self.document:
@@ -320,7 +332,7 @@ class _Reader:
         items = []
         for name, file in zip(unique_parts(paths, "mapping"), paths, strict=True):
             try:
-                mapping = Mapping.load(file)
+                mapping = read_mapping(file)
             except InputError as error:
                 self.fail("mappings", f"{file}: {error}")
             items.append(Item(name, mapping=mapping, path=file))

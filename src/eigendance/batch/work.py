@@ -30,6 +30,7 @@ from eigendance.export.video import render_video
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.motion import write_animation
 from eigendance.inputs.model import read_model
+from eigendance.inputs.song import read_song
 from eigendance.modal.motion import save_animation
 from eigendance.modal.rig import Rig
 from eigendance.modal.rig_gallery import rig_gallery
@@ -166,10 +167,10 @@ def prepare_song(path: str, digest: str, bands: int, rhythm_of: Spectrogram | No
         except InputError:
             pass  # damaged: made again
     if rhythm_of is not None and rhythm_of.rhythm is not None:
-        spectrogram = replace(Spectrogram.from_file(path, bands=bands, rhythm=False),
+        spectrogram = replace(read_song(path, bands, rhythm=False),
                               rhythm=rhythm_of.rhythm)
     else:
-        spectrogram = Spectrogram.from_file(path, bands=bands)
+        spectrogram = read_song(path, bands)
     try:
         spectrogram.save(entry)
     except InputError:

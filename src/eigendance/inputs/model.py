@@ -144,8 +144,7 @@ def model_kind(path: str | os.PathLike, as_mesh: bool = False) -> str:
 
 
 def read_model(path: str | os.PathLike, name: str | None = None, kind: str | None = None,
-               document=None, construction: str = "auto", samples: int | None = None,
-               laplacian: str | None = None) -> Model:
+               document=None, **problem) -> Model:
     """A model read once into the value the work takes (`Model`).
 
     Parameters
@@ -154,7 +153,8 @@ def read_model(path: str | os.PathLike, name: str | None = None, kind: str | Non
     name : how messages call it (default: the file's or the rig's name).
     kind : "mesh", "rig" or "basis" (default `model_kind`: a skinned glTF is a rig).
     document : a skeleton JSON's document, already parsed by `classify`.
-    construction, samples, laplacian : those of a mesh's `HarmonicProblem`.
+    **problem : the options of a mesh's `HarmonicProblem` (laplacian, construction, samples,
+        solver, cache).
 
     Returns
     -------
@@ -175,7 +175,7 @@ def read_model(path: str | os.PathLike, name: str | None = None, kind: str | Non
     if kind == "basis":
         return Model(kind, name, basis=HarmonicBasis.load(path))
     mesh = dataclasses.replace(load_mesh(path), name=name)
-    return Model(kind, name, problem=HarmonicProblem(mesh, laplacian, construction, samples))
+    return Model(kind, name, problem=HarmonicProblem(mesh, **problem))
 
 
 def published_suffixes() -> dict[str, list[str]]:
