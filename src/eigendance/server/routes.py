@@ -23,6 +23,7 @@ from starlette.responses import (
 from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
 from eigendance.inputs.mapping import check_mapping_size
+from eigendance.inputs.model import published_suffixes
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
 from eigendance.music.mapping import Mapping
@@ -94,10 +95,13 @@ async def get_config(request: Request):
 
     Returns
     -------
-    JSONResponse {"gallery": {"min", "max", "default"}}: gallery sizes.
+    JSONResponse {"gallery": {"min", "max", "default"}: gallery sizes, "suffixes": the
+    suffixes of each input kind (`inputs.model.published_suffixes`: what the page uploads, and
+    which files of a model it zips together)}.
     """
     return JSONResponse({"gallery": {"min": MIN_GALLERY, "max": MAX_GALLERY,
-                                     "default": DEFAULT_GALLERY}})
+                                     "default": DEFAULT_GALLERY},
+                         "suffixes": published_suffixes()})
 
 
 async def get_library(request: Request):
