@@ -20,11 +20,12 @@ from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import FileResponse, JSONResponse
 
+from eigendance import checks
 from eigendance.errors import EigendanceError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
-from eigendance.export.video import check_size, render_video
+from eigendance.export.video import parse_size, render_video
 from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.inputs.mapping import check_mapping_size
 from eigendance.music.mapping import Mapping
@@ -124,21 +125,12 @@ def exports_of(request: Request) -> Exports:
     return state.exports
 
 
-def _number(body: dict, key: str, default: float | None, low: float, high: float) -> float:
-    value = body.get(key, default)
-    if value is None or isinstance(value, bool) or not isinstance(value, int | float) or \
-            not math.isfinite(value) or not low <= value <= high:
-        raise HTTPException(400, f"{key} must be a number from {low:g} to {high:g}")
-    return float(value)
+def _number(body: dict, key: str, default: float, low: float, high: float) -> float:
+    return checks.number(body.get(key, default), key, low, high)  # 400 naming the field
 
 
 def _size(body: dict) -> tuple[int, int]:
-    text = body.get("size", DEFAULT_SIZE)
-    parts = text.lower().split("x") if isinstance(text, str) else []
-    if len(parts) != 2 or not all(part.isdigit() for part in parts):
-        raise HTTPException(400, "size must be WIDTHxHEIGHT in pixels, e.g. 1280x720")
-    width, height = int(parts[0]), int(parts[1])
-    check_size(width, height)
+    width, height = parse_size(body.get("size", DEFAULT_SIZE))  # the command line's grammar
     if width * height > MAX_PIXELS:
         raise HTTPException(400, f"size {width}x{height}: at most {MAX_PIXELS} pixels "
                                  "(1920x1080)")
