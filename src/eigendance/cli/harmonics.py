@@ -5,7 +5,6 @@ from __future__ import annotations
 import os
 import sys
 import time
-from dataclasses import replace
 
 import numpy as np
 
@@ -178,8 +177,7 @@ def run_gallery(args) -> None:
         basis = basis_for(args.basis, None, args.k, None, args.output)
         spectrogram = read_song(args.spectrogram)
     if not args.breed:  # each records the basis it was made on
-        items = [replace(item, basis=basis.record)
-                 for item in initial_gallery(basis, spectrogram, size)]
+        items = initial_gallery(basis, spectrogram, size)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"
