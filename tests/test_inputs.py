@@ -19,7 +19,7 @@ from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
 from eigendance.harmonic.construction import BasisRecord, basis_key
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.inputs.defaults import DEFAULT_K
-from eigendance.inputs.mapping import basis_choice, read_mapping
+from eigendance.inputs.mapping import basis_choice, read_mapping, shared_k
 from eigendance.inputs.model import classify, model_kind, published_suffixes, read_model
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton_file import skeleton_document
@@ -94,6 +94,18 @@ def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
         path.write_text(json.dumps({**old, "basis": bad}))
         with pytest.raises(InputError, match=message):
             read_mapping(path)
+
+
+def test_one_basis_for_several_mappings_is_the_k_they_record():
+    made = [Mapping([0.5], [1.0], name=f"{k}.json", basis=BasisRecord(k)) for k in (24, 24)]
+    old = Mapping([0.5], [1.0], name="old.json")
+    assert shared_k([*made, old]) == (24, None)
+    assert shared_k([old]) == (DEFAULT_K, None)
+    assert shared_k(made, 24) == (24, None)
+    k, note = shared_k(made, 60)
+    assert k == 60 and note.startswith("24.json was made on k = 24 harmonics; on k = 60")
+    with pytest.raises(InputError, match=r"different k \(24, 40\); set k"):
+        shared_k([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
 
 
 def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):

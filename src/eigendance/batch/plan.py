@@ -25,7 +25,7 @@ from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
 from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
-from eigendance.inputs.mapping import read_mapping
+from eigendance.inputs.mapping import read_mapping, shared_k
 from eigendance.inputs.model import model_kind
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
@@ -223,15 +223,14 @@ class _Reader:
         plan.cache = self.folder_of("cache", required=False)
         return plan
 
-    def recorded_k(self, items) -> int:
-        """The k of the mappings' basis when they record one (`inputs.mapping`), else
-        DEFAULT_K: the default of `k`."""
-        recorded = sorted({item.mapping.basis.k for item in items
-                           if item.mapping is not None and item.mapping.basis is not None})
-        if len(recorded) > 1 and "k" not in self.document:
-            made = ", ".join(map(str, recorded))
-            self.fail("mappings", f"were made on bases of different k ({made}); set k")
-        return recorded[0] if recorded else DEFAULT_K
+    def recorded_k(self, items) -> int | None:
+        """The k the mappings record (`inputs.mapping.shared_k`): the default of `k`."""
+        if "k" in self.document:
+            return None
+        try:
+            return shared_k([item.mapping for item in items if item.mapping is not None])[0]
+        except InputError as error:
+            self.fail("mappings", f"{error}".removeprefix("the mappings "))
 
     def number(self, key, default, low, high, integer=False, above=False):
         if key not in self.document:

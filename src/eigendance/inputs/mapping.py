@@ -176,3 +176,37 @@ def record_note(mapping: Mapping | None, record: BasisRecord) -> str | None:
         return None
     return (f"{mapping.name} was made on {made.describe()}; the basis given has "
             f"{record.describe()}, and the dance differs from the one it was made on")
+
+
+def shared_k(mappings, k: int | None = None) -> tuple[int, str | None]:
+    """The one k several mappings dance on where one basis serves them all (a library, a
+    batch's model): the k asked for, else the one k they record, else `DEFAULT_K`.
+
+    Parameters
+    ----------
+    mappings : the mappings.
+    k : the k asked for (-k, a plan's `k`), or None.
+
+    Returns
+    -------
+    (k, note): note one line when the k asked for is not the one a mapping records, else None.
+
+    Raises
+    ------
+    InputError
+        When no k is asked for and the mappings record different ones.
+    """
+    recorded = {mapping.basis.k: mapping.name for mapping in mappings
+                if mapping.basis is not None}
+    if k is None:
+        if len(recorded) > 1:
+            raise InputError(f"the mappings were made on bases of different k "
+                             f"({', '.join(map(str, sorted(recorded)))}); set k",
+                             remedy={"k": max(recorded)})
+        return (next(iter(recorded)) if recorded else DEFAULT_K), None
+    other = {made: name for made, name in recorded.items() if made != k}
+    if not other:
+        return k, None
+    made, name = min(other.items())
+    return k, (f"{name} was made on k = {made} harmonics; on k = {k} the same bands drive other "
+               "harmonics: the dance differs from the one it was made on")
