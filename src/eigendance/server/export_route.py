@@ -27,8 +27,7 @@ from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.inputs.defaults import DEFAULT_FPS
-from eigendance.inputs.mapping import check_mapping_size
-from eigendance.music.mapping import Mapping
+from eigendance.inputs.mapping import check_mapping_size, mapping_from
 from eigendance.server.items import Job, new_id
 from eigendance.server.library import Library
 from eigendance.server.lookup import item_of, library_of, ready_basis, song_of
@@ -173,7 +172,7 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
     stem = os.path.splitext(item.name)[0] or "dance"
 
     def clip():
-        mapping = Mapping.from_json(body["mapping"], "mapping")
+        mapping = mapping_from(body["mapping"], "mapping")
         if "rig" in body:
             rig = item.rig
             whole = rig_dance(rig, song.spectrogram, rig.mapping(song.spectrogram, mapping),

@@ -22,11 +22,10 @@ from starlette.responses import (
 
 from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
-from eigendance.inputs.mapping import check_mapping_size
+from eigendance.inputs.mapping import check_mapping_size, mapping_from
 from eigendance.inputs.model import published_suffixes
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
-from eigendance.music.mapping import Mapping
 from eigendance.server.archive import is_archive
 from eigendance.server.items import RigItem
 from eigendance.server.library import Library
@@ -387,7 +386,7 @@ async def breed_route(request: Request):
         check_mapping_size(data, f"parent {index + 1}")
 
     def make():
-        parents = [Mapping.from_json(data, f"parent {index + 1}")
+        parents = [mapping_from(data, f"parent {index + 1}")
                    for index, data in enumerate(body["parents"])]
         return {"mappings": [m.to_json() for m in breed(parents, size, seed)]}
 
