@@ -428,7 +428,7 @@ def test_out_of_memory_advice_fits_the_input(tmp_path, capfd, monkeypatch, argv,
         raise MemoryError
 
     monkeypatch.setattr("eigendance.cli.rigs.rig_from", exhausted)
-    monkeypatch.setattr("eigendance.cli.harmonics.load_mesh", exhausted)
+    monkeypatch.setattr("eigendance.cli.harmonics.read_model", exhausted)
     status, _, err = run([*argv, "-o", tmp_path / "o.npz"], capfd)
     assert_refused(status, err, tmp_path, advice)
     if argv[0] != "basis":

@@ -2,12 +2,14 @@
 
 One helper per input kind, as potpourri3d's `validate_mesh` or librosa's `valid_audio`: each
 raises one `InputError` naming the input and the field, or returns the value in the form the
-code uses. The kinds with a module of their own check there: meshes (`harmonic.mesh.check_mesh`),
-audio (`music.decode.open_audio` for the file; the spectrogram's analyser for the sample rate
-and the samples), mappings (`Mapping.from_json`; on the server `server.requests.mapping_from`,
-sizes first), skeletons (`modal.bodies.check_skeleton`; each JSON item in
-`modal.skeleton_file`), parts of a song (`window.Window.of`), command-line numbers
-(`cli.options.number`, an argparse type over `number`).
+code uses. What a whole file is, and its one reading, is the inputs layer's
+(`eigendance.inputs`: model, song, mapping; docs/design.md#inputs). The kinds with a module of
+their own check there: meshes (`harmonic.mesh.check_mesh`), audio (`music.decode.open_audio` for
+the file; the spectrogram's analyser for the sample rate and the samples), mappings
+(`Mapping.from_json`; `inputs.mapping.mapping_from`, sizes first), skeletons
+(`modal.bodies.check_skeleton`; each JSON item in `modal.skeleton_file`), parts of a song
+(`window.Window.of`), command-line numbers (`cli.options.number`, an argparse type over
+`number`).
 """
 
 from __future__ import annotations

@@ -25,6 +25,11 @@ AUDIO_SUFFIXES = (".wav", ".wave", ".flac", ".ogg", ".oga", ".mp3", ".aif", ".ai
                   ".m4a", ".aac", ".mp4", ".webm", ".mka")
 RIG_SUFFIXES = (".json", ".gltf", ".glb")
 MAPPING_SUFFIXES = (".json",)
+BASIS_SUFFIXES = SPECTROGRAM_SUFFIXES = (".npz",)  # eigendance's own files
+ARCHIVE_SUFFIXES = (".zip",)  # a model in several files (server.archive)
+# Files a model names beside it (glTF buffers and images, an OBJ's MTL and its maps).
+COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg", ".webp", ".ktx2", ".tga",
+                      ".bmp", ".tif", ".tiff")
 KINDS = {"mesh": MESH_SUFFIXES, "audio": AUDIO_SUFFIXES, "mapping": MAPPING_SUFFIXES}
 
 

@@ -10,7 +10,11 @@ from eigendance.batch.names import unique_parts
 from eigendance.batch.plan import read_plan
 from eigendance.cli import options
 from eigendance.cli.main import main
+from eigendance.errors import InputError
+from eigendance.harmonic.construction import BasisRecord
+from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
+from eigendance.music.mapping import Mapping
 
 GOOD = {"models": ["sphere.obj", "loop4"], "songs": ["*.wav"], "outputs": ["glb"],
         "gallery": 2, "out": "out"}
@@ -97,10 +101,26 @@ def test_globs_and_defaults_are_read_relative_to_the_plan(inputs, monkeypatch):
     assert [model.kind for model in plan.models] == ["mesh", "rig"]
     assert [song.path for song in plan.songs] == [str(inputs / "a.wav"), str(inputs / "b.wav")]
     assert (plan.fps, plan.k, plan.start, plan.duration, plan.size) == \
-        (30.0, 300, 0.0, None, (1280, 720))
+        (30.0, DEFAULT_K, 0.0, None, (1280, 720))
     assert [job.stem for job in plan.jobs()][:4] == ["sphere-a-0", "sphere-a-1", "loop4-a-0",
                                                      "loop4-a-1"]
     assert len(plan.jobs()) == 8
+
+
+def test_k_is_the_one_the_mappings_were_made_on_unless_the_plan_says(inputs):
+    """A mapping records its basis (docs/design.md#mapping-file): without `k`, the batch solves
+    that k; mappings of different k need the plan's `k`; a mapping without the record: 150."""
+    for name, k in (("a.json", 24), ("b.json", 24), ("c.json", 40)):
+        Mapping([0.5], [1.0], basis=BasisRecord(k)).save(inputs / name)
+    Mapping([0.5], [1.0]).save(inputs / "old.json")
+    settings = {key: value for key, value in GOOD.items() if key != "gallery"}
+    assert read_plan(write_plan(str(inputs), **settings, mappings=["a.json", "b.json"])).k == 24
+    assert read_plan(write_plan(str(inputs), **settings, mappings=["old.json"])).k == DEFAULT_K
+    both = {**settings, "mappings": ["a.json", "c.json"]}
+    with pytest.raises(InputError, match=r"mappings were made on bases of different k "
+                                         r"\(24, 40\)"):
+        read_plan(write_plan(str(inputs), **both))
+    assert read_plan(write_plan(str(inputs), **both, k=60)).k == 60
 
 
 def test_names_are_safe_and_collisions_are_told_apart():

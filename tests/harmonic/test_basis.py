@@ -3,7 +3,7 @@ import os
 import numpy as np
 import pytest
 
-import eigendance.harmonic.construction as construction_module
+import eigendance.harmonic.basis as basis_module
 from eigendance.errors import EigendanceError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.construction import basis_cache, basis_key
@@ -83,8 +83,8 @@ def test_cache_hit_and_corrupt_entry_rebuilt(monkeypatch):
     first = HarmonicBasis.from_mesh(mesh, 12)
     path = basis_cache().path(basis_key(mesh, 12, "cotan"))
     calls = []
-    original = construction_module.solve
-    monkeypatch.setattr(construction_module, "solve", lambda *a, **kw: calls.append(1) or
+    original = basis_module.solve
+    monkeypatch.setattr(basis_module, "solve", lambda *a, **kw: calls.append(1) or
                         original(*a, **kw))
     again = HarmonicBasis.from_mesh(mesh, 12)
     assert calls == [] and np.array_equal(again.eigenvectors, first.eigenvectors)
@@ -135,8 +135,8 @@ def test_a_cache_entry_that_is_intact_but_wrong_is_solved_again(monkeypatch):
     right, entries = wrong_entries(bumped, 12)
     key = basis_key(bumped, 12, "cotan")
     calls = []
-    original = construction_module.solve
-    monkeypatch.setattr(construction_module, "solve", lambda *a, **kw: calls.append(1) or
+    original = basis_module.solve
+    monkeypatch.setattr(basis_module, "solve", lambda *a, **kw: calls.append(1) or
                         original(*a, **kw))
     for name, arrays in entries.items():
         basis_cache().store(key, arrays)

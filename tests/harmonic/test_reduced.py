@@ -6,6 +6,7 @@ dance close to the exact basis's where the harmonics are well apart."""
 import numpy as np
 import pytest
 
+import eigendance.harmonic.basis as basis_module
 import eigendance.harmonic.construction as construction_module
 from eigendance.errors import EigendanceError
 from eigendance.geometry import vertex_normals
@@ -131,8 +132,8 @@ def test_save_load_round_trip_and_a_broken_partition_is_refused(tmp_path, cat_ba
 
 def test_reduced_bases_are_cached_and_a_wrong_entry_is_solved_again(monkeypatch, cat):
     calls = []
-    original = construction_module.reduced_harmonics
-    monkeypatch.setattr(construction_module, "reduced_harmonics",
+    original = basis_module.reduced_harmonics
+    monkeypatch.setattr(basis_module, "reduced_harmonics",
                         lambda *a, **kw: calls.append(1) or original(*a, **kw))
     first = HarmonicBasis.from_mesh(cat, 12, construction="reduced", samples=600)
     again = HarmonicBasis.from_mesh(cat, 12, construction="reduced", samples=600)

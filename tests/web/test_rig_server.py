@@ -318,9 +318,9 @@ def test_a_skinned_gltf_whose_skin_cannot_be_analysed_dances_as_a_mesh(files, tm
     library = Library(str(tmp_path / "broken"), k=8)
     run = library.intake.run
 
-    def refuse(function, *args, **options):  # the rig reader (in a worker) refuses the skin
-        if function is analysis.read_rig:
-            raise InputError(f"{args[1]}: body 'x' has zero length")
+    def refuse(function, *args, **options):  # the rig's analysis (in a worker) refuses the skin
+        if function is analysis.analyse_rig:
+            raise InputError(f"{args[2]}: body 'x' has zero length")
         return run(function, *args, **options)
 
     library.intake.run = refuse

@@ -26,12 +26,13 @@ import eigendance.server.requests as requests_module
 import eigendance.server.rig_routes as rig_routes_module
 import eigendance.server.routes as routes_module
 from eigendance.errors import InputError, InternalError
+from eigendance.inputs.mapping import MAX_HARMONICS
 from eigendance.server import analysis, workers
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.items import MeshItem
 from eigendance.server.library import Library
-from eigendance.server.requests import JSON_LIMIT, MAX_HARMONICS
+from eigendance.server.requests import JSON_LIMIT
 from eigendance.server.serve import (
     FOLDER_PREFIX,
     LOCK_NAME,
@@ -488,7 +489,7 @@ def test_worker_processes_hand_back_results_and_errors_whole_and_die_when_stoppe
     assert np.array_equal(back[0], values) and back[0].dtype == values.dtype
     assert back[0].flags.writeable and back[1:] == (big, "small", b"tiny")
     with pytest.raises(InputError, match="missing.obj") as caught:
-        workers.run(analysis.read_mesh, str(tmp_path / "missing.obj"), "missing.obj")
+        workers.run(analysis.read_file, str(tmp_path / "missing.obj"), "missing.obj")
     assert caught.value.status in (400, 404)
     failed = []
 

@@ -259,9 +259,14 @@ def test_upload_errors_name_the_persons_file_not_the_stored_one(client):
         assert client.library.folder not in message
 
 
-def test_config_holds_the_gallery_size_rule(client):
-    """The page builds its *tiles* menu and checks `?size=` from this."""
-    assert client.get("/api/config").json() == {"gallery": {"min": 2, "max": 16, "default": 8}}
+def test_config_holds_the_gallery_size_rule_and_the_suffixes(client):
+    """The page builds its *tiles* menu and checks `?size=` from this, and zips a model's files
+    by the suffixes it announces (the page keeps no copy)."""
+    config = client.get("/api/config").json()
+    assert config["gallery"] == {"min": 2, "max": 16, "default": 8}
+    assert ".glb" in config["suffixes"]["mesh"] and ".bin" in config["suffixes"]["companion"]
+    assert set(config["suffixes"]) == {"mesh", "rig", "audio", "mapping", "archive",
+                                       "companion"}
 
 
 def test_serves_the_built_front_end(client):

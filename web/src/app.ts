@@ -6,7 +6,7 @@
 import * as api from "./api";
 import { $, messageOf } from "./dom";
 import { ExportPanel } from "./export-panel";
-import { FileIntake } from "./files";
+import { FileIntake, suffixesOf } from "./files";
 import type { Mapping } from "./filter";
 import { FrameRateWatch } from "./frame-rate";
 import { GalleryView } from "./gallery-view";
@@ -275,11 +275,14 @@ export class App {
     this.live.refresh();
   }
 
-  /** The gallery-size rule from the server: the *tiles* menu, and `?size=` checked against it
-   * (a bad one falls back to the default, with a notice). Without it the server checks. */
+  /** The rules from the server: the suffixes of the files it accepts (for the uploads), and
+   * the gallery size: the *tiles* menu, and `?size=` checked against it (a bad one falls back
+   * to the default, with a notice). Without them the server checks. */
   private async readConfig(): Promise<void> {
     try {
-      this.rule = galleryRule(await api.config());
+      const config = await api.config();
+      this.files.suffixes = suffixesOf(config);
+      this.rule = galleryRule(config);
     } catch (error) {
       this.rule = null;
       this.messages.error(`Could not read the gallery sizes from the server (${messageOf(error)}); `

@@ -26,13 +26,16 @@ export interface FileEvents {
 }
 
 export class FileIntake {
+  /** the server's suffixes (`api/config`), once read; null until then or if it failed */
+  suffixes: Suffixes | null = null;
+
   constructor(private readonly messages: Messages, private readonly events: FileEvents) {}
 
   /** Upload files one by one; each becomes the current mesh, song or player mapping. A model
    * with the files it names (`paths`: where each file lies in a dropped folder) goes as one
    * zip. */
   async handle(files: FileList | File[], paths?: string[]): Promise<void> {
-    for (const file of await together(Array.from(files), paths)) {
+    for (const file of await together(Array.from(files), this.suffixes, paths)) {
       try {
         await this.add(file);
       } catch (error) {
@@ -98,11 +101,26 @@ function withoutName(message: string, name: string): string {
   return message.startsWith(`${name}: `) ? message.slice(name.length + 2) : message;
 }
 
-/** Model files, and the files models name beside them (as eigendance.server.archive). */
-const MODEL_SUFFIXES = [".gltf", ".glb", ".obj", ".ply", ".off", ".stl", ".fbx", ".blend",
-  ".dae", ".3ds"];
-const COMPANION_SUFFIXES = [".bin", ".mtl", ".png", ".jpg", ".jpeg", ".webp", ".ktx2", ".tga",
-  ".bmp", ".tif", ".tiff"];
+/** The suffixes of each input kind the server accepts, as `GET api/config` announces them
+ * (`eigendance.inputs.model.published_suffixes`): the page keeps no copy of its own. */
+export interface Suffixes {
+  mesh: string[];
+  rig: string[];
+  audio: string[];
+  mapping: string[];
+  archive: string[];
+  /** the files a model names beside it (glTF buffers and images, an OBJ's MTL and maps) */
+  companion: string[];
+}
+
+/** The server's suffixes from its `api/config` answer; null when it holds none that fit. */
+export function suffixesOf(config: unknown): Suffixes | null {
+  const found = (config as { suffixes?: Record<string, unknown> } | null)?.suffixes;
+  const kinds = ["mesh", "rig", "audio", "mapping", "archive", "companion"] as const;
+  const lists = (value: unknown): value is string[] =>
+    Array.isArray(value) && value.every((item) => typeof item === "string");
+  return found && kinds.every((kind) => lists(found[kind])) ? found as unknown as Suffixes : null;
+}
 
 function suffixOf(name: string): string {
   const dot = name.lastIndexOf(".");
@@ -110,10 +128,13 @@ function suffixOf(name: string): string {
 }
 
 /** The uploads of some files: a model's files (a model and what it names: buffers, MTLs,
- * images) as one zip named after the model, each other file by itself. */
-export async function together(files: File[], paths?: string[]): Promise<File[]> {
-  const isModel = (file: File) => MODEL_SUFFIXES.includes(suffixOf(file.name));
-  const isCompanion = (file: File) => COMPANION_SUFFIXES.includes(suffixOf(file.name));
+ * images) as one zip named after the model, each other file by itself. Without the server's
+ * suffixes (`api/config` failed), each file by itself: the server says what it refuses. */
+export async function together(files: File[], suffixes: Suffixes | null,
+    paths?: string[]): Promise<File[]> {
+  if (suffixes === null) return files;
+  const isModel = (file: File) => suffixes.mesh.includes(suffixOf(file.name));
+  const isCompanion = (file: File) => suffixes.companion.includes(suffixOf(file.name));
   const models = files.filter(isModel), companions = files.filter(isCompanion);
   if (!models.length || !companions.length) return files; // the server says what it refuses
   const members: Record<string, Uint8Array> = {};

@@ -37,6 +37,29 @@ export interface Mapping {
   look?: { deformed_normal_weight?: number; shading?: Shading; materials?: boolean };
   envelope?: EnvelopeJSON | null;
   pulse?: PulseJSON | null;
+  /** the basis it was made on: `eigendance animate` solves the same
+   * (docs/design.md#mapping-file) */
+  basis?: BasisRecord | null;
+}
+
+/** What a mapping records of the basis it was made on
+ * (`eigendance.harmonic.construction.BasisRecord`). */
+export interface BasisRecord {
+  k: number;
+  construction: "exact" | "reduced";
+  /** the samples m of a reduced basis; null for an exact one */
+  samples: number | null;
+}
+
+/** The mapping as saved from a mesh's basis: with the record of that basis (k, exact or
+ * reduced, samples), so that the command line dances it on the same harmonics. */
+export function withBasis(mapping: Mapping,
+    basis: { k: number; reduced?: { m: number } } | null): Mapping {
+  if (!basis) return mapping;
+  const record: BasisRecord = basis.reduced
+    ? { k: basis.k, construction: "reduced", samples: basis.reduced.m }
+    : { k: basis.k, construction: "exact", samples: null };
+  return { ...mapping, basis: record };
 }
 
 /** What the player applies besides transfer and amplification: all of it is in the mapping. */

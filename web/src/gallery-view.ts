@@ -4,7 +4,7 @@
 import * as api from "./api";
 import { $, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
-import { drivenHarmonics, settingsOf } from "./filter";
+import { drivenHarmonics, settingsOf, withBasis } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { History } from "./history";
 import type { Motion } from "./motion";
@@ -208,7 +208,8 @@ export class GalleryView {
       const target = event.target as HTMLElement;
       if (target.closest(".open")) { this.events.open(mapping); return; }
       if (target.closest(".save")) {
-        saveJSON(mapping, `mapping-g${this.history.current + 1}-${index + 1}.json`);
+        saveJSON(withBasis(mapping, this.motion.basis),
+          `mapping-g${this.history.current + 1}-${index + 1}.json`);
         return;
       }
       this.toggle(index);

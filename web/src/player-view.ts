@@ -4,7 +4,7 @@
 // `eigendance animate` gives what the player shows), the harmonics explorer, and saving /
 // loading mappings.
 import { $, saveJSON } from "./dom";
-import { settingsOf, withSettings } from "./filter";
+import { settingsOf, withBasis, withSettings } from "./filter";
 import type { Mapping, Prepared, Settings, Shading } from "./filter";
 import type { Motion } from "./motion";
 import type { Explorer, Shot } from "./viewer";
@@ -61,8 +61,12 @@ export class PlayerView {
       source: this.mapping };
   }
 
-  /** The mapping as a version-2 file with everything the player applies. */
-  saved(): Mapping | null { return this.mapping ? withSettings(this.mapping, this.settings()) : null; }
+  /** The mapping as a version-3 file with everything the player applies, and the basis it
+   * plays on. */
+  saved(): Mapping | null {
+    return this.mapping
+      ? withBasis(withSettings(this.mapping, this.settings()), this.motion.basis) : null;
+  }
 
   /** A new mesh: the mapping prepared for its k, and the harmonics explorer off. */
   basisChanged(): void {

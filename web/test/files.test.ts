@@ -5,15 +5,19 @@ import { describe, expect, it } from "vitest";
 import { unzipSync } from "three/examples/jsm/libs/fflate.module.js";
 import { firstRig } from "../src/app";
 import type { Library } from "../src/api";
-import { together } from "../src/files";
+import { suffixesOf, together } from "../src/files";
 
 const file = (name: string, text: string) => new File([text], name);
+// As the server announces them (GET api/config: eigendance.inputs.model.published_suffixes).
+const suffixes = suffixesOf({ suffixes: { mesh: [".obj", ".gltf", ".glb"], rig: [".json"],
+  audio: [".wav", ".mp3"], mapping: [".json"], archive: [".zip"],
+  companion: [".bin", ".mtl", ".png"] } });
 
 describe("several files", () => {
   it("zips a .gltf with its .bin and textures, and leaves the song alone", async () => {
     const files = [file("ship.gltf", "{}"), file("ship_data.bin", "BIN"),
       file("song.wav", "RIFF"), file("hull.png", "PNG")];
-    const uploads = await together(files, ["/ship/ship.gltf", "/ship/ship_data.bin",
+    const uploads = await together(files, suffixes, ["/ship/ship.gltf", "/ship/ship_data.bin",
       "/song.wav", "/ship/textures/hull.png"]);
     expect(uploads.map((f) => f.name)).toEqual(["ship.zip", "song.wav"]);
     const members = unzipSync(new Uint8Array(await uploads[0].arrayBuffer()));
@@ -23,13 +27,21 @@ describe("several files", () => {
   });
 
   it("zips an OBJ with its MTL, and sends lone files as they are", async () => {
-    const uploads = await together([file("robot.obj", "v"), file("robot.mtl", "newmtl")]);
+    const uploads = await together([file("robot.obj", "v"), file("robot.mtl", "newmtl")],
+      suffixes);
     expect(uploads.map((f) => f.name)).toEqual(["robot.zip"]);
     const alone = [file("bunny.obj", "v"), file("tune.mp3", "ID3"), file("x.bin", "?")];
-    expect((await together(alone.slice(0, 2))).map((f) => f.name)).toEqual(["bunny.obj",
-      "tune.mp3"]);
+    expect((await together(alone.slice(0, 2), suffixes)).map((f) => f.name))
+      .toEqual(["bunny.obj", "tune.mp3"]);
     // companions without a model: the server says what it cannot read
-    expect((await together([alone[2]])).map((f) => f.name)).toEqual(["x.bin"]);
+    expect((await together([alone[2]], suffixes)).map((f) => f.name)).toEqual(["x.bin"]);
+  });
+
+  it("sends each file alone without the server's suffixes; refuses a malformed list", async () => {
+    const files = [file("robot.obj", "v"), file("robot.mtl", "newmtl")];
+    expect((await together(files, null)).map((f) => f.name)).toEqual(["robot.obj", "robot.mtl"]);
+    expect(suffixesOf({ suffixes: { mesh: ".obj" } })).toBeNull();
+    expect(suffixesOf({ gallery: {} })).toBeNull();
   });
 });
 

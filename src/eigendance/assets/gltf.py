@@ -41,6 +41,37 @@ ZEROS_PER_BYTE, ZEROS_FREE = 16, 1 << 16
 MAX_OBJECTS = 10_000
 
 
+def document_json(path: str | os.PathLike, name: str | None = None) -> dict | None:
+    """The JSON document of a glTF file (.gltf, or a .glb's JSON chunk), read with json alone:
+    no buffer, no image, no check of what it holds (`GltfFile` checks).
+
+    Parameters
+    ----------
+    path : a .glb or .gltf file.
+    name : how messages call it.
+
+    Returns
+    -------
+    dict, or None for a file whose JSON cannot be read (`GltfFile` says why).
+
+    Raises
+    ------
+    InputError
+        For a path that is not a regular file (`open_regular`).
+    """
+    try:
+        with open_regular(os.fspath(path), name or os.path.basename(os.fspath(path))) as file:
+            head = file.read(20)
+            if head[:4] == b"glTF":  # GLB: header (12 bytes), JSON chunk (8 + length)
+                text = file.read(int.from_bytes(head[12:16], "little"))
+            else:
+                text = head + file.read()
+        document = json.loads(text)
+    except (ValueError, UnicodeDecodeError, OSError, RecursionError):
+        return None
+    return document if isinstance(document, dict) else None
+
+
 class GltfFile:
     """An open glTF 2.0 file.
 
@@ -76,19 +107,7 @@ class GltfFile:
     def _check_objects(self, path: str) -> None:
         """InputError when the document lists more than MAX_OBJECTS of a kind (nodes,
         accessors …), read with json before pygltflib spends 3 ms on each."""
-        try:
-            with open_regular(path, self.name) as file:
-                head = file.read(20)
-                if head[:4] == b"glTF":  # GLB: header (12 bytes), JSON chunk (8 + length)
-                    text = file.read(int.from_bytes(head[12:16], "little"))
-                else:
-                    text = head + file.read()
-            document = json.loads(text)
-        except (ValueError, UnicodeDecodeError, OSError):
-            return  # pygltflib says what is wrong
-        if not isinstance(document, dict):
-            return
-        for kind, items in document.items():
+        for kind, items in (document_json(path, self.name) or {}).items():
             if isinstance(items, list) and len(items) > MAX_OBJECTS:
                 raise self.message(f"the file lists {len(items)} {kind}; at most {MAX_OBJECTS} "
                                    "are read")

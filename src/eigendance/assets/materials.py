@@ -8,11 +8,11 @@ texture: the material keeps its factors, and the image is listed in the model's 
 from __future__ import annotations
 
 import io
-import math
 import warnings
 
 import numpy as np
 
+from eigendance import checks
 from eigendance.assets.appearance import ALPHA_MODES, Image, Material, Texture, srgb_to_linear
 from eigendance.assets.gltf import GltfFile
 from eigendance.errors import InputError
@@ -123,19 +123,23 @@ def _gltf_material(gltf: GltfFile, index: int, item, images: Images) -> Material
         return _texture(gltf, info, images, scale_field, f"material {index}")
 
     extensions = item.extensions or {}
-    emissive = _numbers(item.emissiveFactor, 3, (0.0, 0.0, 0.0))
+    label = f"{gltf.name}: material {index}"
+    emissive = _numbers(item.emissiveFactor, 3, (0.0, 0.0, 0.0), f"{label} emissiveFactor")
     strength = (extensions.get("KHR_materials_emissive_strength") or {}).get(
-        "emissiveStrength", 1.0)
-    if isinstance(strength, int | float) and math.isfinite(strength) and strength >= 0:
-        emissive = tuple(float(c) * float(strength) for c in emissive)
+        "emissiveStrength")
+    strength = 1.0 if strength is None else \
+        checks.number(strength, f"{label} emissiveStrength", 0.0)
+    emissive = tuple(float(c) * strength for c in emissive)
     mode = item.alphaMode if item.alphaMode in ALPHA_MODES else "OPAQUE"
     cutoff = item.alphaCutoff if isinstance(item.alphaCutoff, int | float) else 0.5
     return Material(
         name=str(item.name or f"material {index}"),
-        base_color=_numbers(getattr(pbr, "baseColorFactor", None), 4, (1.0, 1.0, 1.0, 1.0)),
+        base_color=_numbers(getattr(pbr, "baseColorFactor", None), 4, (1.0, 1.0, 1.0, 1.0),
+                            f"{label} baseColorFactor"),
         base_color_texture=texture(getattr(pbr, "baseColorTexture", None)),
-        metallic=_number(getattr(pbr, "metallicFactor", None), 1.0),
-        roughness=_number(getattr(pbr, "roughnessFactor", None), 1.0),
+        metallic=_number(getattr(pbr, "metallicFactor", None), 1.0, f"{label} metallicFactor"),
+        roughness=_number(getattr(pbr, "roughnessFactor", None), 1.0,
+                          f"{label} roughnessFactor"),
         metallic_roughness_texture=texture(getattr(pbr, "metallicRoughnessTexture", None)),
         normal_texture=texture(item.normalTexture, "scale"),
         occlusion_texture=texture(item.occlusionTexture, "strength"),
@@ -168,23 +172,29 @@ def _texture(gltf: GltfFile, info, images: Images, scale_field, what) -> Texture
     transform = (getattr(info, "extensions", None) or {}).get("KHR_texture_transform") or {}
     tex_coord = transform.get("texCoord", getattr(info, "texCoord", 0) or 0)
     scale = getattr(info, scale_field, None) if scale_field else None
+    label = f"{gltf.name}: {what} texture {index}"
     return Texture(image=image, tex_coord=int(tex_coord) if isinstance(tex_coord, int) else 0,
-                   scale=_number(scale, 1.0),
-                   offset=_numbers(transform.get("offset"), 2, (0.0, 0.0)),
-                   rotation=_number(transform.get("rotation"), 0.0),
-                   uv_scale=_numbers(transform.get("scale"), 2, (1.0, 1.0)), sampler=sampler)
+                   scale=_number(scale, 1.0, f"{label} {scale_field}"),
+                   offset=_numbers(transform.get("offset"), 2, (0.0, 0.0), f"{label} offset"),
+                   rotation=_number(transform.get("rotation"), 0.0, f"{label} rotation"),
+                   uv_scale=_numbers(transform.get("scale"), 2, (1.0, 1.0), f"{label} scale"),
+                   sampler=sampler)
 
 
-def _number(value, default: float) -> float:
-    ok = isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
-    return float(value) if ok else default
+def _number(value, default: float, label: str) -> float:
+    """A material's number: the format's `default` when the file gives none (glTF: an absent
+    factor), else checked by `checks.number` — text, a bool, NaN or ±∞ is an InputError naming
+    the file and the field, never silently the default."""
+    return default if value is None else checks.number(value, label)
 
 
-def _numbers(values, count: int, default: tuple) -> tuple:
-    if not isinstance(values, list | tuple) or len(values) != count:
+def _numbers(values, count: int, default: tuple, label: str) -> tuple:
+    """`count` numbers of a material (`_number`'s rule for each): `default` when absent."""
+    if values is None:
         return default
-    numbers = [_number(value, math.nan) for value in values]
-    return default if any(math.isnan(x) for x in numbers) else tuple(numbers)
+    if not isinstance(values, list | tuple) or len(values) != count:
+        raise InputError(f"{label} must be a list of {count} numbers, not {checks.shown(values)}")
+    return tuple(checks.number(value, f"{label}[{i}]") for i, value in enumerate(values))
 
 
 # --- trimesh (OBJ + MTL, PLY) -------------------------------------------------------------------
@@ -218,8 +228,10 @@ def trimesh_material(material, images: Images, name: str) -> Material:
         texture = None if index is None else Texture(index)
     return Material(name=str(getattr(material, "name", "") or "material"),
                     base_color=tuple(float(c) for c in rgba), base_color_texture=texture,
-                    metallic=_number(getattr(pbr, "metallicFactor", None), 0.0),
-                    roughness=_number(getattr(pbr, "roughnessFactor", None), 0.8),
+                    metallic=_number(getattr(pbr, "metallicFactor", None), 0.0,
+                                     f"{name}: metallic"),
+                    roughness=_number(getattr(pbr, "roughnessFactor", None), 0.8,
+                                      f"{name}: roughness"),
                     alpha_mode="BLEND" if rgba[3] < 1 else "OPAQUE")
 
 

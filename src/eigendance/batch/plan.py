@@ -26,7 +26,9 @@ from eigendance.batch.record import recorded_files
 from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
 from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
-from eigendance.modal.gltf_skin import has_skin
+from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
+from eigendance.inputs.mapping import read_mapping, shared_k
+from eigendance.inputs.model import model_kind
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
 from eigendance.music.mapping import Mapping
@@ -50,7 +52,8 @@ gallery = 4                       # an initial gallery of 4 items per pair ...
 out = "renders"                   # {model}-{song}-{item}.{ext} are written here
 size = "1280x720"                 # video size (optional)
 fps = 30                          # frames per second (optional, default 30)
-k = 300                           # harmonics of a mesh (optional, default 300)
+k = 150                           # harmonics of a mesh (optional; default: the k the
+                                  # mappings were made on, else 150)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
 # cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
@@ -156,8 +159,8 @@ class Plan:
     items: list[Item]
     outputs: tuple[str, ...]
     size: tuple[int, int] = (1280, 720)
-    fps: float = 30.0
-    k: int = 300
+    fps: float = DEFAULT_FPS
+    k: int = DEFAULT_K
     start: float = 0.0
     duration: float | None = None
     cache: str | None = None
@@ -222,8 +225,8 @@ class _Reader:
         plan = Plan(self.path, out, self.models(), songs, items, outputs)
         if "size" in self.document:
             plan.size = self.size()
-        plan.fps = self.number("fps", 30.0, *FPS, above=True)
-        plan.k = self.number("k", 300, *HARMONICS, integer=True)
+        plan.fps = self.number("fps", DEFAULT_FPS, *FPS, above=True)
+        plan.k = self.number("k", self.recorded_k(items), *HARMONICS, integer=True)
         plan.start = self.number("start", 0.0, *SECONDS)
         plan.duration = self.number("duration", None, *SECONDS, above=True)
         plan.cache = self.folder_of("cache", required=False)
@@ -241,6 +244,15 @@ class _Reader:
             return Mapping.load(file)
         except InputError as error:
             self.fail("surface", f"{file}: {error}")
+
+    def recorded_k(self, items) -> int | None:
+        """The k the mappings record (`inputs.mapping.shared_k`): the default of `k`."""
+        if "k" in self.document:
+            return None
+        try:
+            return shared_k([item.mapping for item in items if item.mapping is not None])[0]
+        except InputError as error:
+            self.fail("mappings", f"{error}".removeprefix("the mappings "))
 
     def number(self, key, default, low, high, integer=False, above=False):
         if key not in self.document:
@@ -297,16 +309,14 @@ class _Reader:
         return [Model(*fields) for fields in zip(names, paths, kinds, strict=True)]
 
     def model_kind(self, file: str) -> str:
-        suffix = suffix_of(file)
-        if suffix == ".json":
-            return "rig"
-        if suffix in (".glb", ".gltf"):
-            return "rig" if has_skin(file) else "mesh"  # a skinned glTF is a rig, as served
-        if suffix in MESH_SUFFIXES:
-            return "mesh"
-        self.fail("models", f"{file}: unknown model format {suffix or '(none)'!r} (meshes: "
-                            f"{' '.join(MESH_SUFFIXES)}; rigs: .json .glb .gltf, or "
-                            f"{', '.join(SAMPLE_RIGS)})")
+        try:  # the one rule of every front end: a skinned glTF is a rig, as served
+            kind = model_kind(file)
+        except InputError as error:
+            self.fail("models", f"{one_line(error)} (meshes: {' '.join(MESH_SUFFIXES)}; rigs: "
+                                f".json .glb .gltf, or {', '.join(SAMPLE_RIGS)})")
+        if kind == "basis":
+            self.fail("models", f"{file}: a basis file; give the mesh it was solved from")
+        return kind
 
     def songs(self, outputs) -> list[Song]:
         paths = []
@@ -347,7 +357,7 @@ class _Reader:
         items = []
         for name, file in zip(unique_parts(paths, "mapping"), paths, strict=True):
             try:
-                mapping = Mapping.load(file)
+                mapping = read_mapping(file)
             except InputError as error:
                 self.fail("mappings", f"{file}: {error}")
             items.append(Item(name, mapping=mapping, path=file))

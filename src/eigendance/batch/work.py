@@ -27,13 +27,13 @@ from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import render_video
-from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.motion import write_animation
+from eigendance.inputs.model import read_model
+from eigendance.inputs.song import read_song
 from eigendance.modal.motion import save_animation
 from eigendance.modal.rig import Rig
 from eigendance.modal.rig_gallery import rig_gallery
-from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.surface import SurfaceDance
 from eigendance.music.gallery import initial_gallery, strongest_item
 from eigendance.music.mapping import Mapping
@@ -126,9 +126,10 @@ def prepare_model(path: str, kind: str, k: int):
     -------
     HarmonicBasis or Rig (float64, as the exports use it).
     """
+    model = read_model(path, kind=kind)
     if kind == "mesh":
-        return HarmonicBasis.from_mesh(path, k)
-    rig = Rig(load_rig(path), np.float64)
+        return model.problem.basis(k)
+    rig = Rig(model.skeleton, np.float64)
     if rig.model.n_modes == 0:
         raise InputError(f"{rig.skeleton.name}: the rig has no vibration mode (no elastic "
                          "joint); nothing to move")
@@ -167,10 +168,10 @@ def prepare_song(path: str, digest: str, bands: int, rhythm_of: Spectrogram | No
         except InputError:
             pass  # damaged: made again
     if rhythm_of is not None and rhythm_of.rhythm is not None:
-        spectrogram = replace(Spectrogram.from_file(path, bands=bands, rhythm=False),
+        spectrogram = replace(read_song(path, bands, rhythm=False),
                               rhythm=rhythm_of.rhythm)
     else:
-        spectrogram = Spectrogram.from_file(path, bands=bands)
+        spectrogram = read_song(path, bands)
     try:
         spectrogram.save(entry)
     except InputError:

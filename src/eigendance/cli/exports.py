@@ -10,18 +10,18 @@ import time
 import numpy as np
 
 from eigendance.cli.options import (
-    HARMONICS,
     RIG_HELP,
     STIFFNESS,
+    add_fps,
+    add_harmonics,
     add_output,
     add_palette_options,
     add_window_options,
-    basis_from,
+    basis_for,
     input_files,
     number,
     progress_bar,
     say_note,
-    spectrogram_from,
 )
 from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
@@ -32,9 +32,12 @@ from eigendance.export.gltf import glb_size
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.files import suffix_of
+from eigendance.inputs.mapping import read_mapping
+from eigendance.inputs.model import model_kind, read_model
+from eigendance.inputs.song import is_spectrogram_file, read_song
 from eigendance.modal.motion import parse_modes
 from eigendance.modal.rig import Rig
-from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
+from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
@@ -57,17 +60,18 @@ def add_dance_inputs(parser, audio_help: str) -> None:
     audio_help : what AUDIO is for this command, for --help.
     """
     parser.add_argument("model", help="mesh file (OBJ, PLY, OFF, STL, glTF) or basis file "
-                        "(.npz); with --rig, or a .json or built-in name: " + RIG_HELP)
+                        "(.npz), or a rig moved by its vibration modes: " + RIG_HELP +
+                        " (a glTF with a skin is a rig, as in the page)")
     parser.add_argument("audio", help=audio_help)
     parser.add_argument("--mapping", help="mapping JSON (default: for a mesh, the initial-"
                         "gallery item of 8 that moves it most; for a rig, bands in order)")
-    parser.add_argument("--rig", action="store_true",
-                        help="MODEL is a rig moved in its vibration modes (needed for a glTF "
-                             "skin; a .json or built-in rig is one anyway)")
-    parser.add_argument("-k", type=HARMONICS, default=300,
-                        help="harmonics when MODEL is a mesh file (default 300)")
-    parser.add_argument("--fps", type=number(0, 240, above=True), default=30.0,
-                        help="frames per second (default 30)")
+    kind = parser.add_mutually_exclusive_group()
+    kind.add_argument("--rig", action="store_true",
+                      help="MODEL must be a rig (an error otherwise)")
+    kind.add_argument("--mesh", dest="as_mesh", action="store_true",
+                      help="a glTF with a skin moves by its mesh's harmonics, not its skeleton")
+    add_harmonics(parser)
+    add_fps(parser, 240)
     add_palette_options(parser)
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness of a rig (default 1)")
@@ -76,7 +80,8 @@ def add_dance_inputs(parser, audio_help: str) -> None:
 
 
 def is_rig(args) -> bool:
-    """Whether MODEL is a rig (--rig, a built-in rig's name, or a skeleton JSON).
+    """Whether MODEL is a rig, by the one rule of every front end (`inputs.model.model_kind`:
+    a built-in rig, a skeleton JSON, a glTF with a skin unless --mesh).
 
     Parameters
     ----------
@@ -85,8 +90,17 @@ def is_rig(args) -> bool:
     Returns
     -------
     bool.
+
+    Raises
+    ------
+    InputError
+        As `model_kind`; with --rig, for a model that is not a rig.
     """
-    return args.rig or args.model in SAMPLE_RIGS or args.model.lower().endswith(".json")
+    rig = model_kind(getattr(args, "model", None) or args.mesh, args.as_mesh) == "rig"
+    if getattr(args, "rig", False) is True and not rig:
+        raise InputError(f"{args.model}: --rig, but it is not a rig (a skeleton JSON, a glTF "
+                         f"with a skin, or one of {', '.join(SAMPLE_RIGS)})")
+    return rig
 
 
 def song_of(args) -> str | None:
@@ -100,7 +114,7 @@ def song_of(args) -> str | None:
     -------
     str or None.
     """
-    return None if args.audio.lower().endswith(".npz") else args.audio
+    return None if is_spectrogram_file(args.audio) else args.audio
 
 
 def dance_from(args, mapping: Mapping | None) -> Dance:
@@ -118,14 +132,14 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
     """
     name = os.path.splitext(os.path.basename(args.output))[0]
     if is_rig(args):
-        skeleton = load_rig(args.model)
+        skeleton = read_model(args.model, kind="rig").skeleton
         if args.stiffness != 1.0:
             skeleton = skeleton.with_stiffness({}, scale=args.stiffness)
         rig = Rig(skeleton, np.float64)
         if rig.model.n_modes == 0:
             raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
                              "joint); nothing to move")
-        spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
+        spectrogram = read_song(args.audio, mapping.bands if mapping else 64)
         mapping = rig.mapping(spectrogram, mapping,
                               selected=parse_modes(args.modes, rig.model.n_modes),
                               amplitude=args.amplitude, time_scale=args.time_scale,
@@ -136,7 +150,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
         if getattr(args, "surface", None):
             raise InputError("--surface ripples a rig's skin; a mesh ripples in its "
                              "harmonics anyway (use --mapping)")
-        basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
+        basis, spectrogram = harmonic_inputs(args, mapping)
         mapping = mapping or strongest_item(basis, spectrogram)
         dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
     dance = dance.window(args.start, args.duration)
@@ -144,22 +158,21 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
     return dance
 
 
-def harmonic_inputs(args, bands: int):
-    """The mesh's basis (solved with a progress bar, or read) and the song's spectrogram.
+def harmonic_inputs(args, mapping: Mapping | None):
+    """The mesh's basis (`options.basis_for`: the one the mapping was made on unless -k,
+    --exact or --reduced ask for another) and the song's spectrogram.
 
     Parameters
     ----------
-    args : the parsed command line (MODEL, AUDIO, -k).
-    bands : bands of the song's spectrogram (the mapping's).
+    args : the parsed command line (MODEL, AUDIO, -k, --exact, --reduced).
+    mapping : the mapping (its bands are the spectrogram's), or None.
 
     Returns
     -------
     (HarmonicBasis, Spectrogram).
     """
-    bar, update = progress_bar(args.k, "eigenpairs")
-    with bar:
-        basis = basis_from(args.model, args.k, progress=update)
-    return basis, spectrogram_from(args.audio, bands)
+    basis = basis_for(args.model, mapping, args.k, args.construction, args.output)
+    return basis, read_song(args.audio, mapping.bands if mapping else 64)
 
 
 def add_export(parser):
@@ -188,7 +201,7 @@ def run_export(args) -> None:
     """
     format = format_of(args.output, args.format)
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = read_mapping(args.mapping) if args.mapping else None
     clipped = args.start > 0 or args.duration is not None
     inputs = input_files(args)
     for path in companion_paths(args.output, format, song_of(args), clipped).values():
@@ -271,7 +284,7 @@ def run_render(args) -> None:
         raise InputError("breeding parents were given without a gallery size",
                          remedy={"gallery": DEFAULT_GALLERY})
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = read_mapping(args.mapping) if args.mapping else None
     if args.gallery is not None:
         dances, looks = gallery_dances(args, mapping)
     else:
@@ -311,9 +324,9 @@ def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
     if mapping is not None:
         raise InputError(f"{args.mapping}: a gallery makes its own mappings; breed from it "
                          "instead", remedy={"breed": args.mapping})
-    items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
+    items = breed([read_mapping(path) for path in args.breed], size, args.seed) \
         if args.breed else None
-    basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
+    basis, spectrogram = harmonic_inputs(args, items[0] if items else None)
     items = items or initial_gallery(basis, spectrogram, size)
     name = os.path.splitext(os.path.basename(args.output))[0]
     dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(

@@ -9,24 +9,29 @@ import time
 import numpy as np
 
 from eigendance.cli.options import (
-    FPS,
     HARMONICS,
     add_construction,
+    add_fps,
+    add_harmonics,
     add_output,
+    add_palette_options,
+    add_rig_options,
     add_window_options,
-    basis_from,
+    basis_for,
     gallery_size,
     number,
     progress_bar,
     say_note,
-    spectrogram_from,
 )
+from eigendance.cli.rigs import run_animate_rig
 from eigendance.errors import InputError
-from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
-from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
+from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.inputs.mapping import read_mapping
+from eigendance.inputs.model import model_kind, read_model
+from eigendance.inputs.song import read_song
 from eigendance.music.breeding import breed
 from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.gallery import (
@@ -35,8 +40,7 @@ from eigendance.music.gallery import (
     initial_gallery,
     strongest_item,
 )
-from eigendance.music.mapping import Mapping
-from eigendance.music.spectrogram import Spectrogram, check_picture_path, save_picture
+from eigendance.music.spectrogram import check_picture_path, save_picture
 from eigendance.window import Window
 from eigendance.writes import refuse_overwrite
 
@@ -49,7 +53,8 @@ def add_basis(parser):
     parser : the command's parser.
     """
     parser.add_argument("mesh", help="mesh file: OBJ, PLY, OFF, STL, glTF or GLB")
-    parser.add_argument("-k", type=HARMONICS, default=300, help="number of harmonics (default 300)")
+    parser.add_argument("-k", type=HARMONICS, default=DEFAULT_K,
+                        help=f"number of harmonics (default {DEFAULT_K})")
     parser.add_argument("--laplacian", choices=LAPLACIANS, default="cotan",
                         help="cotan (default, thesis) or robust (intrinsic Delaunay; "
                              "for non-manifold meshes)")
@@ -74,16 +79,14 @@ def run_basis(args) -> None:
                          "with --exact")
     refuse_overwrite(args.output, args.force)
     start = time.perf_counter()
-    mesh = load_mesh(args.mesh)
-    if cleaned := mesh.describe_cleanup():
-        print(f"{mesh.name}: removed {cleaned}", file=sys.stderr)
+    problem = read_model(args.mesh, kind="mesh", laplacian=args.laplacian, solver=args.solver,
+                         cache=not args.no_cache, construction=args.construction or "auto",
+                         samples=args.samples).problem
+    if cleaned := problem.mesh.describe_cleanup():
+        print(f"{problem.mesh.name}: removed {cleaned}", file=sys.stderr)
     bar, update = progress_bar(args.k, "eigenpairs")
     with bar:
-        basis = HarmonicBasis.from_mesh(mesh, args.k, laplacian=args.laplacian,
-                                        solver=args.solver, cache=not args.no_cache,
-                                        progress=update,
-                                        construction=args.construction or "auto",
-                                        samples=args.samples)
+        basis = problem.basis(args.k, progress=update)
     basis.save(args.output)
     how = "exact" if basis.reduced is None else f"reduced, {basis.reduced.count} samples"
     print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics ({how}), "
@@ -120,7 +123,7 @@ def run_spectrum(args) -> None:
         check_picture_path(args.png)
         refuse_overwrite(args.png, args.force)
     start = time.perf_counter()
-    spectrogram = Spectrogram.from_file(args.audio, rate=args.rate, bands=args.bands)
+    spectrogram = read_song(args.audio, args.bands, rate=args.rate)
     spectrogram.save(args.output)
     if args.png:
         save_picture(spectrogram, args.png, title=os.path.basename(args.audio))
@@ -149,8 +152,8 @@ def add_gallery(parser):
                              "gallery")
     parser.add_argument("-v", "--verbose", action="store_true",
                         help="print each item's motion on the song and the harmonics it drives")
-    parser.add_argument("-k", type=HARMONICS, default=300,
-                        help="harmonics when BASIS is a mesh file (default 300)")
+    parser.add_argument("-k", type=HARMONICS, default=DEFAULT_K,
+                        help=f"harmonics when BASIS is a mesh file (default {DEFAULT_K})")
     add_output(parser, "folder for 0.json, 1.json, …")
 
 
@@ -168,12 +171,12 @@ def run_gallery(args) -> None:
         refuse_overwrite(path, args.force)
     basis = spectrogram = None
     if args.breed:
-        parents = [Mapping.load(path) for path in args.breed]
+        parents = [read_mapping(path) for path in args.breed]
         items = breed(parents, size, args.seed)
     if not args.breed or args.verbose:
-        basis = basis_from(args.basis, args.k)
-        spectrogram = spectrogram_from(args.spectrogram)
-    if not args.breed:
+        basis = basis_for(args.basis, None, args.k, None, args.output)
+        spectrogram = read_song(args.spectrogram)
+    if not args.breed:  # each records the basis it was made on
         items = initial_gallery(basis, spectrogram, size)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
@@ -220,14 +223,20 @@ def add_animate(parser):
     ----------
     parser : the command's parser.
     """
-    parser.add_argument("mesh", help="mesh file, or basis file (.npz)")
+    parser.add_argument("mesh", metavar="MODEL",
+                        help="mesh file, or basis file (.npz); a rig (a glTF with a skin, a "
+                             "skeleton JSON, a built-in rig) moves by its modes as in "
+                             "`animate-rig`")
     parser.add_argument("audio", help="audio file, or spectrogram file (.npz)")
     parser.add_argument("--mapping", help="mapping JSON (default: the initial-gallery item of "
                                           "8 that moves the mesh most)")
-    parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
-    parser.add_argument("-k", type=HARMONICS, default=300,
-                        help="harmonics when MESH is a mesh file (default 300)")
+    parser.add_argument("--mesh", dest="as_mesh", action="store_true",
+                        help="a glTF with a skin moves by its mesh's harmonics, not its skeleton")
+    add_fps(parser)
+    add_harmonics(parser, "when MODEL is a mesh")
     add_window_options(parser)
+    add_palette_options(parser)
+    add_rig_options(parser)
     add_output(parser, "animation file to write (.npz)")
 
 
@@ -238,15 +247,17 @@ def run_animate(args) -> None:
     ----------
     args : the parsed command line.
     """
+    if model_kind(args.mesh, args.as_mesh) == "rig":  # as the page: a skin dances by its modes
+        args.rig, args.bands, args.save_mapping = args.mesh, 64, None
+        run_animate_rig(args)
+        return
     refuse_overwrite(args.output, args.force)
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
-    spectrogram = spectrogram_from(args.audio, bands=mapping.bands if mapping else 64)
+    mapping = read_mapping(args.mapping) if args.mapping else None
+    spectrogram = read_song(args.audio, bands=mapping.bands if mapping else 64)
     window = Window.of(args.start, args.duration, spectrogram.duration, args.audio)
     say_note(args.output, window.note)
-    bar, update = progress_bar(args.k, "eigenpairs")
-    with bar:
-        basis = basis_from(args.mesh, args.k, progress=update)
+    basis = basis_for(args.mesh, mapping, args.k, args.construction, args.output)
     if mapping is None:
         mapping = strongest_item(basis, spectrogram)
     frames, update = progress_bar(None, "frames", unit="frame")

@@ -191,8 +191,11 @@ def memory_advice(args) -> str:
     -------
     str.
     """
-    rig = args.command in ("modes", "animate-rig") or (
-        args.command in ("export", "render") and is_rig(args))
+    try:
+        rig = args.command in ("modes", "animate-rig") or (
+            args.command in ("export", "render", "animate") and is_rig(args))
+    except InputError:
+        rig = False
     if rig:
         return "try a rig of fewer bodies and joints, or a shorter part of the song"
     if args.command in ("spectrum",):

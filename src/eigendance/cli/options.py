@@ -12,12 +12,13 @@ from tqdm import tqdm
 
 from eigendance import checks
 from eigendance.errors import InputError
+from eigendance.files import BASIS_SUFFIXES, suffix_of
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.harmonic.laplacian import laplacian_for
-from eigendance.harmonic.mesh import load_mesh
+from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
+from eigendance.inputs.mapping import basis_choice, record_note
+from eigendance.inputs.model import read_model
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY, check_gallery_size
-from eigendance.music.spectrogram import Spectrogram
 from eigendance.writes import refuse_input
 
 RIG_HELP = ("skeleton JSON, glTF 2.0 skin (.glb/.gltf), or a built-in rig: "
@@ -56,6 +57,18 @@ def number(low: float = -math.inf, high: float = math.inf, integer: bool = False
 
 HARMONICS = number(1, 20000, integer=True)
 FPS = number(0, 1000, above=True)
+
+
+def add_fps(parser, high: float = 1000) -> None:
+    """--fps, the one default of every command (`defaults.DEFAULT_FPS`).
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    high : the most frames per second.
+    """
+    parser.add_argument("--fps", type=number(0, high, above=True), default=DEFAULT_FPS,
+                        help=f"frames per second (default {DEFAULT_FPS:g})")
 PORT = number(0, 65535, integer=True)
 
 
@@ -156,42 +169,56 @@ def progress_bar(total: int | None, description: str, unit: str = "pair", initia
     return bar, update
 
 
-def basis_from(path: str, k: int, progress=None) -> HarmonicBasis:
-    """A basis file (.npz) as is, or a mesh file solved for k harmonics (through the cache)
-    with the Laplacian it takes (`laplacian.laplacian_for`: robust for non-manifold edges, as
-    the server does).
+def add_harmonics(parser, what: str = "when MODEL is a mesh file") -> None:
+    """-k, --reduced and --exact of a command that solves a mesh's basis for a mapping: by
+    default the basis the mapping was made on (`inputs.mapping.basis_choice`).
 
     Parameters
     ----------
-    path : a basis file or a mesh file.
-    k : harmonics of a mesh's basis.
-    progress : optional callable(pairs done) while solving.
+    parser : the command's parser.
+    what : when -k counts, for --help.
+    """
+    parser.add_argument("-k", type=HARMONICS, default=None,
+                        help=f"harmonics {what} (default: the k the --mapping was made on, "
+                             f"else {DEFAULT_K})")
+    add_construction(parser)
+
+
+def basis_for(path: str, mapping=None, k: int | None = None, construction: str | None = None,
+              output: str = "eigendance") -> HarmonicBasis:
+    """A basis file (.npz) as is, or a model's mesh (a skinned glTF's too) solved, with a
+    progress bar, on the basis `mapping` was made on unless -k, --exact or --reduced ask for
+    another (`basis_choice`; then one line on stderr says how the dance differs). The Laplacian
+    is `laplacian.laplacian_for` the mesh (robust for non-manifold edges), as the server's.
+
+    Parameters
+    ----------
+    path : a basis file or a model file.
+    mapping : the mapping the basis is for, or None.
+    k : the -k asked for, or None.
+    construction : --exact / --reduced asked for, or None.
+    output : the file the command writes, naming the note.
 
     Returns
     -------
     HarmonicBasis.
+
+    Raises
+    ------
+    InputError
+        As `inputs.model.read_model` and `HarmonicProblem.basis`.
     """
-    if path.lower().endswith(".npz"):
-        return HarmonicBasis.load(path)
-    mesh = load_mesh(path)
-    return HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian_for(mesh), progress=progress)
-
-
-def spectrogram_from(path: str, bands: int = 64) -> Spectrogram:
-    """A spectrogram file (.npz) as is, or an audio file analysed into `bands` bands.
-
-    Parameters
-    ----------
-    path : a spectrogram file or an audio file.
-    bands : bands of an audio file's spectrogram.
-
-    Returns
-    -------
-    Spectrogram.
-    """
-    if path.lower().endswith(".npz"):
-        return Spectrogram.load(path)
-    return Spectrogram.from_file(path, bands=bands)
+    if suffix_of(path) in BASIS_SUFFIXES:
+        basis = read_model(path, kind="basis").basis
+        say_note(output, record_note(mapping, basis.record))
+        return basis
+    choice = basis_choice(mapping, k, construction)
+    say_note(output, choice.note)
+    problem = read_model(path, kind="mesh", construction=choice.construction,
+                         samples=choice.samples).problem
+    bar, update = progress_bar(choice.k, "eigenpairs")
+    with bar:
+        return problem.basis(choice.k, progress=update)
 
 
 def gallery_size(text: str) -> int:

@@ -10,8 +10,8 @@ from dataclasses import replace
 import numpy as np
 
 from eigendance.cli.options import (
-    FPS,
     RIG_HELP,
+    add_fps,
     add_output,
     add_palette_options,
     add_rig_options,
@@ -19,18 +19,18 @@ from eigendance.cli.options import (
     number,
     progress_bar,
     say_note,
-    spectrogram_from,
 )
 from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
+from eigendance.inputs.mapping import read_mapping
+from eigendance.inputs.model import read_model
+from eigendance.inputs.song import read_song
 from eigendance.limits import check_disk, check_memory
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import parse_modes, save_animation
 from eigendance.modal.rig import Rig
-from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.skeleton_file import read_joint_stiffness
 from eigendance.modal.surface import surface_share
-from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import frame_times
 from eigendance.window import Window
 from eigendance.writes import refuse_overwrite
@@ -47,7 +47,7 @@ def rig_from(args) -> Rig:
     -------
     Rig (float32 modal skin, as the page plays it); the loader's notes go to stderr.
     """
-    skeleton = load_rig(args.rig)
+    skeleton = read_model(args.rig, kind="rig").skeleton
     for note in skeleton.notes:
         print(f"{skeleton.name}: {note}", file=sys.stderr)
     values = read_joint_stiffness(args.joints) if args.joints else {}
@@ -136,7 +136,7 @@ def add_animate_rig(parser):
                                           "palette's modes, low sounds to low modes, "
                                           "calibrated to the song)")
     add_palette_options(parser)
-    parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
+    add_fps(parser)
     add_window_options(parser, "default: to the audio's end, or 4 s without audio")
     parser.add_argument("--bands", type=number(1, 1024, integer=True), default=64,
                         help="bands of the audio's spectrogram without a mapping (default 64)")
@@ -160,13 +160,13 @@ def run_animate_rig(args) -> None:
     if args.save_mapping:
         refuse_overwrite(args.save_mapping, args.force)
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = read_mapping(args.mapping) if args.mapping else None
     rig = rig_from(args)
     skeleton, model = rig.skeleton, rig.model
     if model.n_modes == 0:
         raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic joint); "
                          "nothing to animate")
-    spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else args.bands) \
+    spectrogram = read_song(args.audio, mapping.bands if mapping else args.bands) \
         if args.audio else None
     window = Window.of(args.start, args.duration if args.audio or args.duration else 4.0,
                        spectrogram.duration if spectrogram is not None else math.inf,

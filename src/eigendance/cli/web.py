@@ -5,12 +5,14 @@ from __future__ import annotations
 import sys
 
 from eigendance.cli.options import HARMONICS, PORT, add_construction, number
+from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.inputs.mapping import read_mapping, shared_k
+from eigendance.inputs.model import classify
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
 from eigendance.server.serve import (
     DEFAULT_HOST,
     DEFAULT_PORT,
-    DEMO_K,
     demo_paths,
     library_session,
     listen,
@@ -19,14 +21,14 @@ from eigendance.server.serve import (
 )
 
 
-def add_server_options(parser, k: int, k_help: str) -> None:
+def add_server_options(parser, k_help: str, k_help2: str = "") -> None:
     """The options `serve` and `demo` share: where to listen, -k and the limits.
 
     Parameters
     ----------
     parser : the command's parser.
-    k : the default number of harmonics.
     k_help : what -k is for, for --help.
+    k_help2 : what its default is before `DEFAULT_K`, for --help.
     """
     parser.add_argument("--host", default=DEFAULT_HOST,
                         help=f"address to listen on (default {DEFAULT_HOST}: this machine only; "
@@ -34,7 +36,8 @@ def add_server_options(parser, k: int, k_help: str) -> None:
                              "password)")
     parser.add_argument("--port", type=PORT, default=DEFAULT_PORT,
                         help=f"port (default {DEFAULT_PORT}; 0: any free port)")
-    parser.add_argument("-k", type=HARMONICS, default=k, help=f"{k_help} (default {k})")
+    parser.add_argument("-k", type=HARMONICS, default=None, help=f"{k_help} (default {k_help2}"
+                        f"{DEFAULT_K})")
     parser.add_argument("--max-upload-mb", type=number(1, 4096, integer=True), default=64,
                         help="largest file a page may upload, MiB (default 64)")
     parser.add_argument("--max-memory-mb", type=number(16, 1 << 22, integer=True), default=4096,
@@ -55,7 +58,8 @@ def add_serve(parser):
                              "mapping JSON and skeleton JSON files to put in the library (a "
                              "glTF with a skin is a rig too; the built-in rigs are always "
                              "there)")
-    add_server_options(parser, 150, "harmonics per mesh basis")
+    add_server_options(parser, "harmonics per mesh basis",
+                       "the k the MAPPING files were made on, else ")
 
 
 def run_serve(args) -> None:
@@ -75,7 +79,7 @@ def add_demo(parser):
     ----------
     parser : the command's parser.
     """
-    add_server_options(parser, DEMO_K, "harmonics of the demo mesh")
+    add_server_options(parser, "harmonics of the demo mesh")
 
 
 def run_demo(args) -> None:
@@ -100,13 +104,18 @@ def serve(args, paths, announce: str) -> None:
     """
     listening = listen(args.host, args.port)
     port = listening.getsockname()[1]
+    files = paths()
+    mappings = [read_mapping(path) for path in files if classify(path)[0] == "mapping"]
+    k, note = shared_k(mappings, args.k)  # the basis the mappings were made on
+    if note:
+        print(f"eigendance: note: {note}", file=sys.stderr)
     if warning := exposure_warning(args.host):
         print(warning, file=sys.stderr)
-    with library_session(k=args.k, max_upload_bytes=args.max_upload_mb << 20,
+    with library_session(k=k, max_upload_bytes=args.max_upload_mb << 20,
                          memory_budget=args.max_memory_mb << 20,
                          construction=args.construction or "auto") as library:
         terminal_progress(library)
-        for path in paths():
+        for path in files:
             library.add_path(path)
         run(create_app(library, args.host, port), listening, on_exit=library.stop,
             announce=announce.format(url=url(args.host, port)))

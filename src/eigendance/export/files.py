@@ -27,6 +27,7 @@ from eigendance.export.pointcache import pc2_size, write_pc2
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of
+from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.limits import check_memory, check_output
 from eigendance.music.spectrogram import frame_times
 
@@ -101,7 +102,7 @@ def companion_paths(path: str | os.PathLike, format: str, audio: str | None,
 
 
 def export_dance(dance: Dance, path: str | os.PathLike, format: str | None = None,
-                 fps: float = 30.0, force: bool = False, progress=None, inputs=()) -> dict:
+                 fps: float = DEFAULT_FPS, force: bool = False, progress=None, inputs=()) -> dict:
     """Write `dance` as glTF, point cache or USD, with its song beside it.
 
     Parameters

@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import re
 import subprocess
 import tempfile
 from fractions import Fraction
@@ -23,11 +24,13 @@ import imageio_ffmpeg
 import numpy as np
 
 from eigendance import processes
+from eigendance.checks import shown
 from eigendance.errors import InputError, InternalError, one_line
 from eigendance.export.dance import Dance, video_times
 from eigendance.export.output import Outputs, check_space
 from eigendance.export.renderer import POSES, Camera, Look, Renderer, gallery_cells, gl_started, rim
 from eigendance.export.song import seek_options
+from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.limits import check_disk
 from eigendance.music.decode import open_audio
 
@@ -40,8 +43,13 @@ WORKERS = 2
 PRESET, CRF, AUDIO_BITRATE = "veryfast", 18, "192k"  # x264 speed/quality, AAC bit rate
 
 
-def parse_size(text: str) -> tuple[int, int]:
-    """'1280x720' → (1280, 720); both even (yuv420p halves the chroma), 16 … 7680.
+SIZE = re.compile(r"\s*([0-9]{1,5})\s*[xX×]\s*([0-9]{1,5})\s*")  # WIDTHxHEIGHT (`parse_size`)
+
+
+def parse_size(text) -> tuple[int, int]:
+    """'1280x720' (or '1280×720', any case, spaces around) → (1280, 720); both even (yuv420p
+    halves the chroma), 16 … MAX_SIDE: the one grammar of a video's size (`render --size`,
+    a batch plan's `size`, the page's export).
 
     Parameters
     ----------
@@ -49,14 +57,22 @@ def parse_size(text: str) -> tuple[int, int]:
 
     Returns
     -------
-    (width, height); InputError otherwise.
+    (width, height).
+
+    Raises
+    ------
+    InputError
+        For anything else: not two whole numbers around "x", an odd side, a side out of range.
+
+    Example
+    -------
+    >>> parse_size("1280x720"), parse_size(" 640 × 360 ")
+    ((1280, 720), (640, 360))
     """
-    parts = text.lower().replace("×", "x").split("x")
-    try:
-        width, height = (int(part) for part in parts)
-    except ValueError:
-        raise InputError(f"size {text!r}: expected WIDTHxHEIGHT in pixels, e.g. 1280x720") \
-            from None
+    found = SIZE.fullmatch(text) if isinstance(text, str) else None
+    if found is None:
+        raise InputError(f"size {shown(text)}: expected WIDTHxHEIGHT in pixels, e.g. 1280x720")
+    width, height = int(found[1]), int(found[2])
     check_size(width, height)
     return width, height
 
@@ -322,7 +338,7 @@ def video_bytes(width: int, height: int, frames: int, duration: float) -> float:
 
 
 def render_video(path: str | os.PathLike, dances: list[Dance], looks: list[Look],
-                 audio: str | os.PathLike, fps: float = 30.0, size=(1280, 720),
+                 audio: str | os.PathLike, fps: float = DEFAULT_FPS, size=(1280, 720),
                  force: bool = False, progress=None, workers: int = WORKERS,
                  inputs=()) -> dict:
     """Render dances (one, or a gallery of the same mesh) with their song into an MP4.

@@ -3,40 +3,53 @@
 U = [u_0 … u_{k-1}] solves L u = λ M u with Uᵀ M U = I. The coefficients X̃ = Uᵀ M X (k×3) and
 the remainder D = X − U X̃ give filtered positions X_φ = X + U((φ − 1) ⊙ X̃); φ ≡ 1 returns X.
 A large mesh gets a reduced basis (docs/design.md#reduced-basis): U = P U_r, never formed.
+
+A `HarmonicProblem` is the eigenproblem of one mesh, built once, as potpourri3d's solvers are:
+it owns the Laplacian's kind (`laplacian.laplacian_for` unless asked), where the mesh's pieces
+touch (`contacts`), L and M (assembled once, when first needed), the construction of each basis
+(exact or reduced, decided once per k: `construction_for`) and the disk cache's key (`key`), and
+answers `basis(k)`. `HarmonicBasis.from_mesh` is its one-shot wrapper; the server builds one per
+mesh item and sends it to the worker process that solves (docs/design.md#server).
 """
 
 from __future__ import annotations
 
 import os
+import time
 from dataclasses import dataclass
 
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.files import checked_array, load_npz
 from eigendance.geometry import MAX_COORDINATE, bounding_box_diagonal
+from eigendance.harmonic.basis_file import COMMON_KEYS, read_fields
 from eigendance.harmonic.construction import (
     CONSTRUCTIONS,
+    SOLVE_BYTES_PER_VALUE,
+    BasisRecord,
+    basis_cache,
+    basis_key,
     choose_construction,
-    exact_pairs,
-    reduced_pairs,
+    eigenpairs_fit,
 )
+from eigendance.harmonic.contacts import Contacts, contacts
 from eigendance.harmonic.deform import Deformer
-from eigendance.harmonic.laplacian import LAPLACIANS
+from eigendance.harmonic.eigensolver import SOLVERS, solve
+from eigendance.harmonic.laplacian import LAPLACIANS, laplacian_for
+from eigendance.harmonic.laplacian import laplacian as build_laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.harmonic.reduced import (
-    REDUCED_KEYS,
     ReducedHarmonics,
-    check_reduced,
     reduced_arrays,
     reduced_from_arrays,
+    reduced_harmonics,
+    reduced_key,
+    reduced_pairs_fit,
+    sample_count,
+    solve_bytes,
 )
+from eigendance.limits import check_memory, memory_budget
 from eigendance.writes import atomic_save_npz
-
-FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
-               "coefficients", "residual", "laplacian")
-# A reduced basis file holds REDUCED_KEYS instead of the eigenvectors.
-COMMON_KEYS = tuple(name for name in FORMAT_KEYS if name != "eigenvectors")
 
 
 @dataclass
@@ -94,6 +107,12 @@ class HarmonicBasis:
     def construction(self) -> str:
         """"exact" or "reduced" (docs/design.md#reduced-basis)."""
         return "exact" if self.reduced is None else "reduced"
+
+    @property
+    def record(self) -> BasisRecord:
+        """What a mapping made on this basis records of it (`BasisRecord`)."""
+        return BasisRecord(self.k, self.construction,
+                           None if self.reduced is None else self.reduced.count)
 
     @property
     def vectors(self):
@@ -173,29 +192,8 @@ class HarmonicBasis:
         HarmonicBasis with k harmonics, verified: L u = λ M u and Uᵀ M U = I (a reduced basis:
         L_r c = λ M_r c and Uᵀ M U = U_rᵀ M_r U_r = I).
         """
-        if construction not in CONSTRUCTIONS:
-            raise InputError(f"unknown construction '{construction}' (expected one of "
-                             f"{', '.join(CONSTRUCTIONS)})")
-        if not isinstance(mesh, Mesh):
-            mesh = load_mesh(mesh)
-        if laplacian == "cotan" and (count := mesh.non_manifold_edge_count()):
-            raise InputError(f"{mesh.name}: {count} non-manifold edges (shared by more than two "
-                             "triangles); the cotangent Laplacian needs a manifold mesh",
-                             remedy={"laplacian": "robust"})
-        if construction == "auto":
-            construction = choose_construction(mesh.n, k, samples)
-        if construction == "reduced":
-            eigenvalues, mass, reduced, seconds = reduced_pairs(mesh, k, laplacian, samples,
-                                                                cache, progress)
-            eigenvectors = None
-        else:
-            eigenvalues, eigenvectors, mass, seconds = exact_pairs(mesh, k, laplacian, solver,
-                                                                   cache, progress)
-            reduced = None
-        if progress is not None:
-            progress(k)
-        return cls.from_arrays(mesh, eigenvalues, eigenvectors, mass, laplacian, seconds,
-                               reduced)
+        return HarmonicProblem(mesh, laplacian, construction, samples, solver, cache).basis(
+            k, progress)
 
     @property
     def diagonal(self) -> float:
@@ -316,32 +314,13 @@ class HarmonicBasis:
         HarmonicBasis.
         """
         path = os.fspath(path)
-        data = load_npz(path, COMMON_KEYS)
-        fields = {"vertices": checked_array(data, "vertices", path, shape=(None, 3)),
-                  "eigenvalues": checked_array(data, "eigenvalues", path, shape=(None,))}
-        n, k = len(fields["vertices"]), len(fields["eigenvalues"])
-        if n < 3 or k < 1:
-            raise InputError(f"{path}: a basis needs at least 3 vertices and 1 harmonic, "
-                             f"has {n} and {k}")
-        for name, shape in (("center", (3,)), ("scale", ()), ("mass", (n,)),
-                            ("coefficients", (k, 3)), ("residual", (n, 3))):
-            fields[name] = checked_array(data, name, path, shape=shape)
-        fields["faces"] = faces = checked_array(data, "faces", path, "int", (None, 3))
-        fields["laplacian"] = checked_array(data, "laplacian", path, "str")
-        fields["scale"] = float(fields["scale"])
-        if len(faces) == 0 or faces.min() < 0 or faces.max() >= n:
-            raise InputError(f"{path}: faces must be triangles of vertex indices 0 … {n - 1}")
-        if fields["laplacian"] not in LAPLACIANS:
-            raise InputError(f"{path}: laplacian must be one of {', '.join(LAPLACIANS)}")
-        if not fields["scale"] > 0 or not np.all(fields["mass"] > 0):
-            raise InputError(f"{path}: scale and mass must be positive")
-        fields["eigenvectors"], fields["reduced"] = _load_vectors(data, path, n, k)
+        fields = read_fields(path)
         basis = cls(**fields)
         if not np.abs(basis.to_original(basis.vertices)).max() <= MAX_COORDINATE:
             raise InputError(f"{path}: original coordinates (vertices·scale + center) beyond "
                              f"±{MAX_COORDINATE:.0e}")
         expected = cls.from_arrays(Mesh(basis.vertices, basis.faces, basis.center, basis.scale,
-                                        np.arange(n)), basis.eigenvalues, basis.eigenvectors,
+                                        np.arange(basis.n)), basis.eigenvalues, basis.eigenvectors,
                                    basis.mass, reduced=basis.reduced)
         for name in ("coefficients", "residual"):
             stored, rebuilt = getattr(basis, name), getattr(expected, name)
@@ -351,25 +330,217 @@ class HarmonicBasis:
         return basis
 
 
-def _load_vectors(data: dict, path: str, n: int, k: int):
-    """(eigenvectors, None) of an exact basis file or (None, ReducedHarmonics) of a reduced
-    one, checked."""
-    if "eigenvectors" in data:
-        return checked_array(data, "eigenvectors", path, shape=(n, k)), None
-    missing = [name for name in REDUCED_KEYS if name not in data]
-    if missing:
-        raise InputError(f"{path}: missing eigenvectors (or {', '.join(missing)} of a reduced "
-                         "basis); not an eigendance basis file")
-    arrays = {"samples": checked_array(data, "samples", path, "int", (None,)),
-              "interpolation_indices": checked_array(data, "interpolation_indices", path,
-                                                     "int", (n, None)),
-              "interpolation_weights": checked_array(data, "interpolation_weights", path,
-                                                     shape=(n, None)),
-              "coarse_eigenvectors": checked_array(data, "coarse_eigenvectors", path,
-                                                   shape=(None, k))}
-    problem = check_reduced(arrays, n, k)
-    if problem:
-        raise InputError(f"{path}: reduced basis: {problem}")
-    return None, reduced_from_arrays(arrays)
 
+class HarmonicProblem:
+    """The eigenproblem of a mesh's manifold harmonics, built once (see the module docstring).
 
+    Parameters
+    ----------
+    mesh : a cleaned `Mesh`, or the path of a mesh file (`load_mesh`).
+    laplacian : "cotan", "robust", or None for `laplacian_for(mesh)` (robust for non-manifold
+        edges).
+    construction : "auto" (`choose_construction`, per k), "exact" or "reduced".
+    samples : samples of a reduced basis (default `reduced.sample_count`).
+    solver : "bands" (spectrum slicing) or "eigsh" (the naive baseline); exact bases only.
+    cache : read and write the disk cache.
+
+    Raises
+    ------
+    InputError
+        For an unknown construction, Laplacian or solver, and for the cotangent Laplacian on a
+        mesh with non-manifold edges (its remedy: the robust one); `load_mesh`'s for a file.
+
+    Example
+    -------
+    >>> import trimesh
+    >>> sphere = trimesh.creation.icosphere(2)
+    >>> problem = HarmonicProblem(Mesh.from_arrays(sphere.vertices, sphere.faces), cache=False)
+    >>> problem.laplacian, problem.construction_for(9)
+    ('cotan', 'exact')
+    >>> (problem.basis(9).eigenvalues[:4].round(1) + 0.0).tolist()   # l(l+1) = 0, 2, 2, 2
+    [0.0, 2.0, 2.0, 2.0]
+    """
+
+    def __init__(self, mesh: Mesh | str | os.PathLike, laplacian: str | None = None,
+                 construction: str = "auto", samples: int | None = None,
+                 solver: str = "bands", cache: bool = True):
+        for value, allowed, what in ((construction, CONSTRUCTIONS, "construction"),
+                                     (solver, SOLVERS, "solver")):
+            if value not in allowed:
+                raise InputError(f"unknown {what} '{value}' (expected one of "
+                                 f"{', '.join(allowed)})")
+        self.mesh = mesh if isinstance(mesh, Mesh) else load_mesh(mesh)
+        self.laplacian = laplacian_for(self.mesh) if laplacian is None else laplacian
+        if self.laplacian not in LAPLACIANS:
+            raise InputError(f"unknown Laplacian '{self.laplacian}' (expected one of "
+                             f"{', '.join(LAPLACIANS)})")
+        if self.laplacian == "cotan" and (count := self.mesh.non_manifold_edge_count()):
+            raise InputError(f"{self.mesh.name}: {count} non-manifold edges (shared by more than "
+                             "two triangles); the cotangent Laplacian needs a manifold mesh",
+                             remedy={"laplacian": "robust"})
+        self.construction, self.samples = construction, samples
+        self.solver, self.cache = solver, cache
+        self._contacts: Contacts | None = None
+        self._operators = None
+        self._chosen: dict[int, str] = {}
+
+    @property
+    def contacts(self) -> Contacts:
+        """Where the mesh's pieces touch (`contacts.contacts`), found once."""
+        if self._contacts is None:
+            self._contacts = contacts(self.mesh.vertices, self.mesh.faces)
+        return self._contacts
+
+    def operators(self):
+        """(L, M): the stiffness (n, n) sparse, its pieces coupled at `contacts`, and the mass
+        (n,), assembled once (`laplacian.laplacian`).
+
+        Returns
+        -------
+        (scipy.sparse.csc_matrix, numpy.ndarray).
+        """
+        if self._operators is None:
+            self._operators = build_laplacian(self.mesh.vertices, self.mesh.faces,
+                                              self.laplacian, self.contacts)
+        return self._operators
+
+    def construction_for(self, k: int) -> str:
+        """The construction of the basis of k harmonics: the one asked for, or the one
+        "auto" chooses (`choose_construction`), decided once for each k.
+
+        Parameters
+        ----------
+        k : harmonics.
+
+        Returns
+        -------
+        "exact" or "reduced".
+        """
+        if k not in self._chosen:
+            self._chosen[k] = choose_construction(self.mesh.n, k, self.samples) \
+                if self.construction == "auto" else self.construction
+        return self._chosen[k]
+
+    def sample_count(self, k: int) -> int | None:
+        """Samples m of the basis of k harmonics; None for an exact one.
+
+        Parameters
+        ----------
+        k : harmonics.
+
+        Returns
+        -------
+        int or None.
+        """
+        if self.construction_for(k) == "exact":
+            return None
+        return sample_count(self.mesh.n, k) if self.samples is None else int(self.samples)
+
+    def key(self, k: int) -> str:
+        """The disk cache's key of the basis of k harmonics (`basis_key`, `reduced_key`).
+
+        Parameters
+        ----------
+        k : harmonics.
+
+        Returns
+        -------
+        str.
+        """
+        count = self.sample_count(k)
+        if count is None:
+            return basis_key(self.mesh, k, self.laplacian, self.solver)
+        return reduced_key(basis_key(self.mesh, k, self.laplacian, "bands"), count)
+
+    def cached(self, k: int) -> bool:
+        """Whether the disk cache holds an entry for the basis of k harmonics (checked when
+        read).
+
+        Parameters
+        ----------
+        k : harmonics.
+
+        Returns
+        -------
+        bool.
+        """
+        return os.path.isfile(basis_cache().path(self.key(k)))
+
+    def basis(self, k: int, progress=None):
+        """The first k harmonics (`HarmonicBasis`), through the disk cache.
+
+        Parameters
+        ----------
+        k : harmonics, 1 ≤ k < n.
+        progress : optional callable(done) told how many eigenpairs are accepted so far.
+
+        Returns
+        -------
+        HarmonicBasis, verified: L u = λ M u and Uᵀ M U = I (a reduced basis: L_r c = λ M_r c
+        and U_rᵀ M_r U_r = I).
+
+        Raises
+        ------
+        InputError
+            When the solve cannot fit the memory available (its remedy: a smaller k), or a
+            reduced basis's samples are not between k and n.
+        """
+        if self.construction_for(k) == "reduced":
+            arrays, seconds = self._reduced(k, progress)
+            reduced, eigenvectors = reduced_from_arrays(arrays), None
+        else:
+            arrays, seconds = self._exact(k, progress)
+            reduced, eigenvectors = None, arrays["eigenvectors"]
+        if progress is not None:
+            progress(k)
+        return HarmonicBasis.from_arrays(self.mesh, arrays["eigenvalues"], eigenvectors,
+                                         arrays["mass"], self.laplacian, seconds, reduced)
+
+    def _exact(self, k: int, progress) -> tuple[dict, float]:
+        """The eigenpairs on every vertex, planned against the memory available."""
+        mesh = self.mesh
+        per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
+        fits = int(memory_budget() // per_harmonic)
+        check_memory(per_harmonic * k, f"{mesh.name}: {k} harmonics of {mesh.n} vertices",
+                     remedy={"k": fits} if 1 <= fits < k else None)
+
+        def solved() -> dict:
+            stiffness, mass = self.operators()
+            eigenvalues, eigenvectors = solve(stiffness, mass, k, self.solver, progress)
+            return {"eigenvalues": eigenvalues, "eigenvectors": eigenvectors, "mass": mass}
+
+        return self._fetch(k, solved, lambda found: eigenpairs_fit(*self.operators(), k, found))
+
+    def _reduced(self, k: int, progress) -> tuple[dict, float]:
+        """The eigenpairs of the reduced problem (docs/design.md#reduced-basis)."""
+        mesh, count = self.mesh, self.sample_count(k)
+        if not k < count <= mesh.n:
+            raise InputError(f"{mesh.name}: a reduced basis of k = {k} harmonics needs more than "
+                             f"k samples and at most one per vertex ({mesh.n}); asked for "
+                             f"{count}", remedy={"samples": 4 * k} if 4 * k <= mesh.n
+                             else {"exact": True})
+        check_memory(solve_bytes(mesh.n, len(mesh.faces), k, count, self.laplacian),
+                     f"{mesh.name}: a reduced basis of {k} harmonics of {mesh.n} vertices")
+
+        def solved() -> dict:
+            stiffness, mass = self.operators()
+            eigenvalues, reduced = reduced_harmonics(stiffness, mass, mesh.vertices, mesh.faces,
+                                                     k, count, progress)
+            return {"eigenvalues": eigenvalues, "mass": mass, **reduced_arrays(reduced)}
+
+        return self._fetch(k, solved, lambda found: reduced_pairs_fit(*self.operators(), k,
+                                                                      found))
+
+    def _fetch(self, k: int, solved, valid) -> tuple[dict, float]:
+        """solved()'s arrays, through the disk cache when it is used, and the seconds the
+        solve took (0 from the cache)."""
+        timing = {"seconds": 0.0}
+
+        def timed() -> dict:
+            start = time.perf_counter()
+            arrays = solved()
+            timing["seconds"] = time.perf_counter() - start
+            return arrays
+
+        arrays = basis_cache().get(self.key(k), timed, valid) if self.cache else timed()
+        return arrays, timing["seconds"]

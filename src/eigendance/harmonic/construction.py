@@ -1,36 +1,29 @@
 """How a harmonic basis is computed (docs/design.md#reduced-basis, docs/design.md#cache).
 
 Which construction (`choose_construction`: exact when the solve fits the time and memory
-rule, else reduced), the solve planned against the memory available, its eigenpairs fetched
-from or stored in the disk cache (`basis_key` names an entry, `eigenpairs_fit` and
-`reduced.reduced_pairs_fit` check one before it is used). `HarmonicBasis.from_mesh` builds
-the basis from what these return.
+rule, else reduced) and the disk cache of eigenpairs (`basis_key` names an entry,
+`eigenpairs_fit` and `reduced.reduced_pairs_fit` check one before it is used).
+`basis.HarmonicProblem` plans each solve against the memory available and fetches or stores
+its eigenpairs here.
 """
 
 from __future__ import annotations
 
 import hashlib
-import time
+from dataclasses import dataclass
 
 import numpy as np
 
+from eigendance.checks import number
 from eigendance.errors import InputError
 from eigendance.harmonic.cache import DiskCache
-from eigendance.harmonic.eigensolver import SOLVER_VERSION, residuals, solve
-from eigendance.harmonic.laplacian import laplacian as build_laplacian
+from eigendance.harmonic.eigensolver import SOLVER_VERSION, residuals
 from eigendance.harmonic.mesh import Mesh
 from eigendance.harmonic.reduced import (
     CACHE_TOLERANCE,
-    ReducedHarmonics,
-    reduced_arrays,
-    reduced_from_arrays,
-    reduced_harmonics,
-    reduced_key,
-    reduced_pairs_fit,
     sample_count,
-    solve_bytes,
 )
-from eigendance.limits import check_memory, memory_budget
+from eigendance.limits import memory_budget
 
 # Bytes a solve of k harmonics on n vertices holds at its peak, per eigenvector value: the
 # eigenvectors, the solver's band blocks and their copies while stitching. Measured peaks: 18
@@ -66,101 +59,79 @@ def choose_construction(n: int, k: int, samples: int | None = None) -> str:
     return "exact" if fits and n * k <= EXACT_VALUES else "reduced"
 
 
-class _Operators:
-    """L and M of a mesh, assembled once and only when asked (a cache hit's check, a solve)."""
-
-    def __init__(self, mesh: Mesh, laplacian: str):
-        self.mesh, self.laplacian, self.pair = mesh, laplacian, None
-
-    def __call__(self):
-        if self.pair is None:
-            self.pair = build_laplacian(self.mesh.vertices, self.mesh.faces, self.laplacian)
-        return self.pair
-
-
-def exact_pairs(mesh: Mesh, k: int, laplacian: str, solver: str, cache: bool,
-                progress) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-    """The first k eigenpairs of L u = λ M u on every vertex, planned against the memory
-    available and through the disk cache.
+@dataclass(frozen=True)
+class BasisRecord:
+    """The basis a mapping was made on (docs/design.md#mapping-file): the same record gives the
+    same harmonics, so the same dance.
 
     Parameters
     ----------
-    mesh : the normalised mesh.
     k : harmonics.
-    laplacian : "cotan" or "robust".
-    solver : "bands" or "eigsh".
-    cache : read and write the disk cache.
-    progress : optional callable(done) told how many eigenpairs are accepted so far.
+    construction : "exact" or "reduced".
+    samples : samples m of a reduced basis (None: exact, or the default count).
 
-    Returns
+    Example
     -------
-    (eigenvalues (k,), eigenvectors (n, k) with Uᵀ M U = I, mass (n,), seconds the solve took:
-    0 from the cache).
+    >>> record = BasisRecord.from_json({"k": 150, "construction": "exact", "samples": None})
+    >>> record, record.describe()
+    (BasisRecord(k=150, construction='exact', samples=None), 'k = 150 harmonics (exact)')
     """
-    per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
-    fits = int(memory_budget() // per_harmonic)
-    check_memory(per_harmonic * k, f"{mesh.name}: {k} harmonics of {mesh.n} vertices",
-                 remedy={"k": fits} if 1 <= fits < k else None)
-    operators, timing = _Operators(mesh, laplacian), {"seconds": 0.0}
 
-    def solved() -> dict[str, np.ndarray]:
-        stiffness, mass = operators()
-        start = time.perf_counter()
-        eigenvalues, eigenvectors = solve(stiffness, mass, k, solver, progress)
-        timing["seconds"] = time.perf_counter() - start
-        return {"eigenvalues": eigenvalues, "eigenvectors": eigenvectors, "mass": mass}
+    k: int
+    construction: str = "exact"
+    samples: int | None = None
 
-    if cache:
-        arrays = basis_cache().get(basis_key(mesh, k, laplacian, solver), solved,
-                                   lambda found: eigenpairs_fit(*operators(), k, found))
-    else:
-        arrays = solved()
-    return arrays["eigenvalues"], arrays["eigenvectors"], arrays["mass"], timing["seconds"]
+    def describe(self) -> str:
+        """The record in words, as a message says it.
 
+        Returns
+        -------
+        str.
+        """
+        how = self.construction if self.samples is None else \
+            f"{self.construction}, {self.samples} samples"
+        return f"k = {self.k} harmonics ({how})"
 
-def reduced_pairs(mesh: Mesh, k: int, laplacian: str, samples: int | None, cache: bool,
-                  progress) -> tuple[np.ndarray, np.ndarray, ReducedHarmonics, float]:
-    """The first k eigenpairs of the reduced problem on `count` samples
-    (docs/design.md#reduced-basis), planned against the memory available and through the disk
-    cache.
+    def to_json(self) -> dict:
+        """{"k", "construction", "samples"}.
 
-    Parameters
-    ----------
-    mesh : the normalised mesh.
-    k : harmonics.
-    laplacian : "cotan" or "robust".
-    samples : samples m (k < m ≤ n; default `reduced.sample_count`).
-    cache : read and write the disk cache.
-    progress : optional callable(done).
+        Returns
+        -------
+        dict.
+        """
+        return {"k": self.k, "construction": self.construction, "samples": self.samples}
 
-    Returns
-    -------
-    (eigenvalues (k,), mass (n,), ReducedHarmonics, seconds the solve took: 0 from the cache).
-    """
-    count = sample_count(mesh.n, k) if samples is None else int(samples)
-    if not k < count <= mesh.n:
-        raise InputError(f"{mesh.name}: a reduced basis of k = {k} harmonics needs more than k "
-                         f"samples and at most one per vertex ({mesh.n}); asked for {count}",
-                         remedy={"samples": 4 * k} if 4 * k <= mesh.n else {"exact": True})
-    check_memory(solve_bytes(mesh.n, len(mesh.faces), k, count, laplacian),
-                 f"{mesh.name}: a reduced basis of {k} harmonics of {mesh.n} vertices")
-    operators, timing = _Operators(mesh, laplacian), {"seconds": 0.0}
+    @classmethod
+    def from_json(cls, data, name: str = "mapping") -> BasisRecord:
+        """A record from a mapping document's "basis", checked.
 
-    def solved() -> dict[str, np.ndarray]:
-        stiffness, mass = operators()
-        start = time.perf_counter()
-        eigenvalues, reduced = reduced_harmonics(stiffness, mass, mesh.vertices, mesh.faces,
-                                                 k, count, progress)
-        timing["seconds"] = time.perf_counter() - start
-        return {"eigenvalues": eigenvalues, "mass": mass, **reduced_arrays(reduced)}
+        Parameters
+        ----------
+        data : the document's "basis" object.
+        name : how messages call the mapping.
 
-    if cache:
-        key = reduced_key(basis_key(mesh, k, laplacian, "bands"), count)
-        arrays = basis_cache().get(key, solved, lambda found: reduced_pairs_fit(
-            *operators(), k, found))
-    else:
-        arrays = solved()
-    return arrays["eigenvalues"], arrays["mass"], reduced_from_arrays(arrays), timing["seconds"]
+        Returns
+        -------
+        BasisRecord.
+
+        Raises
+        ------
+        InputError
+            For a field that is not an object of a positive integer k, a construction
+            "exact" or "reduced" and samples null or an integer above k.
+        """
+        if not isinstance(data, dict):
+            raise InputError(f"{name}: basis must be an object {{k, construction, samples}}")
+        k = number(data.get("k"), f"{name}: basis.k", 1, 20000, integer=True)
+        construction = data.get("construction", "exact")
+        if construction not in CONSTRUCTIONS[1:]:
+            raise InputError(f"{name}: basis.construction must be \"exact\" or \"reduced\", "
+                             f"not {construction!r}")
+        samples = data.get("samples")
+        if samples is not None:
+            samples = number(samples, f"{name}: basis.samples", k, 10**7, integer=True,
+                             above=True)
+        return cls(k, construction, samples)
 
 
 def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:

@@ -45,8 +45,8 @@ def laplacian_for(mesh) -> str:
     return "robust" if mesh.non_manifold_edge_count() else "cotan"
 
 
-def laplacian(vertices: np.ndarray, faces: np.ndarray,
-              kind: str = "cotan") -> tuple[sp.csc_matrix, np.ndarray]:
+def laplacian(vertices: np.ndarray, faces: np.ndarray, kind: str = "cotan",
+              found: Contacts | None = None) -> tuple[sp.csc_matrix, np.ndarray]:
     """The operator of the harmonics: (L, mass), L sparse (n, n) PSD stiffness with the
     pieces coupled where they touch, mass (n,) vertex areas.
 
@@ -54,6 +54,7 @@ def laplacian(vertices: np.ndarray, faces: np.ndarray,
     ----------
     vertices : (n, 3) normalised positions; faces : (m, 3) triangles.
     kind : "cotan" or "robust".
+    found : where the pieces touch (default: `contacts.contacts` of the mesh).
 
     Returns
     -------
@@ -78,7 +79,8 @@ def laplacian(vertices: np.ndarray, faces: np.ndarray,
     if not (np.all(np.isfinite(mass)) and np.all(mass > 0) and np.all(np.isfinite(stiffness.data))):
         raise InputError("the Laplacian has non-finite entries or vertices without area",
                          remedy={"laplacian": "robust"})
-    found = contacts(vertices, faces)
+    if found is None:
+        found = contacts(vertices, faces)
     if len(found):
         stiffness = stiffness + coupling(found, len(vertices), _edge_weight(stiffness))
     return stiffness.tocsc(), mass

@@ -21,6 +21,7 @@ import numpy as np
 
 from eigendance.files import load_npz
 from eigendance.harmonic.basis import HarmonicBasis
+from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.limits import check_output
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram, frame_times
@@ -104,7 +105,7 @@ def iter_positions(basis, spectrogram, mapping, times, dtype=np.float32):
         yield first, deform(phi, buffers[number % 2][:len(chunk)])
 
 
-def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: float = 30.0,
+def write_animation(path: str | os.PathLike, basis, spectrogram, mapping, fps: float = DEFAULT_FPS,
                     progress=None, window: Window | None = None, force: bool = False) -> int:
     """Write the animation file (see the module docstring) atomically.
 

@@ -13,7 +13,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.assets.appearance import WELD_TOLERANCE
-from eigendance.assets.gltf import GltfFile
 from eigendance.assets.model import Model
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError
@@ -105,23 +104,6 @@ def skeleton_from_gltf(path: str | os.PathLike,
     skeleton = _skeleton_from_rig(rig, label, stiffness_frequency)
     skeleton.appearance = model.appearance(welded)
     return skeleton
-
-
-def has_skin(path: str | os.PathLike) -> bool:
-    """Whether a glTF file (.glb, .gltf) has a skin; False for anything unreadable.
-
-    Parameters
-    ----------
-    path : the file.
-
-    Returns
-    -------
-    bool.
-    """
-    try:
-        return bool(GltfFile(path).document.skins)
-    except Exception:  # noqa: BLE001 - the mesh reader says why the file cannot be read
-        return False
 
 
 def skinned_rig(model: Model) -> tuple[SkinnedRig, np.ndarray]:

@@ -196,7 +196,7 @@ def add_tube_skin(skeleton: Skeleton, rings: int = 8, around: int = 12,
     skeleton.weights = np.concatenate(weights)
 
 
-def load_rig(rig: str | os.PathLike, name: str | None = None) -> Skeleton:
+def load_rig(rig: str | os.PathLike, name: str | None = None, document=None) -> Skeleton:
     """A rig with its skin, from a file or by name.
 
     Parameters
@@ -204,6 +204,7 @@ def load_rig(rig: str | os.PathLike, name: str | None = None) -> Skeleton:
     rig : a skeleton JSON (.json), a glTF 2.0 skin (.glb, .gltf), or the name of a built-in
         rig (SAMPLE_RIGS), unless a file of that name exists.
     name : what messages and the skeleton call a file (default: the file's name).
+    document : a skeleton JSON's document, already parsed (`inputs.model.classify`).
 
     Returns
     -------
@@ -223,8 +224,12 @@ def load_rig(rig: str | os.PathLike, name: str | None = None) -> Skeleton:
         raise InputError(f"{rig}: unknown rig format {suffix!r} (use .json, .glb or .gltf, or "
                          f"a built-in rig: {', '.join(SAMPLE_RIGS)})")
     check_readable(rig)
-    skeleton = skeleton_from_gltf(rig, name=name) if suffix in (".glb", ".gltf") else \
-        Skeleton.from_json(rig, name)
+    if suffix in (".glb", ".gltf"):
+        skeleton = skeleton_from_gltf(rig, name=name)
+    elif document is not None:
+        skeleton = Skeleton.from_dict(document, name or os.path.basename(rig))
+    else:
+        skeleton = Skeleton.from_json(rig, name)
     if skeleton.vertices is None:
         add_tube_skin(skeleton)
     return skeleton

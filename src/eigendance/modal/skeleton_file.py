@@ -12,7 +12,6 @@ more bodies becomes one joint per pair of them (thesis §5.2).
 from __future__ import annotations
 
 import itertools
-import json
 import os
 
 import numpy as np
@@ -168,25 +167,6 @@ def skeleton_document(bodies: list[Body], joints: list[Joint]) -> dict:
                     "stiffness": j.stiffness.tolist(), "damping": j.damping}
                    for j in joints],
     }
-
-
-def is_skeleton_json(path: str | os.PathLike) -> bool:
-    """Whether a file is a skeleton JSON (its "format" says so).
-
-    Parameters
-    ----------
-    path : any file.
-
-    Returns
-    -------
-    bool: False for anything else, unreadable files included.
-    """
-    try:
-        with open(path, encoding="utf-8") as file:
-            document = json.load(file)
-    except (OSError, ValueError, RecursionError):
-        return False
-    return isinstance(document, dict) and document.get("format") == FORMAT
 
 
 def read_joint_stiffness(path: str | os.PathLike) -> dict:

@@ -328,14 +328,15 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
 
     Returns
     -------
-    S mappings, lowest part of the spectrum first. With N ≥ S drivable harmonics P (eigenvalue
-    > 0, some shape on them): item 0 sends every band to P[0], item S−1 to P[N−1], items 1…S−2
-    spread the bands over geometrically growing ranges of P in between (`ranged_parts`); with
+    S mappings, lowest part of the spectrum first, each recording the basis it was made on (a
+    `HarmonicBasis`'s `record`: docs/design.md#mapping-file). With N ≥ S drivable harmonics P
+    (eigenvalue > 0, some shape on them): item 0 sends every band to P[0], item S−1 to P[N−1], items
+    1…S−2 spread the bands over geometrically growing ranges of P in between (`ranged_parts`); with
     N < S, signed combinations of the few harmonics (`combined_parts`). Item s's amplification is
-    (−1)^s·α_r on the range of every item r (α_r calibrated so that item r alone moves the model
-    by its target m on the song, `motion_targets`), 0 on harmonics that are never driven: each
-    item moves only its own range, while crossing any initial transfer with any initial
-    amplification still moves the model, with either sign.
+    (−1)^s·α_r on the range of every item r (α_r calibrated so that item r alone moves the model by
+    its target m on the song, `motion_targets`), 0 on harmonics that are never driven: each item
+    moves only its own range, while crossing any initial transfer with any initial amplification
+    still moves the model, with either sign.
 
     Example
     -------
@@ -383,7 +384,8 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
         amplification[part.harmonics] = scale * part.unit
         envelope, pulse = shapings[s]
         items.append(Mapping(transfer, amplification, None, f"gallery item {s + 1}",
-                             envelope=envelope, pulse=pulse))
+                             envelope=envelope, pulse=pulse,
+                             basis=getattr(dancer, "record", None)))  # a basis's (k …)
     return items
 
 

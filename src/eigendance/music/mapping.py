@@ -25,8 +25,10 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from eigendance.checks import number, shown
 from eigendance.errors import InputError
-from eigendance.files import finite_number, read_json
+from eigendance.files import read_json
+from eigendance.harmonic.construction import BasisRecord
 from eigendance.music.envelope import Envelope, Pulse, shape_values
 from eigendance.writes import atomic_write
 
@@ -114,7 +116,7 @@ class ModeSettings:
         tempo = data.get("tempo")
         if tempo is not None and tempo not in TEMPO_MODES:
             raise InputError(f"{name}: modes.tempo must be one of {', '.join(TEMPO_MODES)} or "
-                             f"null, got {_shown(tempo)}")
+                             f"null, got {shown(tempo)}")
         return cls(None if selected is None else np.array(selected, dtype=np.int64),
                    vectors["amplitudes"], vectors["phases"], time_scale, tempo)
 
@@ -143,6 +145,8 @@ class Mapping:
     pulse : kicks on the beats routed to a range of targets (`Pulse`; version 3).
     surface : a rig's surface genes: the mapping its skin's harmonics play while its modes
         follow this one (docs/design.md#surface-of-a-rig), or None.
+    basis : the basis of a mesh it was made on (`BasisRecord`: k, construction, samples), or
+        None (a rig's, or a mapping from before the record: the commands take the default k).
 
     Example
     -------
@@ -167,6 +171,7 @@ class Mapping:
     envelope: Envelope = field(default_factory=Envelope)
     pulse: Pulse = field(default_factory=Pulse)
     surface: Mapping | None = None
+    basis: BasisRecord | None = None
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
@@ -175,18 +180,13 @@ class Mapping:
         _check_vector(self.amplification, "amplification", self.name)
         for key, low, high in (("gain", 0.0, 1e6), ("smoothing", 0.0, 60.0),
                                ("offset", -1e6, 1e6), ("deformed_normal_weight", 0.0, 1.0)):
-            value = getattr(self, key)
-            if not (isinstance(value, int | float | np.floating | np.integer)
-                    and np.isfinite(value) and low <= value <= high):
-                raise InputError(f"{self.name}: {key} must be a number in [{low:g}, {high:g}], "
-                                 f"got {value!r}")
-            setattr(self, key, float(value))
+            setattr(self, key, number(getattr(self, key), f"{self.name}: {key}", low, high))
         if self.shading not in SHADINGS:
             raise InputError(f"{self.name}: shading must be one of {', '.join(SHADINGS)}, got "
                              f"{self.shading!r}")
         if not isinstance(self.materials, bool | np.bool_):
             raise InputError(f"{self.name}: look.materials must be true or false, got "
-                             f"{_shown(self.materials)}")
+                             f"{shown(self.materials)}")
         self.materials = bool(self.materials)
         self.envelope = self.envelope.for_bands(self.bands, self.name)
         if self.surface is not None and self.surface.surface is not None:
@@ -372,7 +372,8 @@ class Mapping:
                 "modes": None if self.modes is None else self.modes.to_json(),
                 "look": {"deformed_normal_weight": self.deformed_normal_weight,
                          "shading": self.shading, "materials": self.materials},
-                "envelope": self.envelope.to_json(), "pulse": self.pulse.to_json()}
+                "envelope": self.envelope.to_json(), "pulse": self.pulse.to_json(),
+                "basis": None if self.basis is None else self.basis.to_json()}
         if self.surface is not None:  # only a rig's dance with a rippling skin has it
             document["surface"] = self.surface.to_json()
         return document
@@ -395,14 +396,14 @@ class Mapping:
             raise InputError(f"{name}: a mapping must be a JSON object")
         if data.get("format") != FORMAT:
             raise InputError(f"{name}: format must be \"{FORMAT}\", "
-                             f"got {_shown(data.get('format'))}")
+                             f"got {shown(data.get('format'))}")
         version = data.get("version")
         if version not in READABLE_VERSIONS or isinstance(version, bool):
             raise InputError(f"{name}: version must be one of {READABLE_VERSIONS}, "
-                             f"got {_shown(version)}")
+                             f"got {shown(version)}")
         bands = data.get("bands")
         if not isinstance(bands, int) or isinstance(bands, bool) or not 1 <= bands <= 1 << 16:
-            raise InputError(f"{name}: bands must be a positive integer, got {_shown(bands)}")
+            raise InputError(f"{name}: bands must be a positive integer, got {shown(bands)}")
         transfer = _number_list(data.get("transfer"), "transfer", name)
         if len(transfer) != bands:
             raise InputError(f"{name}: transfer has {len(transfer)} values; bands says {bands}")
@@ -411,7 +412,7 @@ class Mapping:
         if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)
                                  or not 0 <= seed < 1 << 64):
             raise InputError(f"{name}: seed must be an integer or null (0 to 2⁶⁴ − 1), "
-                             f"got {_shown(seed)}")
+                             f"got {shown(seed)}")
         settings = {}
         if version >= 2:
             for key in ("gain", "smoothing", "offset"):
@@ -436,6 +437,8 @@ class Mapping:
                 settings["pulse"] = Pulse.from_json(data["pulse"], name)
             if data.get("surface") is not None:
                 settings["surface"] = Mapping.from_json(data["surface"], f"{name}: surface")
+            if data.get("basis") is not None:
+                settings["basis"] = BasisRecord.from_json(data["basis"], name)
         return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
                    seed, name, **settings)
 
@@ -470,32 +473,14 @@ def _listed(array, kind=float) -> list | None:
     return None if array is None else [kind(x) for x in array]
 
 
-def _shown(value) -> str:
-    """A JSON value in a message: short, whatever it is."""
-    try:
-        text = json.dumps(value)
-    except (TypeError, ValueError, RecursionError):
-        text = type(value).__name__
-    return text if len(text) <= 40 else text[:39] + "…"
-
-
 def _number(value, key: str, name: str, optional: bool = False) -> float | None:
-    if value is None and optional:
-        return None
-    if isinstance(value, bool) or not isinstance(value, int | float) or not finite_number(value):
-        raise InputError(f"{name}: {key} must be a finite number, got {_shown(value)}")
-    return float(value)
+    return None if value is None and optional else number(value, f"{name}: {key}")
 
 
 def _number_list(value, field_name: str, name: str) -> list:
     if not isinstance(value, list) or not value:
         raise InputError(f"{name}: {field_name} must be a non-empty list of numbers")
-    for index, x in enumerate(value):
-        if not isinstance(x, int | float) or isinstance(x, bool):
-            raise InputError(f"{name}: {field_name}[{index}] is not a number ({_shown(x)})")
-        if not finite_number(x):
-            raise InputError(f"{name}: {field_name}[{index}] is not finite ({_shown(x)})")
-    return value
+    return [number(x, f"{name}: {field_name}[{index}]") for index, x in enumerate(value)]
 
 
 def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = False) -> None:

@@ -4,7 +4,7 @@ Every request first passes `server.guard` (Host, origin and content-type checks)
 is a one-line JSON object ``{"error": "…"}``, 4xx for bad input, 500 for a failure of ours.
 Routes:
 
-- ``GET /api/config`` — rules shared with the page (gallery sizes).
+- ``GET /api/config`` — rules shared with the page (gallery sizes, the accepted suffixes).
 - ``GET /api/library`` — meshes (with basis state), songs and mappings.
 - ``GET /api/meshes/{id}/basis.bin`` — the basis as a binary bundle (`binary.basis_bundle`).
 - ``GET /api/songs/{id}/spectrogram.bin``, ``GET /api/songs/{id}/audio``.

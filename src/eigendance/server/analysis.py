@@ -1,9 +1,10 @@
 """The analysis of the library's files, as run in the server's worker processes
 (`server.workers.run`, docs/design.md#server).
 
-Each function takes and returns picklable values only: what a file holds (a cleaned mesh, a
-skeleton) or what the page is sent (a rig's analysis, a basis, with their bundles). Reading a
-mesh or a rig's glTF, a rig's modal analysis, a basis's solve and their bundles are mostly pure
+Each function takes and returns picklable values only: what a file holds, read once by the
+inputs layer (`inputs.model`: a mesh's `HarmonicProblem`, a skeleton), or what the page is sent
+(a rig's analysis, a basis, with their bundles). Reading a mesh or a rig's glTF, a rig's
+modal analysis, a basis's solve and their bundles are mostly pure
 Python or hold the interpreter's lock in C; in a worker process they never make the event loop
 wait. A song is decoded (`read_song`) in a worker process too, after its length is read from
 its header (`song_seconds`, nothing decoded) so that the library charges the spectrogram's
@@ -14,64 +15,54 @@ kernels are compiled once, by the fork server (`music.compiled`), not by every w
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import soundfile
 
-from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.files import read_json, suffix_of
-from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.harmonic.laplacian import laplacian_for
-from eigendance.harmonic.mesh import Mesh, load_mesh
-from eigendance.modal.gltf_skin import has_skin
+from eigendance.errors import InputError
+from eigendance.files import suffix_of
+from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
+from eigendance.inputs.model import GLTF_SUFFIXES, classify, read_model
+from eigendance.inputs.song import read_song as read_audio
 from eigendance.modal.rig import Rig
-from eigendance.modal.sample_rigs import load_rig, sample_rig
+from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton import Skeleton
 from eigendance.music.decode import SOUNDFILE_MAGIC, SOUNDFILE_SUFFIXES
 from eigendance.music.spectrogram import BANDS, RATE, Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 
-def classify(path: str, name: str, kind: str) -> tuple[str, object]:
-    """A file's kind by its content: a skeleton JSON is a rig, any other JSON a mapping (its
-    document returned); a skinned glTF is a rig (its skin the mesh the modes move).
+def read_file(path: str, name: str, construction: str = "auto",
+              as_mesh: bool = False) -> tuple[str, object]:
+    """A library file classified by its content and read once (`inputs.model`): a mapping's
+    document, a rig's skeleton, or a mesh's `HarmonicProblem` (what the solve's worker gets).
+    A glTF whose skin cannot be read is read as a mesh.
 
     Parameters
     ----------
     path : the file.
-    name : its name (its suffix).
-    kind : its kind by suffix (`files.kind_of`).
+    name : how the page calls it (its suffix is the file's).
+    construction : "auto", "exact" or "reduced": the mesh's basis.
+    as_mesh : read a skinned glTF as a mesh (its skin could not be analysed).
 
     Returns
     -------
-    (kind, document): the mapping's parsed JSON, else None.
+    ("mapping", document), ("rig", Skeleton) or ("mesh", HarmonicProblem).
+
+    Raises
+    ------
+    InputError
+        As `inputs.model.classify` and `inputs.model.read_model`.
     """
+    kind, document = ("mesh", None) if as_mesh else classify(path, name)
     if kind == "mapping":
-        document = read_json(path, name)
-        if isinstance(document, dict) and document.get("format") == "eigendance.skeleton":
-            return "rig", None
-        return "mapping", document
-    if kind == "mesh" and suffix_of(name) in (".glb", ".gltf") and has_skin(path):
-        return "rig", None
-    return kind, None
-
-
-def read_mesh(path: str, name: str) -> tuple[Mesh, str]:
-    """A mesh file read and cleaned (`load_mesh`), and the Laplacian its basis takes.
-
-    Parameters
-    ----------
-    path : the mesh file.
-    name : how the page calls it.
-
-    Returns
-    -------
-    (mesh, laplacian): the `Mesh` named `name` and `laplacian.laplacian_for` it.
-    EigendanceError when the file cannot be read.
-    """
-    mesh = dataclasses.replace(load_mesh(path), name=name)
-    return mesh, laplacian_for(mesh)
+        return kind, document
+    if kind == "rig":
+        try:
+            return kind, read_model(path, name, "rig", document).skeleton
+        except InputError:
+            if suffix_of(name) not in GLTF_SUFFIXES:
+                raise
+    return "mesh", read_model(path, name, "mesh", construction=construction).problem
 
 
 def read_rig(source: str, name: str, built_in: bool = False) -> Skeleton:
@@ -85,9 +76,14 @@ def read_rig(source: str, name: str, built_in: bool = False) -> Skeleton:
 
     Returns
     -------
-    Skeleton; InputError when it is not a rig that can be analysed.
+    Skeleton.
+
+    Raises
+    ------
+    InputError
+        When it is not a rig that can be analysed.
     """
-    return sample_rig(source) if built_in else load_rig(source, name)
+    return sample_rig(source) if built_in else read_model(source, name, "rig").skeleton
 
 
 def analyse_rig(skeleton: Skeleton, dtype, name: str, revision: int,
@@ -109,7 +105,8 @@ def analyse_rig(skeleton: Skeleton, dtype, name: str, revision: int,
 
 
 def read_song(path: str, name: str, options: dict) -> tuple[Spectrogram, bytes]:
-    """A song decoded into its spectrogram, and its bundle for the page.
+    """A song decoded into its spectrogram (`inputs.song.read_song`), and its bundle for the
+    page.
 
     Parameters
     ----------
@@ -119,14 +116,14 @@ def read_song(path: str, name: str, options: dict) -> tuple[Spectrogram, bytes]:
 
     Returns
     -------
-    (spectrogram, bundle bytes); InputError when the audio cannot be decoded.
+    (spectrogram, bundle bytes).
+
+    Raises
+    ------
+    InputError
+        When the audio cannot be decoded.
     """
-    try:
-        spectrogram = Spectrogram.from_file(path, **options)
-    except EigendanceError:
-        raise
-    except Exception as error:  # noqa: BLE001 - decoders raise many types
-        raise InputError(f"{name}: cannot decode the audio ({one_line(error)})") from None
+    spectrogram = read_audio(path, name=name, **options)
     return spectrogram, spectrogram_bundle(spectrogram, name)
 
 
@@ -189,22 +186,19 @@ def song_bytes(seconds: float, options: dict) -> int:
     return frames * options.get("bands", BANDS) * 9 + (64 << 10)
 
 
-def solve_basis(mesh: Mesh, k: int, laplacian: str, construction: str,
-                progress=None) -> tuple[HarmonicBasis, bytes]:
-    """A mesh's basis (`HarmonicBasis.from_mesh`, with its disk cache) and its bundle.
+def solve_basis(problem: HarmonicProblem, k: int, progress=None) -> tuple[HarmonicBasis, bytes]:
+    """A mesh's basis (`HarmonicProblem.basis`, with its disk cache) and its bundle.
 
     Parameters
     ----------
-    mesh : the cleaned mesh (its name names the bundle).
+    problem : the mesh's problem (its mesh's name names the bundle; its construction for k is
+        the one the item was planned with).
     k : harmonics.
-    laplacian : "cotan" or "robust".
-    construction : "exact" or "reduced".
     progress : None, or a callable given the harmonics done.
 
     Returns
     -------
     (basis, bundle bytes).
     """
-    basis = HarmonicBasis.from_mesh(mesh, k, laplacian=laplacian, construction=construction,
-                                    progress=progress)
-    return basis, basis_bundle(basis, mesh.name)
+    basis = problem.basis(k, progress)
+    return basis, basis_bundle(basis, problem.mesh.name)

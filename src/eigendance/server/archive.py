@@ -24,15 +24,11 @@ import zipfile
 import zlib
 
 from eigendance.errors import InputError, disk_full
-from eigendance.files import MESH_SUFFIXES, suffix_of
+from eigendance.files import ARCHIVE_SUFFIXES, COMPANION_SUFFIXES, MESH_SUFFIXES, suffix_of
 
-ARCHIVE_SUFFIXES = (".zip",)
 MAX_MEMBERS = 256
 MAX_DIRECTORY = MAX_MEMBERS << 12  # bytes of the central directory: 4 KiB an entry
 MAX_DEPTH, MAX_PATH, NAME_MAX = 32, 1024, 255  # a member's folders, characters, bytes a name
-# Files a model names beside it (glTF buffers and images, an OBJ's MTL and its maps).
-COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg", ".webp", ".ktx2", ".tga",
-                      ".bmp", ".tif", ".tiff")
 # Files an artist's zip carries that are no part of the model: skipped.
 DOCUMENT_SUFFIXES = (".txt", ".md", ".pdf", ".html", ".htm", ".url", ".rtf", ".json")
 SKIPPED_NAMES = (".ds_store", "thumbs.db", "desktop.ini")

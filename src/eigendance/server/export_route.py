@@ -21,16 +21,18 @@ from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import FileResponse, JSONResponse
 
+from eigendance import checks
 from eigendance.errors import EigendanceError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
-from eigendance.export.video import check_size, render_video
-from eigendance.music.mapping import Mapping
+from eigendance.export.video import parse_size, render_video
+from eigendance.inputs.defaults import DEFAULT_FPS
+from eigendance.inputs.mapping import check_mapping_size, mapping_from
 from eigendance.server.items import Job, new_id
 from eigendance.server.library import Library
 from eigendance.server.lookup import item_of, library_of, ready_basis, song_of
-from eigendance.server.requests import check_mapping_size, json_body
+from eigendance.server.requests import json_body
 from eigendance.server.solver import Stopped
 from eigendance.server.workers import in_worker
 from eigendance.window import Window
@@ -38,7 +40,7 @@ from eigendance.window import Window
 FORMATS = {"mp4": "video/mp4", "glb": "model/gltf-binary"}
 MAX_SECONDS = 300.0  # the longest part of a song the page exports (s): a few minutes of CPU
 MAX_PIXELS = 1920 * 1080  # the largest video frame
-DEFAULT_SIZE, DEFAULT_FPS, MAX_FPS = "1280x720", 30.0, 60.0
+DEFAULT_SIZE, MAX_FPS = "1280x720", 60.0
 
 
 class Exports:
@@ -135,22 +137,12 @@ def exports_of(request: Request) -> Exports:
     return state.exports
 
 
-def _number(body: dict, key: str, default: float | None, low: float, high: float) -> float:
-    value = body.get(key, default)
-    if value is None or isinstance(value, bool) or not isinstance(value, int | float) or \
-            not math.isfinite(value) or not low <= value <= high:
-        raise HTTPException(400, f"{key} must be a number from {low:g} to {high:g}")
-    return float(value)
+def _number(body: dict, key: str, default: float, low: float, high: float) -> float:
+    return checks.number(body.get(key, default), key, low, high)  # 400 naming the field
 
 
 def _size(body: dict) -> tuple[int, int]:
-    text = body.get("size", DEFAULT_SIZE)
-    parts = text.lower().split("x") if isinstance(text, str) else []
-    # ASCII digits only: str.isdigit() also takes '²' (which int() refuses) and full-width ones.
-    if len(parts) != 2 or not all(part.isascii() and part.isdigit() for part in parts):
-        raise HTTPException(400, "size must be WIDTHxHEIGHT in pixels, e.g. 1280x720")
-    width, height = int(parts[0]), int(parts[1])
-    check_size(width, height)
+    width, height = parse_size(body.get("size", DEFAULT_SIZE))  # the command line's grammar
     if width * height > MAX_PIXELS:
         raise HTTPException(400, f"size {width}x{height}: at most {MAX_PIXELS} pixels "
                                  "(1920x1080)")
@@ -193,7 +185,7 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
     stem = os.path.splitext(item.name)[0] or "dance"
 
     def clip():
-        mapping = Mapping.from_json(body["mapping"], "mapping")
+        mapping = mapping_from(body["mapping"], "mapping")
         if "rig" in body:
             rig = item.rig
             whole = rig_dance(rig, song.spectrogram, rig.mapping(song.spectrogram, mapping),

@@ -9,9 +9,11 @@ memory): then the same bytes make a new item, whose solve starts again, and the 
 removed. Uploads are stored inside the library folder as ``upload-<content digest><suffix>``, so
 names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
-Files are read and analysed through `run` (`server.analysis` in the server's worker processes,
-songs included), each within a deadline proportional to its size (`analysed`); a song's
-spectrogram is charged to the memory budget from its length before it is decoded.
+Each file is classified by its content and read once through the inputs layer
+(`server.analysis.read_file` in one of the server's worker processes: `run`, songs included),
+each within a deadline proportional to its size (`analysed`); a mesh comes back as its
+`HarmonicProblem`, the one object its solve's worker gets, and a song's spectrogram is charged
+to the memory budget from its length before it is decoded.
 """
 
 from __future__ import annotations
@@ -23,11 +25,13 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError
 from eigendance.files import check_readable, file_digest, kind_of, suffix_of
-from eigendance.harmonic.construction import choose_construction
+from eigendance.harmonic.basis import HarmonicProblem
+from eigendance.inputs.mapping import mapping_from
+from eigendance.inputs.model import GLTF_SUFFIXES
+from eigendance.modal.skeleton import Skeleton
 from eigendance.server import analysis, rigs
 from eigendance.server.archive import is_archive, unpack
 from eigendance.server.items import Job, MappingItem, MeshItem, RigItem, SongItem, new_id
-from eigendance.server.requests import mapping_from
 from eigendance.server.shelf import Shelf
 from eigendance.server.solver import BasisSolver
 
@@ -153,14 +157,11 @@ class Intake:
 
     def _add_file(self, path: str, name: str, kind: str, digest: str, origin: str,
                   k: int | None = None):
-        """The item of a file (new, or the one with the same content) and whether it is new."""
+        """The item of a file (new, or the one with the same content) and whether it is new:
+        classified and read once in a worker process (`analysis.read_file`), a song decoded
+        here."""
         suffix = suffix_of(name)
-        document = None
-        if kind == "mapping" or suffix in (".glb", ".gltf"):
-            kind, document = self.analysed(analysis.classify, path, name, kind)
         key = (kind, suffix, digest, k or self.k) if kind == "mesh" else (kind, suffix, digest)
-        if kind == "mapping":
-            return self.add_mapping(document, name, origin)
         failed: list[MeshItem] = []  # the same content's mesh whose solve failed: retried
 
         def usable(item_id):
@@ -175,17 +176,7 @@ class Intake:
         if existing is not None:
             return existing, False
         try:
-            if kind == "mesh":
-                item = self.add_mesh(path, name, k, key)
-            elif kind == "audio":
-                item = self.add_song(path, name, key)
-            elif suffix in (".glb", ".gltf"):  # a skin that cannot be analysed: a mesh
-                try:
-                    item = self.add_rig(path, name, origin, key)
-                except InputError:
-                    item = self.add_mesh(path, name, k, key)
-            else:
-                item = self.add_rig(path, name, origin, key)
+            made = self._read_new(path, name, kind, origin, k, key)
         finally:
             self.shelf.contents.release(key)
         for old in failed:  # replaced by the new item (which keeps the stored file)
@@ -193,33 +184,56 @@ class Intake:
                 self.shelf.remove("mesh", old.id)
             except InputError:  # removed meanwhile
                 pass
-        return item, True
+        return made
 
-    def add_mesh(self, path: str, name: str, k: int | None = None,
+    def _read_new(self, path: str, name: str, kind: str, origin: str, k: int | None,
+                  key: tuple):
+        """The new item of a file and True (a mapping: the item with its content and whether
+        it is new): read once in a worker process within the file's deadline (`analysed`)."""
+        if kind == "audio":
+            return self.add_song(path, name, key), True
+        kind, value = self.analysed(analysis.read_file, path, name, self.construction)
+        if kind == "mapping":
+            return self.add_mapping(value, name, origin)
+        if kind == "mesh":
+            return self.add_mesh(value, path, k, key), True
+        try:
+            return self.add_rig(value, path, origin, key), True
+        except InputError:
+            if suffix_of(name) not in GLTF_SUFFIXES:
+                raise
+        # a skin that cannot be analysed: the glTF dances as a mesh
+        _, problem = self.analysed(analysis.read_file, path, name, self.construction, True)
+        return self.add_mesh(problem, path, k, key), True
+    def add_mesh(self, problem: HarmonicProblem, path: str, k: int | None = None,
                  content: tuple | None = None) -> MeshItem:
         """A mesh item, charged its planned basis, and its basis job queued.
 
         Parameters
         ----------
+        problem : the mesh's `HarmonicProblem` (`analysis.read_file`); its mesh's name is the
+            item's.
         path : the mesh file.
-        name : its name.
         k : harmonics (default the library's; at most the vertex count − 2).
         content : its content key.
 
         Returns
         -------
-        MeshItem; EigendanceError when the mesh cannot be read, InputError when it cannot fit.
+        MeshItem.
+
+        Raises
+        ------
+        InputError
+            When its basis cannot fit the library's memory.
         """
-        mesh, laplacian = self.analysed(analysis.read_mesh, path, name)
-        k = max(2, min(k or self.k, len(mesh.vertices) - 2))
-        construction = choose_construction(mesh.n, k) if self.construction == "auto" \
-            else self.construction
-        item = MeshItem(new_id(), name, path, k, len(mesh.vertices), content=content,
-                        construction=construction, appearance=mesh.appearance)
-        item.job = Job(new_id(), "basis", k, name)
-        self.shelf.admit(item, self.shelf.meshes, f"{name}: a basis of {k} harmonics of "
-                                      f"{len(mesh.vertices)} vertices")
-        self.solver.put(item, mesh, laplacian)
+        mesh = problem.mesh
+        k = max(2, min(k or self.k, mesh.n - 2))
+        item = MeshItem(new_id(), mesh.name, path, k, mesh.n, content=content,
+                        construction=problem.construction_for(k), appearance=mesh.appearance)
+        item.job = Job(new_id(), "basis", k, mesh.name)
+        self.shelf.admit(item, self.shelf.meshes, f"{mesh.name}: a basis of {k} harmonics of "
+                                      f"{mesh.n} vertices")
+        self.solver.put(item, problem)
         return item
 
     def add_song(self, path: str, name: str, content: tuple | None = None) -> SongItem:
@@ -272,7 +286,7 @@ class Intake:
 
         Parameters
         ----------
-        data : the document (checked by `requests.mapping_from`).
+        data : the document (checked by `inputs.mapping.mapping_from`).
         name : its name.
         origin : "file" (given to `serve`: the page opens it at start) or "upload".
 
@@ -291,22 +305,28 @@ class Intake:
             self.shelf.admit(item, self.shelf.mappings, f"{name}: the mapping")
             return item, True
 
-    def add_rig(self, path: str, name: str, origin: str, content: tuple | None = None) -> RigItem:
-        """A rig file (skeleton JSON or glTF skin), analysed now.
+    def add_rig(self, skeleton: Skeleton, path: str, origin: str,
+                content: tuple | None = None) -> RigItem:
+        """A rig item (skeleton JSON or glTF skin), analysed now.
 
         Parameters
         ----------
+        skeleton : its skeleton with its skin (`analysis.read_file`); its name is the item's.
         path : the file.
-        name : its name.
         origin : "file" or "upload".
         content : its content key.
 
         Returns
         -------
-        RigItem; InputError when it is not a rig that can be analysed, or cannot fit (its
-        planned memory is charged before the analysis: `rigs.planned_bytes`).
+        RigItem.
+
+        Raises
+        ------
+        InputError
+            When it is not a rig that can be analysed, or cannot fit (its planned memory is
+            charged before the analysis: `rigs.planned_bytes`).
         """
-        skeleton = self.analysed(analysis.read_rig, path, name)
+        name = skeleton.name
         item = RigItem(new_id(), name, origin, path, content=content)
         with self.shelf.reserving(item.id, rigs.planned_bytes(skeleton),
                                   f"{name}: the analysis of {skeleton.n_bodies} bodies"):

@@ -22,6 +22,7 @@ import os
 import threading
 
 from eigendance.errors import InputError, InternalError
+from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs, workers
 from eigendance.server.binary import appearance_bundle, basis_bundle
@@ -49,7 +50,7 @@ class Library:
     meshes, songs, mappings, rigs ({id: item}) and budget, as the shelf holds them.
     """
 
-    def __init__(self, folder: str, k: int = 150, max_upload_bytes: int = 64 << 20,
+    def __init__(self, folder: str, k: int = DEFAULT_K, max_upload_bytes: int = 64 << 20,
                  memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None,
                  construction: str = "auto"):
         os.makedirs(folder, exist_ok=True)

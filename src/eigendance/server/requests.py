@@ -3,8 +3,9 @@
 JSON bodies are at most JSON_LIMIT bytes, refused from their Content-Length before they are read,
 and parsed with `files.read_json`'s rules (nesting within the recursion limit, integers of at
 most 40 digits) and without NaN or Infinity. A mapping sent to be bred or saved holds at most
-MAX_BANDS transfer values and MAX_HARMONICS amplification and palette values, so that an answer
-is at most a few MB. Parsing and answers of many numbers run in a worker thread.
+MAX_BANDS transfer values and MAX_HARMONICS amplification and palette values
+(`inputs.mapping.check_mapping_size`), so that an answer is at most a few MB. Parsing and
+answers of many numbers run in a worker thread.
 """
 
 from __future__ import annotations
@@ -18,13 +19,9 @@ from starlette.responses import Response
 from eigendance.errors import InputError
 from eigendance.files import JSON_INTEGER_DIGITS
 from eigendance.music.gallery import check_gallery_size
-from eigendance.music.mapping import Mapping
 from eigendance.server.workers import in_worker
 
 JSON_LIMIT = 8 << 20  # bytes of a JSON request body
-# What a mapping sent to the server may hold: the bands of a spectrogram (`eigendance spectrum
-# --bands`) and the harmonics of a basis (-k) at most, so that breeding answers a bounded size.
-MAX_BANDS, MAX_HARMONICS = 1024, 20000
 
 
 async def json_body(request: Request):
@@ -136,46 +133,3 @@ def gallery_size(value) -> int:
         return check_gallery_size(value)
     except InputError as problem:
         raise HTTPException(400, str(problem)) from None
-
-
-def check_mapping_size(data, name: str) -> None:
-    """InputError unless a mapping document's lists (transfer, amplification, the palette's,
-    the envelope's) fit MAX_BANDS and MAX_HARMONICS (checked before `Mapping.from_json` looks at
-    every value).
-
-    Parameters
-    ----------
-    data : the document as sent (anything: `Mapping.from_json` says what else is wrong).
-    name : how the message calls it.
-    """
-    if not isinstance(data, dict):
-        return  # Mapping.from_json says what is wrong
-    modes = data.get("modes") if isinstance(data.get("modes"), dict) else {}
-    envelope = data.get("envelope") if isinstance(data.get("envelope"), dict) else {}
-    for field_name, values, most in (
-            ("transfer", data.get("transfer"), MAX_BANDS),
-            ("amplification", data.get("amplification"), MAX_HARMONICS),
-            *((f"modes.{key}", modes.get(key), MAX_HARMONICS)
-              for key in ("selected", "amplitudes", "phases")),
-            *((f"envelope.{key}", envelope.get(key), MAX_BANDS)
-              for key in ("attack", "release", "threshold"))):
-        if isinstance(values, list) and len(values) > most:
-            raise InputError(f"{name}: {field_name} has {len(values)} values; at most "
-                             f"{most}")
-
-
-def mapping_from(data, name: str) -> Mapping:
-    """A mapping sent to the server: its size (`check_mapping_size`), then every field
-    (`Mapping.from_json`).
-
-    Parameters
-    ----------
-    data : the parsed document.
-    name : how messages call it.
-
-    Returns
-    -------
-    Mapping; InputError naming the field at fault.
-    """
-    check_mapping_size(data, name)
-    return Mapping.from_json(data, name)

@@ -22,9 +22,10 @@ from starlette.responses import (
 
 from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
+from eigendance.inputs.mapping import check_mapping_size, mapping_from
+from eigendance.inputs.model import published_suffixes
 from eigendance.music.breeding import breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
-from eigendance.music.mapping import Mapping
 from eigendance.server.archive import is_archive
 from eigendance.server.items import RigItem
 from eigendance.server.library import Library
@@ -37,12 +38,7 @@ from eigendance.server.lookup import (
     ready_basis,
     song_of,
 )
-from eigendance.server.requests import (
-    answer,
-    check_mapping_size,
-    gallery_size,
-    json_body,
-)
+from eigendance.server.requests import answer, gallery_size, json_body
 from eigendance.server.workers import in_worker
 
 AUDIO_TYPES = {".wav": "audio/wav", ".mp3": "audio/mpeg", ".ogg": "audio/ogg",
@@ -98,10 +94,13 @@ async def get_config(request: Request):
 
     Returns
     -------
-    JSONResponse {"gallery": {"min", "max", "default"}}: gallery sizes.
+    JSONResponse {"gallery": {"min", "max", "default"}: gallery sizes, "suffixes": the
+    suffixes of each input kind (`inputs.model.published_suffixes`: what the page uploads, and
+    which files of a model it zips together)}.
     """
     return JSONResponse({"gallery": {"min": MIN_GALLERY, "max": MAX_GALLERY,
-                                     "default": DEFAULT_GALLERY}})
+                                     "default": DEFAULT_GALLERY},
+                         "suffixes": published_suffixes()})
 
 
 async def get_library(request: Request):
@@ -387,7 +386,7 @@ async def breed_route(request: Request):
         check_mapping_size(data, f"parent {index + 1}")
 
     def make():
-        parents = [Mapping.from_json(data, f"parent {index + 1}")
+        parents = [mapping_from(data, f"parent {index + 1}")
                    for index, data in enumerate(body["parents"])]
         return {"mappings": [m.to_json() for m in breed(parents, size, seed)]}
 

@@ -40,7 +40,6 @@ from eigendance.server.workers import warm
 from eigendance.writes import LOCK_NAME, locked_folder, sweep_locked_folders
 
 DEFAULT_PORT = 8765
-DEMO_K = 150
 FOLDER_PREFIX = "eigendance-library-"
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
 # glibc's mallopt parameters (malloc.h) and our values (`return_freed_memory`).
@@ -54,8 +53,8 @@ OPEN_FILES = 4 * MAX_CONNECTIONS + 1024
 # before `Connection` sees them: 2 × MAX_CONNECTIONS descriptors at most, under Linux's
 # customary 1024.)
 
-__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "DEMO_K", "LOCK_NAME", "demo_paths",
-           "library_session", "listen", "run", "terminal_progress"]
+__all__ = ["DEFAULT_HOST", "DEFAULT_PORT", "LOCK_NAME", "demo_paths", "library_session",
+           "listen", "run", "terminal_progress"]
 
 
 class _Server(uvicorn.Server):

@@ -1,25 +1,23 @@
 """The library's solve queue: mesh bases computed one at a time, each in a process of its own,
 by one daemon thread (docs/design.md#server).
 
-Each mesh item's basis is computed through `HarmonicBasis.from_mesh` (and its disk cache) with
-its bundle, in a worker process (`analysis.solve_basis`: the Laplacian's assembly and the
-eigen-solver hold the interpreter's lock for seconds); the thread relays its progress to the
-item's `Job`, for the page (server-sent events) and for `progress_listeners` (the terminal).
-`stop` ends the solve in progress at once (its process is killed, and its band workers with it)
-and drops the queued ones; `close` also ends the thread.
+Each mesh item's basis is computed by its mesh's `HarmonicProblem` (and its disk cache) with its
+bundle, in a worker process that gets that one object (`analysis.solve_basis`: the Laplacian's
+assembly and the eigen-solver hold the interpreter's lock for seconds); the thread relays its
+progress to the item's `Job`, for the page (server-sent events) and for `progress_listeners`
+(the terminal). `stop` ends the solve in progress at once (its process is killed, and its band
+workers with it) and drops the queued ones; `close` also ends the thread.
 """
 
 from __future__ import annotations
 
-import os
 import queue
 import threading
 import time
 from collections.abc import Callable
 
 from eigendance.errors import EigendanceError, InternalError, one_line
-from eigendance.harmonic.construction import basis_cache, basis_key
-from eigendance.harmonic.reduced import reduced_key, sample_count
+from eigendance.harmonic.basis import HarmonicProblem
 from eigendance.server import analysis, workers
 from eigendance.server.items import Job, MeshItem
 
@@ -49,17 +47,16 @@ class BasisSolver:
         self.worker = threading.Thread(target=self._run, name="basis", daemon=True)
         self.worker.start()
 
-    def put(self, item: MeshItem, mesh, laplacian: str) -> None:
+    def put(self, item: MeshItem, problem: HarmonicProblem) -> None:
         """Queue the basis of a mesh item.
 
         Parameters
         ----------
         item : the mesh item (its job and k).
-        mesh : its cleaned `Mesh`.
-        laplacian : "cotan" or "robust".
+        problem : its mesh's `HarmonicProblem` (its construction for the item's k decided).
         """
         self.jobs[item.job.id] = item.job
-        self.queue.put((item, mesh, laplacian))
+        self.queue.put((item, problem))
 
     def forget(self, item: MeshItem) -> None:
         """A mesh item is removed: stop its solve, fail its queued job, forget the job.
@@ -76,20 +73,17 @@ class BasisSolver:
 
     def _run(self) -> None:
         while True:
-            item, mesh, laplacian = self.queue.get()
+            item, problem = self.queue.get()
             if item is None:
                 return
-            self._solve(item, mesh, laplacian)
+            self._solve(item, problem)
 
-    def _solve(self, item: MeshItem, mesh, laplacian: str) -> None:
+    def _solve(self, item: MeshItem, problem: HarmonicProblem) -> None:
         job = item.job
         if item.removed or self.stopping.is_set():
             job.update(state="error", message=f"{item.name}: removed from the library")
             return
-        key = basis_key(mesh, item.k, laplacian)
-        if item.construction == "reduced":
-            key = reduced_key(key, sample_count(mesh.n, item.k))
-        job.cached = os.path.isfile(basis_cache().path(key))
+        job.cached = problem.cached(item.k)
         self.solving = item
         job.update(state="running")
         self.tell(job)
@@ -102,7 +96,7 @@ class BasisSolver:
 
         try:
             try:
-                basis, bundle = self._compute(item, mesh, laplacian, progress)
+                basis, bundle = self._compute(item, problem, progress)
             finally:
                 self.solving = None  # before the job ends: whoever waits for it sees no solve
             if item.removed or self.stopping.is_set():
@@ -114,15 +108,14 @@ class BasisSolver:
             job.update(state="error", message=self._failure(item, error))
         self.tell(job)
 
-    def _compute(self, item: MeshItem, mesh, laplacian: str, progress):
+    def _compute(self, item: MeshItem, problem: HarmonicProblem, progress):
         """(basis, bundle) of a mesh item, computed in a worker process (`analysis.solve_basis`)
         while this thread relays its progress; the process is killed when `progress` raises
         (`Stopped`) or the solve is stopped (`stop_solve`)."""
         if self.stopping.is_set() or item.removed:
             raise Stopped
         try:
-            return workers.run(analysis.solve_basis, mesh, item.k, laplacian,
-                               item.construction, progress=progress,
+            return workers.run(analysis.solve_basis, problem, item.k, progress=progress,
                                started=lambda process: setattr(self, "process", process))
         except InternalError:
             if item.removed or self.stopping.is_set():
@@ -193,5 +186,5 @@ class BasisSolver:
         timeout : seconds.
         """
         self.stop()
-        self.queue.put((None, None, None))
+        self.queue.put((None, None))
         self.worker.join(timeout)

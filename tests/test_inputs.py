@@ -1,0 +1,162 @@
+"""The inputs layer (docs/design.md#inputs): one rule by content for what a file is, one reading
+of each, the basis a mapping records and the one the commands then solve, the harmonic problem
+built once."""
+
+from __future__ import annotations
+
+import json
+import pickle
+import shutil
+
+import numpy as np
+import pytest
+import trimesh
+
+from eigendance.errors import InputError
+from eigendance.export.video import parse_size
+from eigendance.files import AUDIO_SUFFIXES, COMPANION_SUFFIXES, MESH_SUFFIXES
+from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
+from eigendance.harmonic.construction import BasisRecord, basis_key
+from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.inputs.mapping import basis_choice, read_mapping, shared_k
+from eigendance.inputs.model import classify, model_kind, published_suffixes, read_model
+from eigendance.modal.sample_rigs import sample_rig
+from eigendance.modal.skeleton_file import skeleton_document
+from eigendance.music.mapping import Mapping
+from helpers import fixture_path
+
+
+def test_one_rule_says_what_a_file_is_by_its_content(tmp_path):
+    skeleton = tmp_path / "arm.json"
+    chain = sample_rig("chain")
+    skeleton.write_text(json.dumps(skeleton_document(chain.bodies, chain.joints)))
+    mapping = tmp_path / "calm.json"
+    Mapping([0.5], [1.0]).save(mapping)
+    assert classify(skeleton)[0] == "rig"
+    assert classify(mapping) == ("mapping", json.loads(mapping.read_text()))
+    assert classify(fixture_path("rigged", "Fox.glb")) == ("rig", None)  # a skin
+    assert classify(fixture_path("rigged", "SimpleSkin.gltf"))[0] == "rig"
+    assert classify(fixture_path("textured", "kenney_cakeBirthday.glb"))[0] == "mesh"
+    assert classify(fixture_path("meshes", "teapot.obj"))[0] == "mesh"
+    assert classify(fixture_path("audio", "beatnet_808kick120bpm.mp3"))[0] == "audio"
+    assert classify("loop4") == ("rig", None)  # a built-in rig
+    # the commands that take a model: --mesh asks for a skin's harmonics
+    assert model_kind(fixture_path("rigged", "Fox.glb")) == "rig"
+    assert model_kind(fixture_path("rigged", "Fox.glb"), as_mesh=True) == "mesh"
+    with pytest.raises(InputError, match="calm.json: a mapping, not a model"):
+        model_kind(mapping)
+    with pytest.raises(InputError, match="a skeleton has no mesh"):
+        model_kind(skeleton, as_mesh=True)
+    with pytest.raises(InputError, match="unknown file type '.xyz'"):
+        classify(tmp_path.joinpath("a.xyz").write_text("x") and tmp_path / "a.xyz")
+
+
+def test_a_model_is_read_once_into_the_value_the_work_takes(tmp_path):
+    fox = read_model(fixture_path("rigged", "Fox.glb"))
+    assert fox.kind == "rig" and fox.skeleton.n_bodies > 1 and fox.problem is None
+    teapot = read_model(fixture_path("meshes", "teapot.obj"), name="pot.obj")
+    assert teapot.kind == "mesh" and teapot.problem.mesh.name == "pot.obj"
+    assert teapot.problem.laplacian == "cotan"
+    beetle = read_model(fixture_path("meshes", "beetle.obj"))  # non-manifold edges
+    assert beetle.problem.laplacian == "robust"
+
+
+def test_the_suffixes_the_page_is_told_are_the_servers():
+    suffixes = published_suffixes()
+    assert suffixes["mesh"] == list(MESH_SUFFIXES) and suffixes["audio"] == list(AUDIO_SUFFIXES)
+    assert suffixes["companion"] == list(COMPANION_SUFFIXES) and suffixes["archive"] == [".zip"]
+    assert ".glb" in suffixes["rig"] and suffixes["mapping"] == [".json"]
+
+
+def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
+    path = tmp_path / "made.json"
+    Mapping([0.2, 0.8], [1.0, 2.0], basis=BasisRecord(24, "reduced", 3000)).save(path)
+    mapping = read_mapping(path)
+    assert mapping.basis == BasisRecord(24, "reduced", 3000)
+    assert json.loads(path.read_text())["basis"] == {"k": 24, "construction": "reduced",
+                                                    "samples": 3000}
+    assert basis_choice(mapping) == basis_choice(mapping, 24, "reduced")
+    assert (basis_choice(mapping).k, basis_choice(mapping).samples) == (24, 3000)
+    other = basis_choice(mapping, construction="exact")
+    assert (other.k, other.construction, other.samples) == (24, "exact", None)
+    assert other.note.startswith("made.json was made on k = 24 harmonics (reduced, 3000 "
+                                 "samples); on k = 24 harmonics (exact)")
+    # a mapping from before the record: the default k, the construction rule, nothing to say
+    old = {key: value for key, value in mapping.to_json().items() if key != "basis"}
+    path.write_text(json.dumps(old))
+    assert basis_choice(read_mapping(path)) == basis_choice(None)
+    assert (basis_choice(None).k, basis_choice(None).construction) == (DEFAULT_K, "auto")
+    for bad, message in (({"k": 0}, "basis.k must be from 1"),
+                         ({"k": 24, "construction": "fast"}, "basis.construction must be"),
+                         ({"k": 24, "samples": 10}, "basis.samples must be greater than 24"),
+                         ([24], "basis must be an object")):
+        path.write_text(json.dumps({**old, "basis": bad}))
+        with pytest.raises(InputError, match=message):
+            read_mapping(path)
+
+
+def test_one_basis_for_several_mappings_is_the_k_they_record():
+    made = [Mapping([0.5], [1.0], name=f"{k}.json", basis=BasisRecord(k)) for k in (24, 24)]
+    old = Mapping([0.5], [1.0], name="old.json")
+    assert shared_k([*made, old]) == (24, None)
+    assert shared_k([old]) == (DEFAULT_K, None)
+    assert shared_k(made, 24) == (24, None)
+    k, note = shared_k(made, 60)
+    assert k == 60 and note.startswith("24.json was made on k = 24 harmonics; on k = 60")
+    with pytest.raises(InputError, match=r"different k \(24, 40\); set k"):
+        shared_k([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
+
+
+def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):
+    sphere = trimesh.creation.icosphere(2)
+    mesh = Mesh.from_arrays(sphere.vertices, sphere.faces)
+    problem = HarmonicProblem(mesh, cache=False)
+    assert problem.key(9) == basis_key(mesh, 9, "cotan")
+    first = problem.basis(9)
+    operators = problem.operators()
+    assert problem.operators() is operators  # L and M assembled once
+    assert len(problem.contacts) == 0  # one piece: no contact
+    again = pickle.loads(pickle.dumps(problem)).basis(9)  # as the server's worker gets it
+    np.testing.assert_allclose(np.abs(again.eigenvectors), np.abs(first.eigenvectors),
+                               atol=1e-8)
+    # the construction "auto" chooses is decided once per k (the server plans with it)
+    calls = []
+    monkeypatch.setattr("eigendance.harmonic.basis.choose_construction",
+                        lambda *args: calls.append(args) or "exact")
+    fresh = HarmonicProblem(mesh, cache=False)
+    assert fresh.construction_for(9) == fresh.construction_for(9) == "exact"
+    assert len(calls) == 1
+    assert HarmonicBasis.from_mesh(mesh, 9, cache=False).record == BasisRecord(9)
+    with pytest.raises(InputError, match="unknown construction 'fast'"):
+        HarmonicProblem(mesh, construction="fast")
+
+
+def test_a_materials_number_that_is_not_one_is_an_error_naming_it(tmp_path):
+    for name in ("craft_speederD.gltf", "craft_speederD_data.bin"):
+        shutil.copy(fixture_path("textured", name), tmp_path / name)
+    path = tmp_path / "craft_speederD.gltf"
+    document = json.loads(path.read_text())
+    assert load_mesh(path).appearance is not None  # as it is, it reads
+    material = document["materials"][0]
+    material["pbrMetallicRoughness"]["metallicFactor"] = float("nan")  # was read as 1
+    path.write_text(json.dumps(document))
+    with pytest.raises(InputError, match="material 0 metallicFactor is not finite"):
+        load_mesh(path)
+    material["pbrMetallicRoughness"]["metallicFactor"] = 1
+    material["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": "x"}}
+    path.write_text(json.dumps(document))
+    with pytest.raises(InputError, match="emissiveStrength must be a number, not 'x'"):
+        load_mesh(path)
+    del material["extensions"]
+    del document["materials"][0]["pbrMetallicRoughness"]["metallicFactor"]  # absent: default
+    path.write_text(json.dumps(document))
+    assert load_mesh(path).appearance.materials[0].metallic == 1.0
+
+
+def test_one_grammar_of_a_video_size():
+    assert parse_size("1280x720") == parse_size("1280×720") == parse_size(" 1280 X 720 ") \
+        == (1280, 720)
+    for bad in ("1280x", "+1280x720", "1280x720x2", "big", 1280, "1281x720"):
+        with pytest.raises(InputError):
+            parse_size(bad)
