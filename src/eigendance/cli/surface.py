@@ -5,8 +5,9 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from eigendance.cli.options import number, spectrogram_from
+from eigendance.cli.options import number
 from eigendance.errors import InputError
+from eigendance.inputs.song import read_song
 from eigendance.modal.rig import Rig
 from eigendance.modal.surface import SURFACE_K, SurfaceDance
 from eigendance.music.gallery import strongest_item
@@ -63,6 +64,6 @@ def surface_of(args, rig: Rig, spectrogram: Spectrogram | None,
     else:
         mapping = Mapping.load(args.surface)
     if mapping.bands != spectrogram.bands:
-        spectrogram = spectrogram_from(args.audio, mapping.bands)
+        spectrogram = read_song(args.audio, mapping.bands)
     mapping.gain *= args.surface_gain
     return SurfaceDance(harmonics, spectrogram, mapping)

@@ -26,8 +26,9 @@ from eigendance.inputs.song import read_song as read_audio
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton import Skeleton
+from eigendance.music.analyser import BANDS, RATE
 from eigendance.music.decode import SOUNDFILE_MAGIC, SOUNDFILE_SUFFIXES
-from eigendance.music.spectrogram import BANDS, RATE, Spectrogram
+from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 
