@@ -1,0 +1,116 @@
+"""The add-on's preferences (the command), the scene's dance settings and the sidebar panel
+(View3D > Sidebar > eigendance)."""
+
+import bpy
+from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
+
+from . import meshes, runner
+
+
+class EigendancePreferences(bpy.types.AddonPreferences):
+    """Where the eigendance command is."""
+
+    bl_idname = __package__
+
+    command: StringProperty(
+        name="eigendance command", default="eigendance",
+        description="The eigendance command: its name on PATH, its path, or a command line "
+                    "such as '/path/to/python -m eigendance' (install it with "
+                    "`pip install eigendance`)")
+
+    def draw(self, context):
+        self.layout.prop(self, "command")
+        try:
+            words = runner.command_words(self.command)
+            self.layout.label(text=f"Found: {words[0]}", icon="CHECKMARK")
+        except runner.CommandMissing as error:
+            self.layout.label(text=str(error), icon="ERROR")
+
+
+class EigendanceSettings(bpy.types.PropertyGroup):
+    """The panel's settings, kept with the scene (the operators take them as parameters)."""
+
+    song: StringProperty(name="Song", subtype="FILE_PATH",
+                         description="The song (WAV, MP3, Ogg, FLAC)")
+    mapping: StringProperty(name="Mapping", subtype="FILE_PATH",
+                            description="A mapping file (JSON), e.g. saved from the gallery; "
+                                        "empty: the gallery item")
+    item: IntProperty(name="Gallery item", default=0, min=0, max=8,
+                      description="Initial-gallery item 1–8 (0: the one that moves the mesh "
+                                  "most on the song)")
+    k: IntProperty(name="Harmonics (k)", default=100, min=4, max=2000,
+                   description="Harmonics solved: more allow finer motion and take longer")
+    fps: IntProperty(name="FPS", default=30, min=1, max=240,
+                     description="Frames per second (the scene's frame rate is set to it)")
+    start: FloatProperty(name="Start", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
+                         description="Where the dance starts in the song, seconds")
+    duration: FloatProperty(name="Duration", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
+                            description="Seconds of song to dance (0: to its end)")
+    rig_file: StringProperty(name="Rig file", subtype="FILE_PATH",
+                             description="The glTF (.glb) the armature was imported from")
+    modes: StringProperty(name="Modes", description="Modes that move, e.g. 0,2,5-8 (empty: "
+                                                    "the default palette)")
+    amplitude: FloatProperty(name="Amplitude", default=0.0, min=0.0, max=3.14159,
+                             description="Largest body rotation per mode, radians (0: default)")
+    time_scale: FloatProperty(name="Time scale", default=0.0, min=0.0, max=1000.0,
+                              description="Multiply the natural frequencies (0: default)")
+    options: StringProperty(name="More options",
+                            description="More animate-rig options, as on its command line")
+
+
+SHARED = ("song", "fps", "start", "duration")
+
+
+class EIGENDANCE_PT_panel(bpy.types.Panel):
+    """The sidebar panel: song, settings, bake, gallery."""
+
+    bl_label = "eigendance"
+    bl_idname = "EIGENDANCE_PT_panel"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "eigendance"
+
+    def draw(self, context):
+        layout, settings = self.layout, context.scene.eigendance
+        obj = context.active_object
+        for name in SHARED:
+            layout.prop(settings, name)
+        if runner.RUNNING:
+            layout.operator("eigendance.cancel", icon="CANCEL")
+        if obj is not None and obj.type == "MESH" and obj.find_armature() is None:
+            self.draw_mesh(layout, settings, obj)
+        elif obj is not None and obj.type in ("ARMATURE", "MESH"):
+            self.draw_rig(layout, settings)
+        else:
+            layout.label(text="Select a mesh or an armature", icon="INFO")
+
+    def draw_mesh(self, layout, settings, obj):
+        for name in ("mapping", "item", "k"):
+            layout.prop(settings, name)
+        if len(obj.data.vertices) > meshes.SHAPE_KEY_VERTICES:
+            layout.label(text="A large mesh: bakes to a Mesh Cache beside the .blend")
+        op = layout.operator("eigendance.dance_mesh", icon="PLAY_SOUND")
+        for name in (*SHARED, "mapping", "item", "k"):
+            setattr(op, name, getattr(settings, name))
+        gallery = layout.operator("eigendance.gallery", icon="WORLD")
+        gallery.song, gallery.k = settings.song, settings.k
+
+    def draw_rig(self, layout, settings):
+        for name in ("rig_file", "modes", "amplitude", "time_scale", "options"):
+            layout.prop(settings, name)
+        op = layout.operator("eigendance.dance_rig", icon="ARMATURE_DATA")
+        for name in (*SHARED, "rig_file", "modes", "amplitude", "time_scale", "options"):
+            setattr(op, name, getattr(settings, name))
+
+
+CLASSES = (EigendancePreferences, EigendanceSettings, EIGENDANCE_PT_panel)
+
+
+def register_settings() -> None:
+    """Give every scene its dance settings."""
+    bpy.types.Scene.eigendance = PointerProperty(type=EigendanceSettings)
+
+
+def unregister_settings() -> None:
+    """Take the settings back."""
+    del bpy.types.Scene.eigendance
