@@ -17,21 +17,28 @@ import os
 import subprocess
 import sys
 import zipfile
+from importlib.resources import files
 
 import numpy as np
 import pytest
-from export_helpers import LONG_SONG, check_positions, spread_frames
+from export_helpers import (
+    LONG_SONG,
+    check_positions,
+    in_file_order,
+    read_obj,
+    spread_frames,
+)
 from scipy.spatial import cKDTree
 from test_blender import blender
 
 from eigendance.cli.main import main
+from helpers import fixture_path
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 SCRIPT = os.path.join(os.path.dirname(__file__), "blender_addon_run.py")
-DATA = os.environ.get("EIGENDANCE_DATA", "/work/shared/data")
-CAT = os.path.join(DATA, "meshes", "cat_lowres.obj")
-ROBOT = os.path.join(DATA, "textured", "robot.obj")
-FOX = os.path.join(DATA, "rigged", "Fox.glb")
+CAT = str(files("eigendance") / "data" / "cat_lowres.obj")  # the built-in cat
+ROBOT = fixture_path("textured", "robot.obj")
+FOX = fixture_path("rigged", "Fox.glb")
 FPS, START, DURATION, K = 5, 0.4, 20.0, 30
 COUNT = 101  # t_i = i/fps, i = 0 … 20 s · 5 fps (file_times)
 SAMPLES = spread_frames(COUNT, 5)
@@ -52,17 +59,6 @@ def write_obj(path, vertices, triangles):
     path.write_text("\n".join(lines) + "\n")
 
 
-def read_obj(path):
-    vertices, faces = [], []
-    for line in open(path, encoding="utf-8"):
-        words = line.split()
-        if words[:1] == ["v"]:
-            vertices.append([float(w) for w in words[1:4]])
-        elif words[:1] == ["f"]:
-            faces.append([int(w.split("/")[0]) - 1 for w in words[1:4]])
-    return np.array(vertices), np.array(faces)
-
-
 def animated(tmp_path, name, vertices, triangles, mapping):
     """`eigendance animate` on the same vertices: its positions at the sample frames."""
     mesh = tmp_path / f"{name}.obj"
@@ -73,23 +69,6 @@ def animated(tmp_path, name, vertices, triangles, mapping):
     positions = np.load(out)["positions"]
     assert len(positions) == COUNT
     return positions[SAMPLES]
-
-
-def in_file_order(positions, rest, triangles):
-    """`animate`'s positions of the cleaned mesh (exact duplicates welded, first one kept;
-    unused vertices dropped, docs/design.md#mesh) put back on every vertex of the file, as
-    the add-on bakes them: a welded vertex moves with its twin, a dropped one stays."""
-    rest = np.asarray(rest, dtype=np.float32)
-    used = np.zeros(len(rest), dtype=bool)
-    used[np.asarray(triangles).ravel()] = True
-    _, first, inverse = np.unique(rest, axis=0, return_index=True, return_inverse=True)
-    twin = first[inverse.ravel()]
-    kept = np.unique(twin[used])
-    assert len(kept) == positions.shape[1]
-    found = np.broadcast_to(rest, (len(positions), *rest.shape)).copy()
-    mapped = np.isin(twin, kept)
-    found[:, mapped] = positions[:, np.searchsorted(kept, twin[mapped])]
-    return found
 
 
 def gallery_item(tmp_path, name, vertices, triangles, item):
@@ -122,7 +101,8 @@ def test_the_addon_bakes_as_the_command_line_animates(version, tmp_path):
             "song": os.path.abspath(LONG_SONG), "fps": FPS, "start": START,
             "duration": DURATION, "k": K, "samples": SAMPLES,
             "cat": {"obj": str(tmp_path / "cat-gallery.obj"), "mapping": str(cat_mapping)},
-            "textured": {"obj": ROBOT, "item": 5}, "fox": {"glb": FOX}}
+            "textured": {"obj": ROBOT, "item": 5}, "fox": {"glb": FOX},
+            "blend": str(tmp_path / "scene.blend")}
     (tmp_path / "plan.json").write_text(json.dumps(plan))
     out = tmp_path / "found.npz"
     home = tmp_path / "home"  # the extension installs into this user's Blender, not the tester's
@@ -135,7 +115,9 @@ def test_the_addon_bakes_as_the_command_line_animates(version, tmp_path):
     assert str(found["version"]).startswith(version)
 
     # The cat: the same vertices, so the same order; its transform is its own.
-    expected = animated(tmp_path, "cat", found["cat_rest"], found["cat_triangles"], cat_mapping)
+    expected = in_file_order(animated(tmp_path, "cat", found["cat_rest"],
+                                      found["cat_triangles"], cat_mapping),
+                             found["cat_rest"], found["cat_triangles"])
     diagonal = float(np.linalg.norm(np.ptp(found["cat_rest"], axis=0)))
     check_positions(found["cat_frames"], expected, diagonal, 1e-4, f"Blender {version} cat")
     assert np.abs(expected[2] - expected[0]).max() > 1e-3 * diagonal  # it moves
@@ -148,6 +130,11 @@ def test_the_addon_bakes_as_the_command_line_animates(version, tmp_path):
                              found["textured_rest"], found["textured_triangles"])
     diagonal = float(np.linalg.norm(np.ptp(found["textured_rest"], axis=0)))
     check_positions(found["textured_frames"], expected, diagonal, 1e-4, f"Blender {version} robot")
+    check_positions(found["cache_frames"], expected, diagonal, 1e-4,
+                    f"Blender {version} robot, Mesh Cache")
+    assert list(found["cache_modifiers"])[:1] == ["MESH_CACHE"]
+    assert (tmp_path / "eigendance" / "robot.pc2").exists()
+    assert "in no face" in str(found["cat_cache"])
     before, after = found["textured_materials"]
     assert len(before) > 0 and list(before) == list(after)
     for name in ("cat", "textured"):

@@ -1,6 +1,7 @@
 """The Blender commands (docs/design.md#blender-add-on): `blender-addon` writes the add-on (an
 extension zip), and `bake` writes what the add-on reads back, a mesh's dance vertex for vertex
-in the order of the mesh file given: morph targets (.npz) or a point cache (.pc2).
+in the order of the mesh file given (its vertices that faces use: mesh readers drop the
+others): morph targets (.npz) or a point cache (.pc2).
 
 The add-on runs `eigendance bake` in a subprocess (Blender has numpy but not scipy), so the
 dance it bakes is the one `eigendance animate` computes.
@@ -156,7 +157,8 @@ def mapping_of(args, basis, spectrogram) -> Mapping:
 
 def run_bake(args) -> None:
     """`eigendance bake`: a mesh's dance for a 3D tool, vertex for vertex in the file's order
-    (a vertex the clean-up merged moves with its twin; one it dropped stays at rest).
+    (of the vertices that faces use; a vertex the clean-up merged moves with its twin, one it
+    dropped stays at rest).
 
     The .npz holds `rest` (n, 3) (the file's vertices, for the reader to check its order),
     `targets` (J, n, 3) and `weights` (T, J) in [−1, 1], `harmonics` (J,) and `times` (T,) s:

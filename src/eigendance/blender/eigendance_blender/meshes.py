@@ -35,8 +35,9 @@ def base_positions(obj) -> np.ndarray:
     return positions.reshape(-1, 3)
 
 
-def write_obj(obj, path: str) -> int:
-    """Write the object's base mesh as an OBJ: every vertex in order, Blender's triangles.
+def write_obj(obj, path: str) -> np.ndarray:
+    """Write the object's base mesh as an OBJ: its vertices that a face uses, in order (mesh
+    readers drop the others: they stay at rest), and Blender's triangles.
 
     Parameters
     ----------
@@ -45,19 +46,23 @@ def write_obj(obj, path: str) -> int:
 
     Returns
     -------
-    int, the triangle count.
+    (m,) int64, the object's vertex of each vertex written.
     """
     mesh = obj.data
     mesh.calc_loop_triangles()
     triangles = np.empty(3 * len(mesh.loop_triangles), dtype=np.int64)
     mesh.loop_triangles.foreach_get("vertices", triangles)
+    used = np.unique(triangles)
+    renumber = np.zeros(len(mesh.vertices), dtype=np.int64)
+    renumber[used] = np.arange(len(used))
     # repr of each float32 as a float64: the shortest text that reads back exactly.
     lines = ["# the base mesh of a Blender object, object space, for eigendance"]
-    lines += [f"v {float(x)!r} {float(y)!r} {float(z)!r}" for x, y, z in base_positions(obj)]
-    lines += [f"f {a} {b} {c}" for a, b, c in triangles.reshape(-1, 3) + 1]
+    lines += [f"v {float(x)!r} {float(y)!r} {float(z)!r}"
+              for x, y, z in base_positions(obj)[used]]
+    lines += [f"f {a} {b} {c}" for a, b, c in renumber[triangles].reshape(-1, 3) + 1]
     with open(path, "w", encoding="utf-8") as file:
         file.write("\n".join(lines) + "\n")
-    return len(triangles) // 3
+    return used
 
 
 def remove_dance(obj) -> None:
@@ -79,19 +84,23 @@ def remove_dance(obj) -> None:
         obj.shape_key_remove(obj.data.shape_keys.key_blocks[0])
 
 
-def check_rest(obj, rest: np.ndarray) -> str | None:
+def check_rest(obj, rest: np.ndarray, used: np.ndarray) -> str | None:
     """Why the baked dance does not fit the object (its vertices changed), or None.
 
     Parameters
     ----------
     obj : the mesh object.
-    rest : (n, 3) the vertices the command solved.
+    rest : (m, 3) the vertices the command solved.
+    used : (m,) the object's vertex of each (`write_obj`).
 
     Returns
     -------
     str or None.
     """
     here = base_positions(obj)
+    if used.max(initial=-1) >= len(here):
+        return f"{obj.name}: the mesh changed while the dance was baked; bake again"
+    here = here[used]
     if here.shape != rest.shape:
         return (f"{obj.name}: the mesh has {len(here)} vertices, the dance {len(rest)}; bake "
                 "again")
@@ -101,7 +110,7 @@ def check_rest(obj, rest: np.ndarray) -> str | None:
     return None
 
 
-def add_shape_keys(obj, baked, first: int, name: str) -> int:
+def add_shape_keys(obj, baked, used, first: int, name: str) -> int:
     """The dance as shape keys (one per driven harmonic, its range [−1, 1]) with a keyframe per
     sample from frame `first`.
 
@@ -109,6 +118,7 @@ def add_shape_keys(obj, baked, first: int, name: str) -> int:
     ----------
     obj : the mesh object.
     baked : the command's .npz (rest, targets, weights, harmonics).
+    used : (m,) the object's vertex of each vertex baked (the others stay at rest).
     first : the frame of sample 0.
     name : the action's name.
 
@@ -127,7 +137,9 @@ def add_shape_keys(obj, baked, first: int, name: str) -> int:
     for index, harmonic in enumerate(baked["harmonics"]):
         key = obj.shape_key_add(name=f"{PREFIX}{int(harmonic)}", from_mix=False)
         key.slider_min, key.slider_max = -1.0, 1.0
-        key.data.foreach_set("co", (base + targets[index]).ravel())
+        moved = base.copy()
+        moved[used] += targets[index]
+        key.data.foreach_set("co", moved.ravel())
         keys.key_samples(block, key, "value", -1, frames, weights[:, index])
     keys.name_action(block)
     return len(baked["harmonics"])

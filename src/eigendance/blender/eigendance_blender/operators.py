@@ -238,7 +238,10 @@ class EIGENDANCE_OT_dance_mesh(Bake, bpy.types.Operator):
         if len(obj.data.polygons) == 0:
             raise Refused(f"{obj.name}: the mesh has no faces to dance with")
         source = os.path.join(self.folder, "mesh.obj")
-        meshes.write_obj(obj, source)
+        self.used = meshes.write_obj(obj, source)
+        if cache and len(self.used) < n:
+            raise Refused(f"{obj.name}: {n - len(self.used)} vertices are in no face; a Mesh "
+                          "Cache needs them all (delete them, or bake shape keys)")
         self.output = os.path.join(self.folder, "dance.npz")
         if cache:
             folder = os.path.join(os.path.dirname(bpy.data.filepath), "eigendance")
@@ -261,11 +264,12 @@ class EIGENDANCE_OT_dance_mesh(Bake, bpy.types.Operator):
         else:
             with np.load(self.output) as file:
                 baked = {key: file[key] for key in file.files}
-            problem = meshes.check_rest(obj, baked["rest"])
+            problem = meshes.check_rest(obj, baked["rest"], self.used)
             if problem:
                 raise Refused(problem)
             count = len(baked["times"])
-            keys_added = meshes.add_shape_keys(obj, baked, context.scene.frame_start, name)
+            keys_added = meshes.add_shape_keys(obj, baked, self.used, context.scene.frame_start,
+                                               name)
             what = f"{keys_added} shape keys"
         return f"eigendance: {obj.name} dances as {what}, " + \
             self.finish_scene(context, int(count), self.song_file)

@@ -17,7 +17,10 @@ import threading
 import time
 
 try:  # a pseudo-terminal for the progress bars: POSIX only
+    import fcntl
     import pty
+    import struct
+    import termios
 except ImportError:  # Windows
     pty = None
 
@@ -93,6 +96,8 @@ class Job:
         master = slave = None
         if pty is not None:
             master, slave = pty.openpty()
+            # 160 columns: a terminal of 0 columns gets empty bars.
+            fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 160, 0, 0))
         try:
             self.process = subprocess.Popen(
                 words, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,

@@ -4,7 +4,7 @@
 import bpy
 from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
 
-from . import meshes, runner
+from . import gallery, meshes, runner
 
 
 class EigendancePreferences(bpy.types.AddonPreferences):
@@ -92,8 +92,12 @@ class EIGENDANCE_PT_panel(bpy.types.Panel):
         op = layout.operator("eigendance.dance_mesh", icon="PLAY_SOUND")
         for name in (*SHARED, "mapping", "item", "k"):
             setattr(op, name, getattr(settings, name))
-        gallery = layout.operator("eigendance.gallery", icon="WORLD")
-        gallery.song, gallery.k = settings.song, settings.k
+        if gallery.SERVER["job"] is None:
+            page = layout.operator("eigendance.gallery", icon="WORLD")
+            page.song, page.k = settings.song, settings.k
+        else:
+            layout.label(text=f"Gallery: {gallery.SERVER['url']}", icon="WORLD")
+            layout.operator("eigendance.gallery_stop", icon="CANCEL")
 
     def draw_rig(self, layout, settings):
         for name in ("rig_file", "modes", "amplitude", "time_scale", "options"):
