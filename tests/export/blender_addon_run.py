@@ -14,6 +14,8 @@ holds.
 import json
 import os
 import sys
+import time
+import urllib.request
 
 import bpy
 import numpy as np
@@ -100,6 +102,32 @@ def bake_mesh(plan, out, name, obj, **settings):
     label = obj.name
     bpy.ops.ed.undo()
     out[f"{name}_undone"] = bpy.context.scene.objects[label].data.shape_keys is None
+    return label
+
+
+def gallery_round_trip(plan):
+    """Open the gallery for the cat, save a mapping as the page does (POST /api/mappings),
+    and return the mapping the scene's settings now name (the timer's polls, run here: a
+    background Blender runs no timers)."""
+    gallery = sys.modules[ADDON + ".gallery"]
+    preferences = bpy.context.preferences.addons[ADDON].preferences
+    preferences.command = plan["command"]
+    select(bpy.context.scene.objects["cat"])
+    result, error = call(bpy.ops.eigendance.gallery, song=plan["song"], k=20)
+    assert result == ["FINISHED"], error
+    for _ in range(300):
+        gallery.poll()
+        if gallery.SERVER["known"] is not None:
+            break
+        time.sleep(0.5)
+    with open(plan["cat"]["mapping"], "rb") as file:
+        saved = urllib.request.Request(gallery.SERVER["url"] + "/api/mappings?name=mine.json",
+                                       data=file.read(), method="POST",
+                                       headers={"Content-Type": "application/json"})
+    urllib.request.urlopen(saved, timeout=30).close()
+    gallery.poll()
+    gallery.stop()
+    return bpy.context.scene.eigendance.mapping
 
 
 def main(plan_path, out_path):
@@ -125,12 +153,12 @@ def main(plan_path, out_path):
     before = set(bpy.context.scene.objects)
     bpy.ops.wm.obj_import(filepath=plan["textured"]["obj"], forward_axis="Y", up_axis="Z")
     model = max(set(bpy.context.scene.objects) - before, key=lambda o: len(o.data.vertices))
-    bake_mesh(plan, out, "textured", model, item=plan["textured"]["item"])
+    label = bake_mesh(plan, out, "textured", model, item=plan["textured"]["item"])
 
     # The same as a point cache beside the saved .blend, read by a Mesh Cache modifier; the
     # cat's loose vertex is refused there (a cache needs every vertex).
     bpy.ops.wm.save_as_mainfile(filepath=plan["blend"])
-    model = bpy.context.scene.objects[model.name]
+    model = bpy.context.scene.objects[label]
     select(model)
     result, error = call(bpy.ops.eigendance.dance_mesh, song=plan["song"], k=plan["k"],
                          fps=plan["fps"], start=plan["start"], duration=plan["duration"],
@@ -163,6 +191,7 @@ def main(plan_path, out_path):
     out["bad_song"] = call(bpy.ops.eigendance.dance_mesh, song=plan["cat"]["mapping"], k=20)[1]
     preferences.command = "eigendance-not-installed-here"
     out["no_command"] = call(bpy.ops.eigendance.dance_mesh, song=plan["song"], k=20)[1]
+    out["gallery_mapping"] = gallery_round_trip(plan)
     np.savez(out_path, **out)
 
 

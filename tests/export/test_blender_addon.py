@@ -32,6 +32,7 @@ from scipy.spatial import cKDTree
 from test_blender import blender
 
 from eigendance.cli.main import main
+from eigendance.music.mapping import Mapping
 from helpers import fixture_path
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -159,6 +160,9 @@ def test_the_addon_bakes_as_the_command_line_animates(version, tmp_path):
         for name in ("cat", "textured", "fox"):
             song, start = found[f"{name}_strip"]
             assert os.path.samefile(song, LONG_SONG) and int(start) == 1
+    back = str(found["gallery_mapping"])  # saved in the page, back in the scene's settings
+    assert os.path.dirname(back) == str(tmp_path / "eigendance")  # beside the .blend
+    assert Mapping.load(back).to_json() == Mapping.load(str(cat_mapping)).to_json()
     for case in ("bad_song", "no_command"):
         message = str(found[case])
         assert message and "\n" not in message.strip() and "Traceback" not in message, message

@@ -14,9 +14,8 @@ import urllib.request
 import webbrowser
 
 import bpy
-from bpy.props import IntProperty, StringProperty
 
-from . import meshes, operators, runner
+from . import meshes, operators, props, runner
 
 SERVER = {"job": None, "url": None, "known": None, "folder": None, "scene": None}
 POLL_SECONDS = 1.0
@@ -108,7 +107,7 @@ def poll():
     ids = {item["id"]: item.get("name", "mapping") for item in library.get("mappings", [])}
     if SERVER["known"] is None:
         SERVER["known"] = set(ids)
-        webbrowser.open(SERVER["url"])
+        webbrowser.open(SERVER["url"] + "/")
         return POLL_SECONDS
     for identifier in sorted(set(ids) - SERVER["known"]):
         SERVER["known"].add(identifier)
@@ -144,9 +143,8 @@ class EIGENDANCE_OT_gallery(bpy.types.Operator):
     bl_idname = "eigendance.gallery"
     bl_label = "Open the gallery"
 
-    song: StringProperty(name="Song", subtype="FILE_PATH", description="The song")
-    k: IntProperty(name="Harmonics (k)", default=100, min=4, max=2000,
-                   description="Harmonics solved for the gallery")
+    song: props.SONG
+    k: props.K
 
     def execute(self, context):
         obj = context.active_object
@@ -171,7 +169,7 @@ class EIGENDANCE_OT_gallery(bpy.types.Operator):
             os.rmdir(folder)
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
-        SERVER.update(job=job, url=f"http://127.0.0.1:{port}/", known=None, folder=folder,
+        SERVER.update(job=job, url=f"http://127.0.0.1:{port}", known=None, folder=folder,
                       scene=context.scene.name)
         bpy.app.timers.register(poll, first_interval=POLL_SECONDS)
         self.report({"INFO"}, f"eigendance: the gallery opens at {SERVER['url']}; save a "

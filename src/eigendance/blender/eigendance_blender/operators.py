@@ -13,9 +13,9 @@ import tempfile
 
 import bpy
 import numpy as np
-from bpy.props import EnumProperty, FloatProperty, IntProperty, StringProperty
+from bpy.props import EnumProperty
 
-from . import keys, meshes, rigs, runner
+from . import keys, meshes, props, rigs, runner
 
 STOP = {"requested": False}  # the Cancel button's request, read by the running operator
 
@@ -95,15 +95,10 @@ class Bake:
 
     bl_options = {"REGISTER", "UNDO"}
 
-    song: StringProperty(name="Song", subtype="FILE_PATH",
-                         description="The song (WAV, MP3, Ogg, FLAC): it drives the dance and "
-                                     "is added as a sound strip at the scene's start")
-    fps: IntProperty(name="FPS", default=30, min=1, max=240,
-                     description="Frames per second: the scene's frame rate is set to it")
-    start: FloatProperty(name="Start", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
-                         description="Where the dance starts in the song, seconds")
-    duration: FloatProperty(name="Duration", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
-                            description="Seconds of song to dance (0: to the song's end)")
+    song: props.SONG
+    fps: props.FPS
+    start: props.START
+    duration: props.DURATION
 
     def execute(self, context):
         try:
@@ -211,14 +206,9 @@ class EIGENDANCE_OT_dance_mesh(Bake, bpy.types.Operator):
     bl_idname = "eigendance.dance_mesh"
     bl_label = "Dance (mesh)"
 
-    mapping: StringProperty(name="Mapping", subtype="FILE_PATH",
-                            description="A mapping file (JSON) saved from the gallery; empty: "
-                                        "the gallery item below")
-    item: IntProperty(name="Gallery item", default=0, min=0, max=8,
-                      description="Initial-gallery item 1–8 as the gallery numbers them (0: "
-                                  "the item that moves this mesh most on the song)")
-    k: IntProperty(name="Harmonics (k)", default=100, min=4, max=2000,
-                   description="Harmonics solved: more allow finer motion and take longer")
+    mapping: props.MAPPING
+    item: props.ITEM
+    k: props.K
     form: EnumProperty(name="Form", items=FORMS, default="AUTO",
                        description="How the dance is kept")
 
@@ -282,20 +272,11 @@ class EIGENDANCE_OT_dance_rig(Bake, bpy.types.Operator):
     bl_idname = "eigendance.dance_rig"
     bl_label = "Dance (rig)"
 
-    rig_file: StringProperty(name="Rig file", subtype="FILE_PATH",
-                             description="The glTF (.glb) this armature was imported from "
-                                         "(remembered on the armature)")
-    modes: StringProperty(name="Modes", default="",
-                          description="Vibration modes that move, e.g. 0,2,5-8 (empty: the "
-                                      "rig's default palette)")
-    amplitude: FloatProperty(name="Amplitude", default=0.0, min=0.0, max=3.14159,
-                             description="Largest body rotation of each mode at full drive, "
-                                         "radians (0: the default)")
-    time_scale: FloatProperty(name="Time scale", default=0.0, min=0.0, max=1000.0,
-                              description="Multiply the natural frequencies (0: the default)")
-    options: StringProperty(name="More options", default="",
-                            description="More options of `eigendance animate-rig`, as typed "
-                                        "on its command line (e.g. --offset 1)")
+    rig_file: props.RIG_FILE
+    modes: props.MODES
+    amplitude: props.AMPLITUDE
+    time_scale: props.TIME_SCALE
+    options: props.OPTIONS
 
     def start_job(self, context) -> None:
         armature = context.active_object

@@ -12,6 +12,7 @@ import os
 import re
 import shlex
 import shutil
+import signal
 import subprocess
 import threading
 import time
@@ -99,9 +100,11 @@ class Job:
             # 160 columns: a terminal of 0 columns gets empty bars.
             fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 160, 0, 0))
         try:
+            # Its own process group: a kill reaches the workers it starts too.
             self.process = subprocess.Popen(
                 words, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                stderr=slave if slave is not None else subprocess.STDOUT)
+                stderr=slave if slave is not None else subprocess.STDOUT,
+                start_new_session=os.name == "posix")
         except OSError as error:
             for fd in (master, slave):
                 if fd is not None:
@@ -187,15 +190,30 @@ class Job:
         return lines[-1] if lines else f"eigendance ended with exit status {status}"
 
     def kill(self) -> None:
-        """End the job (SIGTERM, then SIGKILL after 3 s): the command removes its outputs."""
+        """End the job and every process it started (SIGTERM, then SIGKILL after 5 s): the
+        command removes its outputs."""
         if self.process.poll() is None:
-            self.process.terminate()
+            self._signal(signal.SIGTERM)
             try:
-                self.process.wait(timeout=3)
+                self.process.wait(timeout=5)
             except subprocess.TimeoutExpired:
-                self.process.kill()
+                self._signal(signal.SIGKILL if os.name == "posix" else signal.SIGTERM)
                 self.process.wait()
+        if os.name == "posix":  # workers left in the group once the command ended
+            try:
+                os.killpg(self.process.pid, signal.SIGKILL)
+            except OSError:
+                pass
         self.poll()
+
+    def _signal(self, number) -> None:
+        try:
+            if os.name == "posix":
+                os.killpg(self.process.pid, number)
+            else:
+                self.process.terminate()
+        except OSError:
+            pass
 
 
 def kill_all() -> None:

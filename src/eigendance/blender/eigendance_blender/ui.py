@@ -2,9 +2,9 @@
 (View3D > Sidebar > eigendance)."""
 
 import bpy
-from bpy.props import FloatProperty, IntProperty, PointerProperty, StringProperty
+from bpy.props import PointerProperty, StringProperty
 
-from . import gallery, meshes, runner
+from . import gallery, meshes, props, runner
 
 
 class EigendancePreferences(bpy.types.AddonPreferences):
@@ -30,32 +30,18 @@ class EigendancePreferences(bpy.types.AddonPreferences):
 class EigendanceSettings(bpy.types.PropertyGroup):
     """The panel's settings, kept with the scene (the operators take them as parameters)."""
 
-    song: StringProperty(name="Song", subtype="FILE_PATH",
-                         description="The song (WAV, MP3, Ogg, FLAC)")
-    mapping: StringProperty(name="Mapping", subtype="FILE_PATH",
-                            description="A mapping file (JSON), e.g. saved from the gallery; "
-                                        "empty: the gallery item")
-    item: IntProperty(name="Gallery item", default=0, min=0, max=8,
-                      description="Initial-gallery item 1–8 (0: the one that moves the mesh "
-                                  "most on the song)")
-    k: IntProperty(name="Harmonics (k)", default=100, min=4, max=2000,
-                   description="Harmonics solved: more allow finer motion and take longer")
-    fps: IntProperty(name="FPS", default=30, min=1, max=240,
-                     description="Frames per second (the scene's frame rate is set to it)")
-    start: FloatProperty(name="Start", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
-                         description="Where the dance starts in the song, seconds")
-    duration: FloatProperty(name="Duration", default=0.0, min=0.0, unit="TIME_ABSOLUTE",
-                            description="Seconds of song to dance (0: to its end)")
-    rig_file: StringProperty(name="Rig file", subtype="FILE_PATH",
-                             description="The glTF (.glb) the armature was imported from")
-    modes: StringProperty(name="Modes", description="Modes that move, e.g. 0,2,5-8 (empty: "
-                                                    "the default palette)")
-    amplitude: FloatProperty(name="Amplitude", default=0.0, min=0.0, max=3.14159,
-                             description="Largest body rotation per mode, radians (0: default)")
-    time_scale: FloatProperty(name="Time scale", default=0.0, min=0.0, max=1000.0,
-                              description="Multiply the natural frequencies (0: default)")
-    options: StringProperty(name="More options",
-                            description="More animate-rig options, as on its command line")
+    song: props.SONG
+    mapping: props.MAPPING
+    item: props.ITEM
+    k: props.K
+    fps: props.FPS
+    start: props.START
+    duration: props.DURATION
+    rig_file: props.RIG_FILE
+    modes: props.MODES
+    amplitude: props.AMPLITUDE
+    time_scale: props.TIME_SCALE
+    options: props.OPTIONS
 
 
 SHARED = ("song", "fps", "start", "duration")
