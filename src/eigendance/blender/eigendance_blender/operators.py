@@ -109,6 +109,8 @@ class Bake:
         return self.end(context)
 
     def invoke(self, context, event):
+        if context.window is None:  # no window to run in (background mode): bake now
+            return self.execute(context)
         try:
             self.begin(context)
         except Refused as error:
