@@ -48,3 +48,33 @@ def check_positions(found, expected, diagonal, tolerance=1e-4, what="positions")
 def spread_frames(count: int, frames: int = 6) -> list[int]:
     """`frames` sample indices spread over `count` samples, first and last included."""
     return sorted({int(round(i)) for i in np.linspace(0, count - 1, frames)})
+
+
+def read_obj(path):
+    """An OBJ's vertices (n, 3) and faces (lists of vertex indices), read here as written."""
+    vertices, faces = [], []
+    with open(path, encoding="utf-8") as file:
+        for line in file:
+            words = line.split()
+            if words[:1] == ["v"]:
+                vertices.append([float(w) for w in words[1:4]])
+            elif words[:1] == ["f"]:
+                faces.append([int(w.split("/")[0]) - 1 for w in words[1:]])
+    return np.array(vertices), faces
+
+
+def in_file_order(positions, rest, triangles):
+    """`animate`'s positions of the cleaned mesh (exact duplicates welded, first one kept;
+    unused vertices dropped, docs/design.md#mesh) put back on every vertex of the file, as
+    the add-on bakes them: a welded vertex moves with its twin, a dropped one stays."""
+    rest = np.asarray(rest, dtype=np.float64)
+    used = np.zeros(len(rest), dtype=bool)
+    used[np.concatenate([np.ravel(face) for face in triangles])] = True
+    _, first, inverse = np.unique(rest, axis=0, return_index=True, return_inverse=True)
+    twin = first[inverse.ravel()]
+    kept = np.unique(twin[used])
+    assert len(kept) == positions.shape[1]
+    found = np.broadcast_to(rest, (len(positions), *rest.shape)).copy()
+    mapped = np.isin(twin, kept)
+    found[:, mapped] = positions[:, np.searchsorted(kept, twin[mapped])]
+    return found

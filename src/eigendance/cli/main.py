@@ -16,6 +16,7 @@ import warnings
 
 from eigendance import __version__
 from eigendance.cli.batch import add_batch, run_batch
+from eigendance.cli.blender import add_bake, add_blender_addon, run_bake, run_blender_addon
 from eigendance.cli.exports import add_export, add_render, is_rig, run_export, run_render
 from eigendance.cli.harmonics import (
     add_animate,
@@ -67,6 +68,10 @@ COMMANDS = {
     "render": (add_render, run_render, "render the dance with its song into a video (.mp4)"),
     "batch": (add_batch, run_batch, "make many songs × many models from a plan (TOML), on "
                                     "local processes or Ray; resumable"),
+    "blender-addon": (add_blender_addon, run_blender_addon,
+                      "write the Blender add-on (an extension .zip for Blender 4.2 and later)"),
+    "bake": (add_bake, run_bake, "write a mesh's dance in its file's vertex order, as morph "
+                                 "targets (.npz) or a point cache (.pc2): what the add-on reads"),
 }
 
 
@@ -200,7 +205,7 @@ def memory_advice(args) -> str:
         return "try a rig of fewer bodies and joints, or a shorter part of the song"
     if args.command in ("spectrum",):
         return "try a shorter song or fewer bands"
-    if args.command in ("gallery", "animate", "export", "render", "basis"):
+    if args.command in ("gallery", "animate", "export", "render", "basis", "bake"):
         return "try a smaller -k or mesh, or a shorter part of the song"
     return "try smaller inputs"
 
