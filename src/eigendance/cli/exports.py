@@ -23,6 +23,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.cli.presets import add_preset_options, fitted, mapping_option
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, rig_dance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
@@ -67,6 +68,7 @@ def add_dance_inputs(parser, audio_help: str) -> None:
                         help="harmonics when MODEL is a mesh file (default 300)")
     parser.add_argument("--fps", type=number(0, 240, above=True), default=30.0,
                         help="frames per second (default 30)")
+    add_preset_options(parser)
     add_palette_options(parser)
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness of a rig (default 1)")
@@ -124,6 +126,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
             raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
                              "joint); nothing to move")
         spectrogram = spectrogram_from(args.audio, mapping.bands if mapping else 64)
+        mapping = fitted(args, mapping, mode_count=rig.model.n_modes)
         mapping = rig.mapping(spectrogram, mapping,
                               selected=parse_modes(args.modes, rig.model.n_modes),
                               amplitude=args.amplitude, time_scale=args.time_scale,
@@ -131,7 +134,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
         dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name)
     else:
         basis, spectrogram = harmonic_inputs(args, mapping.bands if mapping else 64)
-        mapping = mapping or strongest_item(basis, spectrogram)
+        mapping = fitted(args, mapping, basis) or strongest_item(basis, spectrogram)
         dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
     dance = dance.window(args.start, args.duration)
     say_note(args.output, dance.note)
@@ -182,7 +185,7 @@ def run_export(args) -> None:
     """
     format = format_of(args.output, args.format)
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     clipped = args.start > 0 or args.duration is not None
     inputs = input_files(args)
     for path in companion_paths(args.output, format, song_of(args), clipped).values():
@@ -265,7 +268,7 @@ def run_render(args) -> None:
         raise InputError("breeding parents were given without a gallery size",
                          remedy={"gallery": DEFAULT_GALLERY})
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     if args.gallery is not None:
         dances, looks = gallery_dances(args, mapping)
     else:

@@ -21,6 +21,7 @@ from eigendance.cli.options import (
     say_note,
     spectrogram_from,
 )
+from eigendance.cli.presets import add_preset_options, fitted, mapping_option
 from eigendance.errors import InputError
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.eigensolver import SOLVERS
@@ -224,6 +225,7 @@ def add_animate(parser):
     parser.add_argument("audio", help="audio file, or spectrogram file (.npz)")
     parser.add_argument("--mapping", help="mapping JSON (default: the initial-gallery item of "
                                           "8 that moves the mesh most)")
+    add_preset_options(parser)
     parser.add_argument("--fps", type=FPS, default=30.0, help="frames per second (default 30)")
     parser.add_argument("-k", type=HARMONICS, default=300,
                         help="harmonics when MESH is a mesh file (default 300)")
@@ -240,15 +242,14 @@ def run_animate(args) -> None:
     """
     refuse_overwrite(args.output, args.force)
     began = time.perf_counter()
-    mapping = Mapping.load(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     spectrogram = spectrogram_from(args.audio, bands=mapping.bands if mapping else 64)
     window = Window.of(args.start, args.duration, spectrogram.duration, args.audio)
     say_note(args.output, window.note)
     bar, update = progress_bar(args.k, "eigenpairs")
     with bar:
         basis = basis_from(args.mesh, args.k, progress=update)
-    if mapping is None:
-        mapping = strongest_item(basis, spectrogram)
+    mapping = fitted(args, mapping, basis) or strongest_item(basis, spectrogram)
     frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,
