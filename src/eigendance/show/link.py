@@ -58,7 +58,7 @@ class LinkSync:
         self.loop.run_until_complete(self._follow())
 
     async def _follow(self) -> None:
-        self.link = self.Link(self.state.tempo or 120.0, self.loop)
+        self.link = self.Link(self.state.tempo or 120.0)  # on this thread's running loop
         self.link.enabled = True
         self.ready.set()
         while not self.stopping.is_set():

@@ -106,6 +106,13 @@ def _get(table: dict, key: str, kinds, where: str, default=None):
     return value
 
 
+def _named(name, where: str) -> str:
+    try:
+        return check_name(name)
+    except InputError as error:
+        raise InputError(f"{where}: {error}") from None
+
+
 def _fade(table: dict, where: str, default: float) -> float:
     value = _get(table, "fade_beats", (int, float), where, default)
     if not 0 <= value <= 64:
@@ -131,7 +138,7 @@ def _cue(table, index: int, folder: str, fade: float, path: str) -> Cue:
         raise InputError(f"{where}: live must be \"mic\" or \"tab\", got {one_line(live, 20)!r}")
     preset = _get(table, "preset", str, where)
     if preset is not None:
-        check_name(preset)
+        _named(preset, where)
     bars = _get(table, "bars", int, where)
     until = _get(table, "until", str, where, "bars" if bars is not None else "told")
     if until not in UNTIL:
@@ -176,7 +183,7 @@ def read_set(path: str | os.PathLike) -> SetList:
     fade = _fade(head, f"{path}: [set]", 4.0)
     slots = _get(head, "slots", list, f"{path}: [set]", [])
     for slot in slots[:9]:
-        check_name(slot)
+        _named(slot, f"{path}: [set] slots")
     cues = document.get("cue", [])
     if not isinstance(cues, list) or not 1 <= len(cues) <= MAX_CUES:
         raise InputError(f"{path}: a set needs 1–{MAX_CUES} cues ([[cue]] tables)")
