@@ -49,8 +49,9 @@ export class ShowOutput {
   private lastT = 0;
   private clockAt = 0;
   readonly applied: Applied[] = [];
-  /** the frames drawn since the state's gain last changed: {gain, at} of the first */
-  readonly gainFrames: { gain: number; at: number }[] = [];
+  /** each change of the show's gain: when the page heard it and drew its first frame (ms since
+   * 1970; the benchmark's latency from an OSC message to the changed frame) */
+  readonly gains: { gain: number; heard: number; drawn: number | null }[] = [];
 
   constructor(private readonly app: App, private readonly options: OutputOptions) {}
 
@@ -94,7 +95,10 @@ export class ShowOutput {
     this.state = state;
     const app = this.app;
     document.body.classList.toggle("show-blackout", state.blackout);
-    if (!before || before.gain !== state.gain) this.gainFrames.length = 0;
+    if (before && before.gain !== state.gain) {
+      this.gains.push({ gain: state.gain, heard: performance.timeOrigin + performance.now(),
+        drawn: null });
+    }
     if (state.playing && !app.transport.playing) app.play();
     if (!state.playing && app.transport.playing) app.transport.pause();
     for (const [id, value] of Object.entries(state.controls)) setControl(id, value);
@@ -157,8 +161,8 @@ export class ShowOutput {
     this.lastFrame = wall;
     if (this.lastT > t + 0.5) this.cueStart = t; // the song started again
     this.lastT = t;
-    if (this.state) this.gainFrames.push({ gain: this.state.gain, at: wall });
-    if (this.gainFrames.length > 4) this.gainFrames.splice(1, this.gainFrames.length - 2);
+    const last = this.gains[this.gains.length - 1];
+    if (last && last.drawn === null) last.drawn = performance.timeOrigin + wall;
     if (!this.pending) this.endCue(t);
     const pending = this.pending;
     if (pending && t >= pending.at) {
@@ -170,7 +174,8 @@ export class ShowOutput {
       const spectrum = this.app.motion.spectrum;
       void fetch("api/show/clock", { method: "POST", headers: { "Content-Type": "application/json" },
         body: JSON.stringify({ song: this.app.library.songId || null, time: t,
-          playing: this.app.transport.playing, tempo: spectrum?.tempo || null }) })
+          playing: this.app.transport.playing, tempo: spectrum?.tempo || null,
+          wall: performance.timeOrigin + wall }) })
         .catch(() => {});
     }
   }

@@ -12,6 +12,7 @@ from __future__ import annotations
 import asyncio
 import json
 import os
+import time
 
 from starlette.exceptions import HTTPException
 from starlette.requests import Request
@@ -110,7 +111,9 @@ async def show_clock(request: Request):
 
     Parameters
     ----------
-    request : JSON {"song": id or null, "time": s, "playing": bool, "tempo": BPM or null}.
+    request : JSON {"song": id or null, "time": s, "playing": bool, "tempo": BPM or null,
+        "wall": when the page drew it, ms since 1970 (same machine: the report's time on the
+        way is taken off; a clock more than a second off is not believed)}.
 
     Returns
     -------
@@ -121,9 +124,11 @@ async def show_clock(request: Request):
             isinstance(data.get("time"), bool) or not isinstance(data.get("playing"), bool):
         raise InputError("send {\"song\", \"time\": seconds, \"playing\": true or false}")
     song = data.get("song")
-    tempo = data.get("tempo")
+    tempo, wall = data.get("tempo"), data.get("wall")
+    age = time.time() - wall / 1000 if finite_number(wall) and not isinstance(wall, bool) else 0
     show_of(request).heard(song if isinstance(song, str) else None, float(data["time"]),
-                           data["playing"], tempo if finite_number(tempo) else None)
+                           data["playing"], tempo if finite_number(tempo) else None,
+                           age if 0 <= age < 1 else 0.0)
     return json_answer({"ok": True})
 
 

@@ -34,6 +34,7 @@ ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "play": 0, "s
            "loop_set": 1}
 BANDS_EVERY = 1 / 30  # s between /bands messages
 TICK = 0.004  # s: how finely the sender waits for the next event
+SEEK = 1.0  # s: a clock that jumps further was sought (smaller steps back are the page's jitter)
 
 
 class Complaints:
@@ -181,8 +182,8 @@ class OscOut:
             spectrogram = self.spectrogram_of(song) if song else None
             if spectrogram is None:
                 continue
-            if song != last_song or last_time is None or t < last_time - 0.05:
-                last_time, last_song = t, song  # a new song, a seek back: from here on
+            if song != last_song or last_time is None or abs(t - last_time) > SEEK:
+                last_time, last_song = t, song  # a new song, a seek: from here on
                 continue
             self._events(spectrogram.rhythm, last_time, t)
             if t >= next_bands:

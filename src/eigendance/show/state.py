@@ -185,7 +185,7 @@ class ShowState:
 
     # -- the output page's clock ------------------------------------------------------------------
 
-    def heard(self, song, song_time: float, playing: bool, tempo=None) -> None:
+    def heard(self, song, song_time: float, playing: bool, tempo=None, age: float = 0.0) -> None:
         """The output page's clock: song time `song_time` is drawn now (OSC out follows it).
 
         Parameters
@@ -194,9 +194,10 @@ class ShowState:
         song_time : the song time drawn, s.
         playing : whether it plays.
         tempo : the song's tempo, BPM (reported as the show's tempo when nobody tapped).
+        age : how long ago the page drew it, s (its report's time on the way).
         """
         with self.lock:
-            self.song_clock = {"song": song, "time": float(song_time), "at": self.clock(),
+            self.song_clock = {"song": song, "time": float(song_time), "at": self.clock() - age,
                                "playing": bool(playing)}
             if tempo is not None and not self.taps and finite_number(tempo) and tempo > 0:
                 self.tempo = float(tempo)
