@@ -24,6 +24,8 @@ export async function control(action: string, value?: unknown): Promise<ShowStat
 export class ShowPanel {
   readonly element: HTMLElement;
   state: ShowState | null = null;
+  /** the show's preset changed (a slot key, OSC, another page) */
+  onPreset: (name: string | null) => void = () => {};
 
   constructor() {
     this.element = document.createElement("aside");
@@ -63,7 +65,9 @@ export class ShowPanel {
   }
 
   render(state: ShowState): void {
+    const before = this.state;
     this.state = state;
+    if (before && before.preset !== state.preset) this.onPreset(state.preset);
     this.element.hidden = state.set === null;
     const byId = (id: string) => document.getElementById(id)!;
     byId("show-set").textContent = state.set ?? "show";

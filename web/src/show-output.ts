@@ -216,7 +216,12 @@ export class ShowOutput {
     this.shownPreset = change.preset;
     if (!change.sameModel && change.cue !== null) {
       const cue = state.cues[change.cue];
-      if (cue.song && cue.song !== app.library.songId) await app.library.loadSong(cue.song);
+      if (cue.live) {
+        await app.startLive({ kind: cue.live });
+      } else if (cue.song && (cue.song !== app.library.songId || app.live.active)) {
+        app.live.stop();
+        await app.library.loadSong(cue.song);
+      }
       if (cue.model.kind === "mesh" && cue.model.id !== app.library.meshId) {
         await app.library.loadMesh(cue.model.id);
         app.player.basisChanged();

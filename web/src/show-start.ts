@@ -23,7 +23,7 @@ export async function startOutput(options: Options,
   const cue = state.cue === null ? null : state.cues[state.cue];
   const app = new App({ ...options, size: null, view: "player", bare: true,
     scale: options.scale ?? 1, mesh: cue?.model.kind === "mesh" ? cue.model.id : options.mesh,
-    song: cue?.song ?? options.song });
+    song: cue?.song ?? options.song, source: cue?.live ?? options.source });
   const output = new ShowOutput(app, readOutputOptions(location.search));
   window.eigendanceShow = { output };
   const ready = app.start().then(async () => {
@@ -40,6 +40,8 @@ export function startControl(app: App): void {
   const midi = new MidiLearn();
   window.eigendanceShow = { panel, presets, midi };
   addKeysToHelp();
+  // the studio previews what the show plays: a new preset (a slot key, OSC) in its player
+  panel.onPreset = (name) => { if (name) void presets.play(name).catch(() => {}); };
   void panel.start();
   void midi.start();
 }

@@ -34,7 +34,8 @@ ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "play": 0, "s
            "loop_set": 1}
 BANDS_EVERY = 1 / 30  # s between /bands messages
 TICK = 0.004  # s: how finely the sender waits for the next event
-SEEK = 1.0  # s: a clock that jumps further was sought (smaller steps back are the page's jitter)
+SEEK = 1.0  # s: a clock that jumps back further was sought (smaller steps: the page's jitter)
+LATE = 4.0  # s: events this far behind (a busy machine) are still sent; further on, a seek
 
 
 class Complaints:
@@ -182,7 +183,7 @@ class OscOut:
             spectrogram = self.spectrogram_of(song) if song else None
             if spectrogram is None:
                 continue
-            if song != last_song or last_time is None or abs(t - last_time) > SEEK:
+            if song != last_song or last_time is None or not -SEEK < t - last_time < LATE:
                 last_time, last_song = t, song  # a new song, a seek: from here on
                 continue
             self._events(spectrogram.rhythm, last_time, t)
