@@ -6,17 +6,15 @@ from __future__ import annotations
 import contextlib
 import json
 import os
-import subprocess
-import sys
 import threading
 import time
 import urllib.request
 
 from pythonosc.dispatcher import Dispatcher
 from pythonosc.osc_server import ThreadingOSCUDPServer
-from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, free_port
+from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, free_port, running_server
 
-from helpers import fixture_path, start
+from helpers import fixture_path
 
 KICK = fixture_path("audio", "beatnet_808kick120bpm.mp3")  # 120 BPM, 10 s
 AUTOPLAY = ["--autoplay-policy=no-user-gesture-required"]
@@ -66,29 +64,13 @@ def osc_listener(addresses=("/eigendance/beat",)):
 def show_server(set_path, folder, presets, osc_out_port=None, k=24):
     """`eigendance show SET -k K --osc PORT [--osc-out …] --presets DIR` on free ports:
     {url, osc, process}."""
-    port, osc = free_port(), free_port()
-    command = [sys.executable, "-m", "eigendance.cli", "show", set_path, "-k", str(k),
-               "--port", str(port), "--osc", str(osc), "--presets", str(presets)]
+    osc = free_port()
+    arguments = [set_path, "-k", str(k), "--osc", str(osc), "--presets", str(presets)]
     if osc_out_port:
-        command += ["--osc-out", f"127.0.0.1:{osc_out_port}"]
-    env = dict(os.environ, EIGENDANCE_CACHE_DIR=os.path.join(folder, "cache"))
-    log_path = os.path.join(folder, f"show-{port}.log")
-    with open(log_path, "w") as log:
-        process = start(command, env=env, stdout=subprocess.PIPE, stderr=log, text=True)
-        line = process.stdout.readline()
-        if "control page" not in line:
-            process.kill()
-            with open(log_path) as written:
-                raise RuntimeError(f"show did not start: {line} {written.read()}")
-        try:
-            yield {"url": f"http://127.0.0.1:{port}/", "osc": osc, "process": process,
-                   "log": log_path}
-        finally:
-            process.terminate()
-            try:
-                process.wait(10)
-            except subprocess.TimeoutExpired:
-                process.kill()
+        arguments += ["--osc-out", f"127.0.0.1:{osc_out_port}"]
+    with running_server(arguments, folder, os.path.join(folder, "cache"), command="show",
+                        ready="control page") as server:
+        yield {**server, "osc": osc}
 
 
 def control(url, action, value=None):

@@ -23,13 +23,8 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 
-try:
-    import tomllib
-except ModuleNotFoundError:  # Python 3.10: the same parser, as a package
-    import tomli as tomllib
-
 from eigendance.errors import InputError, one_line
-from eigendance.files import check_readable
+from eigendance.files import check_readable, read_toml
 from eigendance.presets.store import check_name
 
 UNTIL = ("bars", "section", "told")
@@ -165,14 +160,7 @@ def read_set(path: str | os.PathLike) -> SetList:
     SetList; InputError naming the file, the cue and the key for anything wrong.
     """
     path = os.fspath(path)
-    check_readable(path)
-    try:
-        with open(path, "rb") as file:
-            document = tomllib.load(file)
-    except tomllib.TOMLDecodeError as error:
-        raise InputError(f"{path}: not a TOML set list ({one_line(error)})") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"{path}: cannot read ({one_line(error)})") from None
+    document = read_toml(path, "TOML set list")
     unknown = set(document) - {"set", "cue"}
     if unknown:
         raise InputError(f"{path}: unknown table {sorted(unknown)[0]!r} (a set has [set] and "
