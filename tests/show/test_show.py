@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import threading
 import time
+from types import SimpleNamespace
 
 import mir_eval
 import numpy as np
@@ -15,11 +16,14 @@ from pythonosc.udp_client import SimpleUDPClient
 from starlette.testclient import TestClient
 
 from eigendance.errors import InputError
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import load_rig
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.presets.store import PresetStore
 from eigendance.server.app import create_app
 from eigendance.server.serve import library_session
 from eigendance.show.osc import OscIn, OscOut, parse_address
+from eigendance.show.session import ModeAmplitudes
 from eigendance.show.setlist import read_set
 from eigendance.show.state import ShowState
 from helpers import fixture_path
@@ -253,3 +257,21 @@ def test_two_link_peers_agree_on_the_tempo():
     finally:
         leader.stop()
         follower.stop()
+
+
+def test_osc_out_sends_the_mode_coefficients_of_the_rig_on_screen(tmp_path):
+    rig = Rig(load_rig("loop4"), np.float64)
+    spectrogram = Spectrogram.from_file(fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg"))
+    items = {("rig", "r"): SimpleNamespace(rig=rig, revision=0),
+             ("song", "s"): SimpleNamespace(spectrogram=spectrogram)}
+    library = SimpleNamespace(get=lambda kind, id: items.get((kind, id)))
+    setlist = read_set(write_set(tmp_path, '[[cue]]\nmodel = "model.obj"\nsong = "kick.mp3"\n'))
+    state = ShowState(setlist, [{"model": {"kind": "rig", "id": "r"}, "song": "s"}])
+    modes = ModeAmplitudes(library, state, PresetStore(tmp_path / "presets"))
+    t = 1.234
+    frame = round(t * spectrogram.rate)
+    expected = rig.coefficients(spectrogram, None, spectrogram.times[frame:frame + 1])[0]
+    assert np.allclose(modes("s", t), expected)
+    assert len(expected) == rig.model.n_modes and np.abs(expected).max() > 0
+    mesh = ShowState(setlist, [{"model": {"kind": "mesh", "id": "m"}, "song": "s"}])
+    assert ModeAmplitudes(library, mesh, PresetStore(tmp_path))("s", t) is None

@@ -10,7 +10,8 @@ most one a second, with the count of the others).
 Out: what the dance hears, at the song time the output page draws (its clock, reported to the
 server): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
 `/eigendance/onset time`, `/eigendance/tempo f` (when it changes), `/eigendance/bands` (64
-floats, 30 times a second).
+floats, 30 times a second) and, while a rig dances, `/eigendance/modes` (its mode coefficients,
+radians, as often).
 """
 
 from __future__ import annotations
@@ -151,11 +152,13 @@ class OscOut:
     state : the show (its `song_clock`).
     host, port : where to send.
     spectrogram_of : song id → its `Spectrogram` (with rhythm), or None.
+    modes_of : (song id, t) → the rig's mode coefficients at t, or None (no rig).
     """
 
-    def __init__(self, state: ShowState, host: str, port: int, spectrogram_of):
+    def __init__(self, state: ShowState, host: str, port: int, spectrogram_of,
+                 modes_of=lambda song, t: None):
         self.client = SimpleUDPClient(host, port)
-        self.state, self.spectrogram_of = state, spectrogram_of
+        self.state, self.spectrogram_of, self.modes_of = state, spectrogram_of, modes_of
         self.stopping = threading.Event()
         self.thread = threading.Thread(target=self._run, name="osc-out", daemon=True)
         self.thread.start()
@@ -191,6 +194,9 @@ class OscOut:
                 frame = min(len(spectrogram.values) - 1, max(0, round(t * spectrogram.rate)))
                 self.client.send_message(PREFIX + "bands",
                                          [float(v) for v in spectrogram.values[frame]])
+                modes = self.modes_of(song, t)
+                if modes is not None:
+                    self.client.send_message(PREFIX + "modes", [float(c) for c in modes])
                 next_bands = t + BANDS_EVERY
             if self.state.tempo is not None and self.state.tempo != tempo:
                 tempo = self.state.tempo

@@ -8,6 +8,7 @@ import contextlib
 import sys
 
 from eigendance.errors import InputError
+from eigendance.presets.resample import fit_mapping
 from eigendance.presets.store import PresetStore
 from eigendance.show.link import LinkSync
 from eigendance.show.osc import OscIn, OscOut, parse_address
@@ -90,7 +91,8 @@ def show_session(library, presets: str, setlist: SetList | None = None,
             print(f"eigendance: OSC in on {osc_host}:{running[-1].port}", file=sys.stderr)
         if osc_out is not None:
             host, port = parse_address(osc_out)
-            running.append(OscOut(state, host, port, lambda song: spectrogram_of(library, song)))
+            running.append(OscOut(state, host, port, lambda song: spectrogram_of(library, song),
+                                  ModeAmplitudes(library, state, store)))
         if link is not None:
             running.append(LinkSync(state, link))
         yield store, state
@@ -113,3 +115,54 @@ def spectrogram_of(library, song_id: str):
     """
     item = library.get("song", song_id)
     return None if item is None else item.spectrogram
+
+
+class ModeAmplitudes:
+    """The mode coefficients c_κ(t) of the rig the show plays (OSC out's /eigendance/modes):
+    the current cue's rig with the show's preset (its palette fitted by rank), computed for the
+    whole song once per rig, edit, preset and song.
+
+    Parameters
+    ----------
+    library : the `Library`.
+    state : the show.
+    store : the presets.
+    """
+
+    def __init__(self, library, state: ShowState, store: PresetStore):
+        self.library, self.state, self.store = library, state, store
+        self.key, self.coefficients = None, None
+
+    def __call__(self, song: str, t: float):
+        """c(t) of the rig on screen, or None (a mesh, no set, nothing analysed yet).
+
+        Parameters
+        ----------
+        song : the song's id.
+        t : the song time, s.
+
+        Returns
+        -------
+        (modes,) float64 or None.
+        """
+        state = self.state
+        if state.cue is None or state.cue >= len(state.items):
+            return None
+        model = state.items[state.cue]["model"]
+        item = self.library.get("rig", model["id"]) if model["kind"] == "rig" else None
+        spectrogram = spectrogram_of(self.library, song)
+        if item is None or item.rig is None or spectrogram is None:
+            return None
+        key = (model["id"], item.revision, state.preset, song)
+        if key != self.key:
+            mapping = None
+            if state.preset is not None:
+                try:
+                    mapping = self.store.load(state.preset).mapping
+                except InputError:
+                    return None  # said by the page that plays it
+                mapping = fit_mapping(mapping, None, None, item.rig.model.n_modes)
+            self.coefficients = item.rig.coefficients(spectrogram, mapping, spectrogram.times)
+            self.key = key
+        frame = min(len(self.coefficients) - 1, max(0, round(t * spectrogram.rate)))
+        return self.coefficients[frame]
