@@ -15,6 +15,7 @@ from pythonosc.osc_server import ThreadingOSCUDPServer
 from pythonosc.udp_client import SimpleUDPClient
 from starlette.testclient import TestClient
 
+from eigendance.cli.main import main
 from eigendance.errors import InputError
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
@@ -275,3 +276,13 @@ def test_osc_out_sends_the_mode_coefficients_of_the_rig_on_screen(tmp_path):
     assert len(expected) == rig.model.n_modes and np.abs(expected).max() > 0
     mesh = ShowState(setlist, [{"model": {"kind": "mesh", "id": "m"}, "song": "s"}])
     assert ModeAmplitudes(library, mesh, PresetStore(tmp_path))("s", t) is None
+
+
+def test_show_with_a_bad_set_is_one_line(tmp_path, capsys):
+    path = write_set(tmp_path, "[[cue]]\nmodel = \"model.obj\"\n")
+    assert main(["show", path, "--port", "0"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("eigendance: error:") and "cue 1" in err
+    assert main(["show", str(tmp_path / "none.toml")]) == 1
+    assert main(["serve", "--osc-out", "nowhere"]) == 1
+    assert "HOST:PORT" in capsys.readouterr().err
