@@ -152,11 +152,10 @@ class OscOut:
     state : the show (its `song_clock`).
     host, port : where to send.
     spectrogram_of : song id → its `Spectrogram` (with rhythm), or None.
-    modes_of : (song id, t) → the rig's mode coefficients at t, or None (no rig).
+    modes_of : (song id, t) → the rig's mode coefficients at t, or None (no rig); None: never.
     """
 
-    def __init__(self, state: ShowState, host: str, port: int, spectrogram_of,
-                 modes_of=lambda song, t: None):
+    def __init__(self, state: ShowState, host: str, port: int, spectrogram_of, modes_of=None):
         self.client = SimpleUDPClient(host, port)
         self.state, self.spectrogram_of, self.modes_of = state, spectrogram_of, modes_of
         self.stopping = threading.Event()
@@ -194,7 +193,7 @@ class OscOut:
                 frame = min(len(spectrogram.values) - 1, max(0, round(t * spectrogram.rate)))
                 self.client.send_message(PREFIX + "bands",
                                          [float(v) for v in spectrogram.values[frame]])
-                modes = self.modes_of(song, t)
+                modes = self.modes_of(song, t) if self.modes_of else None
                 if modes is not None:
                     self.client.send_message(PREFIX + "modes", [float(c) for c in modes])
                 next_bands = t + BANDS_EVERY

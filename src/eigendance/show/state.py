@@ -65,7 +65,6 @@ class ShowState:
         self.controls: dict[str, float] = {}
         self.song_clock: dict | None = None  # the output page's {song, time, at, playing}
         self.version = 0
-        self.listeners: list[Callable[[str, object], None]] = []
 
     # -- actions --------------------------------------------------------------------------------
 
@@ -93,8 +92,6 @@ class ShowState:
         with self.lock:
             handler(value)
             self.version += 1
-        for listener in self.listeners:
-            listener(action, value)
         return self.snapshot()
 
     def _move(self, step: int, value) -> None:
