@@ -176,3 +176,16 @@ def test_animate_plays_a_preset_as_its_mapping_file(tmp_path, capsys):
                  "-o", str(tmp_path / "c.npz")]) == 1
     assert 'no preset named "Nope"' in capsys.readouterr().err
     assert json.loads((tmp_path / "presets" / "Teapot.json").read_text())["name"] == "Teapot"
+
+
+def test_batch_plays_a_preset_instead_of_the_plans_gallery(tmp_path, capsys):
+    song = tmp_path / "a.ogg"
+    song.write_bytes(open(fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg"), "rb").read())
+    plan = tmp_path / "plan.toml"
+    plan.write_text('models = ["loop4"]\nsongs = ["a.ogg"]\noutputs = ["npz"]\ngallery = 2\n'
+                    'out = "out"\n')
+    PresetStore(tmp_path / "presets").save(Preset("Kick pulse", MAPPING))
+    assert main(["batch", str(plan), "--dry-run", "--preset", "Kick pulse",
+                 "--presets", str(tmp_path / "presets")]) == 0
+    assert capsys.readouterr().out.splitlines() == ["loop4-a-Kick_pulse: npz",
+                                                    "1 of 1 jobs to make"]

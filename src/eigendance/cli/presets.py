@@ -66,9 +66,10 @@ def mapping_option(args) -> Mapping | None:
     Mapping or None; InputError when both are given or the preset is missing.
     """
     args.preset_eigenvalues = None
+    given = getattr(args, "mapping", None)  # batch has no --mapping
     if getattr(args, "preset", None) is None:
-        return Mapping.load(args.mapping) if args.mapping else None
-    if args.mapping:
+        return Mapping.load(given) if given else None
+    if given:
         raise InputError("give --mapping or --preset, not both")
     preset = PresetStore(presets_folder(args)).load(args.preset)
     args.preset_eigenvalues = preset.eigenvalues
