@@ -231,8 +231,12 @@ export class ShowOutput {
       }
       if (state.playing) app.play();
     }
-    const mapping = change.mapping ?? app.gallery.mappings()[0] ?? null;
-    if (mapping) app.open(mapping, change.preset ?? "");
+    if (app.rigs.active) { // a rig: its own player (cut at the bar: no crossfade, no gain)
+      if (change.mapping) app.rigs.player.show(change.mapping, change.preset ?? "");
+    } else {
+      const mapping = change.mapping ?? app.gallery.mappings()[0] ?? null;
+      if (mapping) app.open(mapping, change.preset ?? "");
+    }
     this.fade = beats > 0 ? { from, start: t, length: (beats * 60) / tempo } : null;
     app.viewer.requestDraw();
   }
