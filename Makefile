@@ -13,7 +13,7 @@ system:
 $(VENV)/.installed: pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -c constraints.txt -e '.[dev,ray]'  # ray: the batch tests run on Ray too
+	$(BIN)/pip install -q -c constraints.txt -e '.[dev,ray,link]'  # ray: the batch tests run on Ray too; link: the Link test
 	$(BIN)/python -c 'from eigendance.music.spectrogram import warm_up; warm_up()'  # numba's JIT, once
 	touch $@
 

@@ -15,6 +15,7 @@ from helpers import required  # noqa: E402
 def isolated_cache(tmp_path, monkeypatch):
     """Every test gets its own empty basis cache."""
     monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("EIGENDANCE_PRESETS_DIR", str(tmp_path / "presets"))
 
 
 @pytest.fixture

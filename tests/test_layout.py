@@ -11,7 +11,7 @@ import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "src")
 LAZY = {"trimesh", "igl", "robust_laplacian", "av", "matplotlib.figure", "DracoPy", "PIL", "bpy",
-        "ray", "librosa"}
+        "ray", "librosa", "aalink"}
 TOP = "eigendance.cli"  # the command line: imports everything, imported by nothing
 
 

@@ -14,6 +14,11 @@ import os
 
 import numpy as np
 
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10: the same parser, as a package
+    import tomli as tomllib
+
 from eigendance.errors import InputError, one_line
 from eigendance.reads import read_npz
 from eigendance.writes import check_finite
@@ -256,3 +261,28 @@ def read_json(path: str | os.PathLike, name: str | None = None):
     except OSError as error:
         raise InputError(f"{path}: cannot read ({error.strerror or one_line(error)})") from None
 
+
+def read_toml(path: str | os.PathLike, what: str) -> dict:
+    """The parsed TOML document of a file (a batch plan, a show's set list); InputError naming
+    the file for anything unreadable.
+
+    Parameters
+    ----------
+    path : the file.
+    what : what it should be, for the message ("TOML plan").
+
+    Returns
+    -------
+    dict.
+    """
+    path = os.fspath(path)
+    check_readable(path)
+    try:
+        with open(path, "rb") as file:
+            return tomllib.load(file)
+    except tomllib.TOMLDecodeError as error:
+        raise InputError(f"{path}: not a {what} ({one_line(error)})") from None
+    except RecursionError:
+        raise InputError(f"{path}: not a {what} (nested too deeply)") from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError(f"{path}: cannot read ({one_line(error)})") from None

@@ -31,23 +31,25 @@ def free_port() -> int:
 
 
 @contextlib.contextmanager
-def running_server(arguments, folder, cache):
-    """`eigendance serve ARGUMENTS --port P` as a subprocess on a free port of 127.0.0.1, its
-    log in FOLDER/server.log and its basis cache in CACHE: {url, port, process, announce}."""
+def running_server(arguments, folder, cache, command="serve", ready="serving on"):
+    """`eigendance serve ARGUMENTS --port P` (or another COMMAND announcing READY) as a
+    subprocess on a free port of 127.0.0.1, its log in FOLDER/server.log and its basis cache in
+    CACHE: {url, port, process, announce}."""
     port = free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache))
-    command = [sys.executable, "-m", "eigendance.cli", "serve", *arguments, "--port", str(port)]
+    command = [sys.executable, "-m", "eigendance.cli", command, *arguments, "--port", str(port)]
     log_path = os.path.join(folder, "server.log")
     with open(log_path, "w") as log:
         process = start(command, env=env, stdout=subprocess.PIPE, stderr=log,
                         text=True)
         line = process.stdout.readline()
-        if "serving on" not in line:
+        if ready not in line:
             process.kill()
             with open(log_path) as written:
                 raise RuntimeError(f"server did not start: {line} {written.read()}")
         try:
-            yield {"url": line.strip().split()[-1], "port": port, "process": process,
+            url = next(word for word in line.split() if word.startswith("http")).rstrip(",")
+            yield {"url": url, "port": port, "process": process,
                    "announce": line}
         finally:
             process.terminate()

@@ -6,7 +6,14 @@ import { installHooks } from "./hooks";
 import { readOptions, wantsHooks } from "./options";
 import "./style.css";
 
+import { isOutputPage, startControl, startOutput } from "./show-start";
+
 const options = readOptions(location.search);
-const app = new App(options);
-const ready = app.start();
-if (wantsHooks(options)) installHooks(app, ready);
+if (isOutputPage(location.pathname)) {
+  void startOutput(options, wantsHooks(options) ? installHooks : null);
+} else {
+  const app = new App(options);
+  const ready = app.start();
+  if (wantsHooks(options)) installHooks(app, ready);
+  startControl(app);
+}

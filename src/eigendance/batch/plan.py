@@ -15,17 +15,18 @@ import glob
 import os
 from dataclasses import dataclass, field
 
-try:
-    import tomllib
-except ModuleNotFoundError:  # Python 3.10: the same parser, as a package
-    import tomli as tomllib
-
 from eigendance import checks
 from eigendance.batch.names import unique_parts
 from eigendance.batch.record import recorded_files
 from eigendance.errors import InputError, one_line
 from eigendance.export.video import check_size, parse_size
-from eigendance.files import AUDIO_SUFFIXES, MESH_SUFFIXES, check_readable, suffix_of
+from eigendance.files import (
+    AUDIO_SUFFIXES,
+    MESH_SUFFIXES,
+    check_readable,
+    read_toml,
+    suffix_of,
+)
 from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
 from eigendance.inputs.mapping import read_mapping, shared_k
 from eigendance.inputs.model import model_kind
@@ -189,17 +190,7 @@ def read_plan(path: str | os.PathLike) -> Plan:
     Plan; InputError naming the file and the key for anything wrong.
     """
     path = os.fspath(path)
-    check_readable(path)
-    try:
-        with open(path, "rb") as file:
-            document = tomllib.load(file)
-    except tomllib.TOMLDecodeError as error:
-        raise InputError(f"{path}: not a TOML plan ({one_line(error)})") from None
-    except RecursionError:
-        raise InputError(f"{path}: not a TOML plan (nested too deeply)") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"{path}: cannot read ({one_line(error)})") from None
-    reader = _Reader(path, document)
+    reader = _Reader(path, read_toml(path, "TOML plan"))
     return reader.plan()
 
 

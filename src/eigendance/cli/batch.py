@@ -13,6 +13,7 @@ from eigendance.batch.engines import LocalEngine, RayEngine
 from eigendance.batch.plan import EXAMPLE, read_plan
 from eigendance.batch.run import run_plan
 from eigendance.cli.options import number, progress_bar
+from eigendance.cli.presets import add_preset_options, preset_items
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.cache import cache_folder
 
@@ -47,6 +48,7 @@ def add_batch(parser):
                         help="list the jobs and what each would make; make nothing")
     parser.add_argument("--force", action="store_true",
                         help="overwrite files in the way of outputs that no batch wrote")
+    add_preset_options(parser)
 
 
 class Console:
@@ -223,6 +225,7 @@ def run_batch(args) -> None:
     args : the parsed command line.
     """
     plan = read_plan(args.plan)
+    plan.items = preset_items(args) or plan.items
     console = Console(args.verbose)
     try:
         outcome = run_plan(plan, engine_factory(args, plan), console, args.force, args.dry_run)

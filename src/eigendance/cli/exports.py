@@ -23,6 +23,7 @@ from eigendance.cli.options import (
     progress_bar,
     say_note,
 )
+from eigendance.cli.presets import add_preset_options, fitted, mapping_option
 from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
 from eigendance.export.dance import Dance, HarmonicDance, rig_dance
@@ -72,6 +73,7 @@ def add_dance_inputs(parser, audio_help: str) -> None:
                       help="a glTF with a skin moves by its mesh's harmonics, not its skeleton")
     add_harmonics(parser)
     add_fps(parser, 240)
+    add_preset_options(parser)
     add_palette_options(parser)
     parser.add_argument("--stiffness", type=STIFFNESS, default=1.0,
                         help="multiply every joint stiffness of a rig (default 1)")
@@ -140,6 +142,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
             raise InputError(f"{skeleton.name}: the rig has no vibration mode (no elastic "
                              "joint); nothing to move")
         spectrogram = read_song(args.audio, mapping.bands if mapping else 64)
+        mapping = fitted(args, mapping, mode_count=rig.model.n_modes)
         mapping = rig.mapping(spectrogram, mapping,
                               selected=parse_modes(args.modes, rig.model.n_modes),
                               amplitude=args.amplitude, time_scale=args.time_scale,
@@ -151,7 +154,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
             raise InputError("--surface ripples a rig's skin; a mesh ripples in its "
                              "harmonics anyway (use --mapping)")
         basis, spectrogram = harmonic_inputs(args, mapping)
-        mapping = mapping or strongest_item(basis, spectrogram)
+        mapping = fitted(args, mapping, basis) or strongest_item(basis, spectrogram)
         dance = HarmonicDance(basis, spectrogram, mapping, song_of(args), name)
     dance = dance.window(args.start, args.duration)
     say_note(args.output, dance.note)
@@ -201,7 +204,7 @@ def run_export(args) -> None:
     """
     format = format_of(args.output, args.format)
     began = time.perf_counter()
-    mapping = read_mapping(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     clipped = args.start > 0 or args.duration is not None
     inputs = input_files(args)
     for path in companion_paths(args.output, format, song_of(args), clipped).values():
@@ -284,7 +287,7 @@ def run_render(args) -> None:
         raise InputError("breeding parents were given without a gallery size",
                          remedy={"gallery": DEFAULT_GALLERY})
     began = time.perf_counter()
-    mapping = read_mapping(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     if args.gallery is not None:
         dances, looks = gallery_dances(args, mapping)
     else:

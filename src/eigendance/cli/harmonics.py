@@ -23,6 +23,7 @@ from eigendance.cli.options import (
     progress_bar,
     say_note,
 )
+from eigendance.cli.presets import add_preset_options, fitted, mapping_option
 from eigendance.cli.rigs import run_animate_rig
 from eigendance.errors import InputError
 from eigendance.harmonic.eigensolver import SOLVERS
@@ -234,6 +235,7 @@ def add_animate(parser):
                         help="a glTF with a skin moves by its mesh's harmonics, not its skeleton")
     add_fps(parser)
     add_harmonics(parser, "when MODEL is a mesh")
+    add_preset_options(parser)
     add_window_options(parser)
     add_palette_options(parser)
     add_rig_options(parser)
@@ -253,13 +255,12 @@ def run_animate(args) -> None:
         return
     refuse_overwrite(args.output, args.force)
     began = time.perf_counter()
-    mapping = read_mapping(args.mapping) if args.mapping else None
+    mapping = mapping_option(args)
     spectrogram = read_song(args.audio, bands=mapping.bands if mapping else 64)
     window = Window.of(args.start, args.duration, spectrogram.duration, args.audio)
     say_note(args.output, window.note)
     basis = basis_for(args.mesh, mapping, args.k, args.construction, args.output)
-    if mapping is None:
-        mapping = strongest_item(basis, spectrogram)
+    mapping = fitted(args, mapping, basis) or strongest_item(basis, spectrogram)
     frames, update = progress_bar(None, "frames", unit="frame")
     with frames:
         count = write_animation(args.output, basis, spectrogram, mapping, args.fps,

@@ -30,6 +30,7 @@ from eigendance.cli.harmonics import (
 )
 from eigendance.cli.options import check_outputs
 from eigendance.cli.rigs import add_animate_rig, add_modes, run_animate_rig, run_modes
+from eigendance.cli.show import add_show, run_show
 from eigendance.cli.web import add_demo, add_serve, run_demo, run_serve
 from eigendance.errors import EigendanceError, InputError, ModelWarning, one_line
 from eigendance.writes import all_or_nothing
@@ -66,6 +67,8 @@ COMMANDS = {
     "export": (add_export, run_export,
                "write the dance for other tools: glTF (.glb), point cache (.pc2 + .obj), USD"),
     "render": (add_render, run_render, "render the dance with its song into a video (.mp4)"),
+    "show": (add_show, run_show, "play a set list on stage: cues change on the downbeat, an "
+                                 "output page for the projector (/show), MIDI, OSC, Link"),
     "batch": (add_batch, run_batch, "make many songs × many models from a plan (TOML), on "
                                     "local processes or Ray; resumable"),
     "blender-addon": (add_blender_addon, run_blender_addon,
@@ -94,7 +97,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 # Commands that run on and write as they go (a server's cache, a batch's record and outputs):
 # not all-or-nothing as a whole.
-SERVING = ("serve", "demo", "batch")
+SERVING = ("serve", "demo", "show", "batch")
 
 # How a remedy ({parameter: value}) reads on the command line.
 FLAGS = {"k": "-k"}

@@ -7,6 +7,7 @@ from dataclasses import replace
 
 from eigendance.cli.options import number
 from eigendance.errors import InputError
+from eigendance.inputs.mapping import read_mapping
 from eigendance.inputs.song import read_song
 from eigendance.modal.rig import Rig
 from eigendance.modal.surface import SURFACE_K, SurfaceDance
@@ -62,7 +63,7 @@ def surface_of(args, rig: Rig, spectrogram: Spectrogram | None,
     elif args.surface == AUTO:
         mapping = strongest_item(harmonics.basis, spectrogram)
     else:
-        mapping = Mapping.load(args.surface)
+        mapping = read_mapping(args.surface)
     if mapping.bands != spectrogram.bands:
         spectrogram = read_song(args.audio, mapping.bands)
     mapping.gain *= args.surface_gain

@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 
 from eigendance.cli.options import HARMONICS, PORT, add_construction, number
+from eigendance.cli.presets import add_presets_folder, presets_folder
 from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.inputs.mapping import read_mapping, shared_k
 from eigendance.inputs.model import classify
@@ -19,6 +20,8 @@ from eigendance.server.serve import (
     run,
     terminal_progress,
 )
+from eigendance.show.link import MODES
+from eigendance.show.session import show_session
 
 
 def add_server_options(parser, k_help: str, k_help2: str = "") -> None:
@@ -44,6 +47,7 @@ def add_server_options(parser, k_help: str, k_help2: str = "") -> None:
                         help="memory the library's meshes, songs and rigs may keep, MiB; the "
                              "least recently used are removed beyond it (default 4096)")
     add_construction(parser)
+    add_show_options(parser)
 
 
 def add_serve(parser):
@@ -92,7 +96,7 @@ def run_demo(args) -> None:
     serve(args, demo_paths, "eigendance demo: open {url} in a browser")
 
 
-def serve(args, paths, announce: str) -> None:
+def serve(args, paths, announce: str, setlist=None) -> None:
     """Listen, fill a temporary library with the files of paths() and serve it until interrupted;
     the library's folder is removed at the end (docs/design.md#server).
 
@@ -101,6 +105,7 @@ def serve(args, paths, announce: str) -> None:
     args : the parsed command line (--host, --port, -k, the limits).
     paths : () → the files to put in the library.
     announce : the line printed once it serves, with {url}.
+    setlist : the set of `eigendance show` (None: no cues; OSC and /show still work).
     """
     listening = listen(args.host, args.port)
     port = listening.getsockname()[1]
@@ -117,8 +122,11 @@ def serve(args, paths, announce: str) -> None:
         terminal_progress(library)
         for path in files:
             library.add_path(path)
-        run(create_app(library, args.host, port), listening, on_exit=library.stop,
-            announce=announce.format(url=url(args.host, port)))
+        with show_session(library, presets_folder(args), setlist, args.osc, args.osc_host,
+                          args.osc_out, args.link) as (presets, show):
+            app = create_app(library, args.host, port, presets, show)
+            run(app, listening, on_exit=library.stop,
+                announce=announce.format(url=url(args.host, port)))
 
 
 def url(host: str, port: int) -> str:
@@ -136,3 +144,25 @@ def url(host: str, port: int) -> str:
     shown = "127.0.0.1" if host in ("0.0.0.0", "") else host
     shown = f"[{shown}]" if ":" in shown else shown
     return f"http://{shown}:{port}/"
+
+
+def add_show_options(parser) -> None:
+    """OSC in and out, Ableton Link and the presets folder, for `serve`, `demo` and `show`.
+
+    Parameters
+    ----------
+    parser : the command's parser.
+    """
+    parser.add_argument("--osc", type=PORT, metavar="PORT", default=None,
+                        help="listen for OSC control messages on this UDP port "
+                             "(/eigendance/gain f, /preset s, /next, /prev, /tap, /play, /stop, "
+                             "/control/ID f)")
+    parser.add_argument("--osc-host", default="127.0.0.1",
+                        help="address OSC listens on (default 127.0.0.1: this machine only)")
+    parser.add_argument("--osc-out", metavar="HOST:PORT", default=None,
+                        help="send what the dance hears as OSC: /eigendance/beat, /downbeat, "
+                             "/onset, /tempo, /bands")
+    parser.add_argument("--link", choices=MODES, default=None,
+                        help="join an Ableton Link session: follow its tempo, or lead it "
+                             "(needs pip install 'eigendance[link]')")
+    add_presets_folder(parser)

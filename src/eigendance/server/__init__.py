@@ -22,5 +22,10 @@ Routes:
 - ``POST /api/export`` ``{mesh | rig, song, mapping, format, start, duration, size?, fps?}`` —
   part of a song as MP4 or glb, rendered in a job (`export_route`); ``GET /api/exports/{id}``
   downloads it.
+- ``GET /api/presets`` (?q=, ?favourites=1), ``POST /api/presets`` ``{name, mapping | palette,
+  tags, favourite, thumbnail, mesh, replace}``, ``GET``/``PATCH``/``DELETE
+  /api/presets/{name}``, ``…/thumbnail.png``, ``…/file`` — presets (`preset_routes`).
+- ``GET /api/show/state``, ``/api/show/events``; ``POST /api/show/control`` ``{action,
+  value}``, ``/api/show/clock`` — show mode (`show_routes`); ``GET /show`` — the output page.
 - ``/`` — the built front end (package folder ``static/``, built from ``web/`` by ``make``).
 """

@@ -24,10 +24,20 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from eigendance.errors import InputError, disk_full, one_line
+from eigendance.presets.store import PresetStore, default_folder
 from eigendance.server.export_route import download_export, export_clip
 from eigendance.server.guard import DEFAULT_HOST, Guard
 from eigendance.server.library import Library
 from eigendance.server.lookup import library_of
+from eigendance.server.preset_routes import (
+    change_preset,
+    delete_preset,
+    export_preset,
+    get_preset,
+    list_presets,
+    preset_thumbnail,
+    save_preset,
+)
 from eigendance.server.rig_routes import (
     get_rig,
     get_rig_bundle,
@@ -57,7 +67,15 @@ from eigendance.server.routes import (
     take,
     upload,
 )
+from eigendance.server.show_routes import (
+    show_clock,
+    show_control,
+    show_events,
+    show_page,
+    show_state,
+)
 from eigendance.server.surface_routes import get_rig_surface, rig_surface_gallery
+from eigendance.show.state import ShowState
 
 
 def static_folder() -> str | None:
@@ -200,11 +218,23 @@ API_ROUTES = [
     Route("/api/rig-surface-gallery", rig_surface_gallery, methods=["POST"]),
     Route("/api/export", export_clip, methods=["POST"]),
     Route("/api/exports/{id}", download_export),
+    Route("/api/presets", list_presets),
+    Route("/api/presets", save_preset, methods=["POST"]),
+    Route("/api/presets/{name}", get_preset),
+    Route("/api/presets/{name}", change_preset, methods=["PATCH"]),
+    Route("/api/presets/{name}", delete_preset, methods=["DELETE"]),
+    Route("/api/presets/{name}/thumbnail.png", preset_thumbnail),
+    Route("/api/presets/{name}/file", export_preset),
+    Route("/api/show/state", show_state),
+    Route("/api/show/events", show_events),
+    Route("/api/show/control", show_control, methods=["POST"]),
+    Route("/api/show/clock", show_clock, methods=["POST"]),
     Route("/api/{rest:path}", api_missing, methods=["GET", "POST", "PUT", "DELETE"]),
 ]
 
 
-def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = None) -> Starlette:
+def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = None,
+               presets: PresetStore | None = None, show: ShowState | None = None) -> Starlette:
     """The web app serving `library` (see `eigendance.server` for the routes).
 
     Parameters
@@ -212,6 +242,8 @@ def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = No
     library : the items it serves.
     host : the --host it listens on (the Host headers it answers, `server.guard`).
     port : the port it listens on (None: any port).
+    presets : the presets folder (default: the user's, `presets.default_folder`).
+    show : the show's state (default: no set list; the page can still drive /show).
 
     Returns
     -------
@@ -220,10 +252,13 @@ def create_app(library: Library, host: str = DEFAULT_HOST, port: int | None = No
     static = static_folder()
     front_end = Mount("/", StaticFiles(directory=static, html=True)) if static else \
         Route("/", no_front_end)
-    app = Starlette(routes=[*API_ROUTES, front_end],
+    app = Starlette(routes=[*API_ROUTES, Route("/show", show_page), front_end],
                     middleware=[Middleware(Guard, host=host, port=port, scrub=library.public)],
                     exception_handlers={HTTPException: on_http_error, InputError: on_input_error,
                                         OSError: on_os_error})
     app.state.library = library
     app.state.uploads = asyncio.Semaphore(UPLOADS_AT_ONCE)
+    app.state.presets = presets or PresetStore(default_folder())
+    app.state.show = show or ShowState()
+    app.state.static = static
     return app

@@ -1,0 +1,142 @@
+// The control page's show panel (docs/design.md#show): the set's cues with the current and the
+// next, next / previous, loop, blackout, tap tempo, gain and fade, preset slots 1–9. Every
+// control goes to the server (`POST api/show/control`), which the output page (/show, here or
+// in another browser) follows; the panel follows the server too.
+import * as api from "./api";
+import type { ShowState } from "./show-timing";
+
+/** The performer's keys, listed in the help (they leave the page's own keys alone). */
+export const SHOW_KEYS: [string, string, string][] = [
+  ["PageDown", ".", "next cue"], ["PageUp", ",", "previous cue"],
+  ["1", "9", "preset slots 1–9"], ["T", "", "tap tempo"], ["K", "", "blackout"],
+  ["L", "", "loop this cue"], ["O", "", "the output page (/show)"],
+];
+
+export async function control(action: string, value?: unknown): Promise<ShowState | null> {
+  try {
+    return await api.postJSON<ShowState>("api/show/control", { action, value });
+  } catch (error) {
+    console.warn(`eigendance show: ${action}: ${String(error)}`);
+    return null;
+  }
+}
+
+export class ShowPanel {
+  readonly element: HTMLElement;
+  state: ShowState | null = null;
+  /** the show's preset changed (a slot key, OSC, another page) */
+  onPreset: (name: string | null) => void = () => {};
+
+  constructor() {
+    this.element = document.createElement("aside");
+    this.element.id = "show-panel";
+    this.element.hidden = true;
+    this.element.innerHTML = `
+      <div class="row"><strong id="show-set">show</strong>
+        <a id="show-output" href="show" target="eigendance-show" title="the output page for the projector (O)">output ↗</a></div>
+      <ol id="show-cues"></ol>
+      <div class="row">
+        <button id="show-prev" title="previous cue (PageUp or ,)">◀ cue</button>
+        <button id="show-next" title="next cue, on the next downbeat (PageDown or .)">cue ▶</button>
+        <button id="show-loop-cue" title="stay on this cue when it ends (L)">loop cue</button>
+        <button id="show-loop-set" title="after the last cue, the first again">loop set</button>
+      </div>
+      <div class="row">
+        <button id="show-play" title="play / stop the show">▶ play</button>
+        <button id="show-blackout" title="black output (K)">blackout</button>
+        <button id="show-tap" title="tap the tempo (T)">tap</button><span id="show-tempo"></span>
+      </div>
+      <div class="row"><label title="the show's gain: how far every dance moves">gain
+        <input id="show-gain" type="range" min="0" max="4" step="0.01" value="1"></label>
+        <label title="crossfade of a change, beats">fade
+        <input id="show-fade" type="number" min="0" max="64" step="1" value="4" style="width:4em"></label></div>`;
+    document.body.append(this.element);
+    this.wire();
+  }
+
+  /** Follow the server's state (events), and show the panel when the server has a set. */
+  async start(): Promise<void> {
+    try {
+      this.render(await api.getJSON<ShowState>("api/show/state"));
+    } catch { return; /* an older server: no show */ }
+    const events = new EventSource("api/show/events");
+    events.onmessage = (e) => this.render(JSON.parse(e.data) as ShowState);
+    window.addEventListener("keydown", (e) => this.key(e));
+  }
+
+  render(state: ShowState): void {
+    const before = this.state;
+    this.state = state;
+    if (before && before.preset !== state.preset) this.onPreset(state.preset);
+    this.element.hidden = state.set === null;
+    const byId = (id: string) => document.getElementById(id)!;
+    byId("show-set").textContent = state.set ?? "show";
+    const list = byId("show-cues");
+    list.replaceChildren(...state.cues.map((cue, index) => {
+      const item = document.createElement("li");
+      const length = cue.until === "bars" ? `${cue.bars} bars` : cue.until === "section"
+        ? "to the next section" : "until told";
+      item.textContent = `${cue.name} · ${cue.preset ?? "first tile"} · ${length}${cue.loop ? " · loop" : ""}`;
+      item.classList.toggle("current", index === state.cue);
+      item.classList.toggle("next", index === state.next);
+      item.addEventListener("click", () => void control("cue", index));
+      return item;
+    }));
+    byId("show-loop-cue").classList.toggle("active", state.loop_cue === true);
+    byId("show-loop-set").classList.toggle("active", state.loop_set);
+    byId("show-blackout").classList.toggle("active", state.blackout);
+    byId("show-play").textContent = state.playing ? "■ stop" : "▶ play";
+    byId("show-tempo").textContent = state.tempo ? `${state.tempo.toFixed(1)} BPM` : "";
+    const gain = byId("show-gain") as HTMLInputElement;
+    if (document.activeElement !== gain) gain.value = String(state.gain);
+    const fade = byId("show-fade") as HTMLInputElement;
+    if (document.activeElement !== fade) fade.value = String(state.fade_beats);
+  }
+
+  private wire(): void {
+    const click = (id: string, action: () => void) =>
+      this.element.querySelector(`#${id}`)!.addEventListener("click", action);
+    click("show-prev", () => void control("prev"));
+    click("show-next", () => void control("next"));
+    click("show-loop-cue", () => void control("loop_cue"));
+    click("show-loop-set", () => void control("loop_set"));
+    click("show-blackout", () => void control("blackout"));
+    click("show-tap", () => void control("tap"));
+    click("show-play", () => void control(this.state?.playing ? "stop" : "play"));
+    const gain = this.element.querySelector<HTMLInputElement>("#show-gain")!;
+    gain.addEventListener("input", () => void control("gain", Number(gain.value)));
+    const fade = this.element.querySelector<HTMLInputElement>("#show-fade")!;
+    fade.addEventListener("change", () => void control("fade", Number(fade.value)));
+  }
+
+  /** The performer's keys (not while typing, not with a modifier). */
+  private key(e: KeyboardEvent): void {
+    const target = e.target as HTMLElement;
+    if (e.ctrlKey || e.metaKey || e.altKey || target instanceof HTMLTextAreaElement
+      || (target instanceof HTMLInputElement && !["range", "checkbox", "button"].includes(target.type))) {
+      return;
+    }
+    const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
+    const actions: Record<string, () => void> = {
+      PageDown: () => void control("next"), ".": () => void control("next"),
+      PageUp: () => void control("prev"), ",": () => void control("prev"),
+      t: () => void control("tap"), k: () => void control("blackout"),
+      l: () => void control("loop_cue"), o: () => void window.open("show", "eigendance-show"),
+    };
+    const action = /^[1-9]$/.test(key) ? () => void control("slot", Number(key)) : actions[key];
+    if (!action) return;
+    e.preventDefault();
+    action();
+  }
+}
+
+/** The show's keys as rows of the help's table. */
+export function addKeysToHelp(): void {
+  const table = document.querySelector("#help table");
+  if (!table) return;
+  for (const [a, b, what] of SHOW_KEYS) {
+    const row = document.createElement("tr");
+    row.innerHTML = `<td><kbd>${a}</kbd>${b ? ` <kbd>${b}</kbd>` : ""}</td><td>${what}</td>`;
+    table.append(row);
+  }
+}
