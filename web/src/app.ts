@@ -239,13 +239,14 @@ export class App {
 
   /** What the export panel exports: the dance the player shows (null in the gallery). */
   private exportedDance() {
-    if (this.view !== "player") return null;
     const song = this.library.songId;
-    if (this.rigs.active) {
+    if (this.rigs.active) { // the rig's own views: combine selected and open reach its player
+      if (this.rigs.view !== "player") return null;
       const mapping = this.rigs.player.saved();
       return mapping && this.rigs.rig ? { kind: "rig" as const, id: this.rigs.rig.id, song,
         mapping, name: this.rigs.rig.name } : null;
     }
+    if (this.view !== "player") return null;
     const mapping = this.player.saved();
     return mapping ? { kind: "mesh" as const, id: this.library.meshId, song, mapping,
       name: this.library.meshName } : null;

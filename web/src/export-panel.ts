@@ -78,6 +78,10 @@ export class ExportPanel {
   /** Show the panel with the current position and 15 s, or hide it. */
   toggle(): void {
     const panel = $("export-panel");
+    if (panel.hidden && this.events.dance() === null) {
+      this.messages.status("open a tile in the player to export it");
+      return;
+    }
     panel.hidden = !panel.hidden;
     if (!panel.hidden) this.fill();
   }
@@ -134,7 +138,10 @@ export class ExportPanel {
         say(state.state === "queued" ? "waiting for the renderer…"
           : `${state.done} of ${state.total} frames`);
       });
-      link.href = `api/exports/${job.id}`;
+      // The file as a blob: the download keeps the page's name (the model, where, how long)
+      const file = await (await api.checked(await fetch(`api/exports/${job.id}`))).blob();
+      if (link.href.startsWith("blob:")) URL.revokeObjectURL(link.href);
+      link.href = URL.createObjectURL(file);
       link.download = clipName(dance.name, request.start, request.duration, request.format);
       link.textContent = `download ${link.download}`;
       link.hidden = false;
