@@ -69,8 +69,12 @@ export async function gallery(mesh: string, song: string, size: number | null):
   return (await postJSON<{ mappings: Mapping[] }>("api/gallery", body)).mappings;
 }
 
-export async function breed(parents: Mapping[], size: number, seed: number): Promise<Mapping[]> {
-  return (await postJSON<{ mappings: Mapping[] }>("api/breed", { parents, size, seed })).mappings;
+/** Children of `parents`; `on` (the model and song they dance to) bounds them: none grows
+ * past 1.3× the model's size over the song (docs/design.md#breeding). */
+export async function breed(parents: Mapping[], size: number, seed: number,
+  on: { mesh?: string; rig?: string; song: string } | null = null): Promise<Mapping[]> {
+  return (await postJSON<{ mappings: Mapping[] }>("api/breed",
+    { parents, size, seed, ...(on ?? {}) })).mappings;
 }
 
 /** Remove an item from the server's library (not its file on disk): the ids removed with it

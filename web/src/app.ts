@@ -70,6 +70,7 @@ export class App {
     const status = (text: string) => messages.status(text);
     const guard = (what: string, task: () => Promise<void>) => messages.guard(what, task);
     this.gallery = new GalleryView(this.motion, { status, requestDraw, guard,
+      songId: () => this.library.songId,
       open: (mapping) => this.open(mapping, `tile of generation ${this.gallery.generation + 1}`) },
     null);
     this.player = new PlayerView(this.motion, { requestDraw,

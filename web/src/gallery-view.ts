@@ -23,6 +23,8 @@ export interface GalleryEvents {
   requestDraw(): void;
   /** Run a request; a failure is shown as an error `what: message` (never thrown). */
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the song the tiles dance to (children are bounded on it) */
+  songId(): string;
 }
 
 /** "harmonics 4–7", "harmonic 1", or "still" for the tile label. */
@@ -105,7 +107,8 @@ export class GalleryView {
     if (!parents.length) return;
     this.events.status("breeding…");
     const from = this.history.current;
-    const children = await api.breed(parents, this.size ?? parents.length, seed);
+    const children = await api.breed(parents, this.size ?? parents.length, seed,
+      { mesh: this.meshId, song: this.events.songId() });
     this.history.add(children, from);
     this.setGeneration(this.history.current);
     this.events.status("");

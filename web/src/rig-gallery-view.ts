@@ -37,6 +37,8 @@ export interface RigGalleryEvents {
   status(text: string): void;
   requestDraw(): void;
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the song the dances are calibrated on (children are bounded on it) */
+  songId(): string;
   /** play the selected modes (mode gallery) or this dance in the player */
   combine(modes: number[]): void;
   open(mapping: Mapping, source: string): void;
@@ -161,7 +163,8 @@ export class RigGalleryView {
     const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dances()[i]);
     if (!parents.length) return;
     this.events.status("breeding…");
-    const children = await api.breed(parents, this.dances().length, seed);
+    const children = await api.breed(parents, this.dances().length, seed,
+      { rig: this.rig!.id, song: this.events.songId() });
     this.generations.push(children);
     this.showGeneration(this.generations.length - 1);
     this.events.status("");

@@ -34,7 +34,7 @@ from eigendance.files import suffix_of
 from eigendance.modal.motion import parse_modes
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS, load_rig
-from eigendance.music.breeding import breed
+from eigendance.music.breeding import bounded_children, breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
     check_gallery_size,
@@ -308,7 +308,8 @@ def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
     items = breed([Mapping.load(path) for path in args.breed], size, args.seed) \
         if args.breed else None
     basis, spectrogram = harmonic_inputs(args, items[0].bands if items else 64)
-    items = items or initial_gallery(basis, spectrogram, size)
+    items = bounded_children(basis, spectrogram, items) if items else \
+        initial_gallery(basis, spectrogram, size)
     name = os.path.splitext(os.path.basename(args.output))[0]
     dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(
         args.start, args.duration) for item in items]

@@ -27,7 +27,7 @@ from eigendance.harmonic.eigensolver import SOLVERS
 from eigendance.harmonic.laplacian import LAPLACIANS
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import write_animation
-from eigendance.music.breeding import breed
+from eigendance.music.breeding import bounded_children, breed
 from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
@@ -166,15 +166,12 @@ def run_gallery(args) -> None:
     paths = [os.path.join(args.output, f"{i}.json") for i in range(size)]
     for path in paths:
         refuse_overwrite(path, args.force)
-    basis = spectrogram = None
-    if args.breed:
-        parents = [Mapping.load(path) for path in args.breed]
-        items = breed(parents, size, args.seed)
-    if not args.breed or args.verbose:
-        basis = basis_from(args.basis, args.k)
-        spectrogram = spectrogram_from(args.spectrogram)
-    if not args.breed:
-        items = initial_gallery(basis, spectrogram, size)
+    parents = [Mapping.load(path) for path in args.breed or []]
+    basis = basis_from(args.basis, args.k)
+    spectrogram = spectrogram_from(args.spectrogram)
+    # Children are bounded on the model and song, as the first generation is calibrated on them.
+    items = bounded_children(basis, spectrogram, breed(parents, size, args.seed)) if parents \
+        else initial_gallery(basis, spectrogram, size)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"
