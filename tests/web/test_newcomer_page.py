@@ -6,10 +6,10 @@ Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 
 from __future__ import annotations
 
-import io
 import json
 import urllib.request
 
+import numpy as np
 import pygltflib
 import pytest
 from web_helpers import open_app
@@ -57,5 +57,40 @@ def test_combined_modes_of_a_rig_export_as_a_glb(browser, live_server):
         gltf = pygltflib.GLTF2.load_from_bytes(open(arrived.path(), "rb").read())
         assert gltf.animations and gltf.animations[0].channels
         assert not page.errors, page.errors
+    finally:
+        page.close()
+
+
+EXTENT = """([tile, t]) => {
+  const p = window.eigendance.cpuPositions(tile, t);
+  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < p.length; i++) {
+    low[i % 3] = Math.min(low[i % 3], p[i]); high[i % 3] = Math.max(high[i % 3], p[i]);
+  }
+  return Math.hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+}"""
+
+
+def test_children_bred_in_the_page_stay_within_the_box(browser, live_server):
+    """Item 2: three calm tiles bred (seeds 5 and 7) give children whose drawn positions stay within
+    1.3× the model's bounding box over the song (read back at 4 frames a second)."""
+    page = open_app(browser, live_server["url"], "?test&size=8&path=cpu")
+    try:
+        rest = page.evaluate(EXTENT, [0, 0])  # tile 1 at 0:00, silent: the rest shape
+        duration = page.evaluate("window.eigendance.info().duration")
+        worst = 1.0
+        for seed in (5, 7):  # 1.46× and 1.43× as bred (k = 24, the demo song)
+            for tile in (5, 6, 7):
+                page.locator("#tiles > *").nth(tile).click(position={"x": 5, "y": 5})
+            assert page.evaluate("window.eigendance.info().selected") == [5, 6, 7]
+            page.evaluate(f"window.eigendance.breed({seed})")  # as *breed selected*, seeded
+            assert page.evaluate("window.eigendance.info().generation") > 0
+            assert page.evaluate("window.eigendance.info().error") is None
+            for tile in range(page.evaluate("window.eigendance.info().tiles")):
+                for t in np.arange(0.0, duration, 0.25):
+                    worst = max(worst, page.evaluate(EXTENT, [tile, float(t)]) / rest)
+            page.evaluate("window.eigendance.generation(0)")
+        print(f"children in the page grow to {worst:.2f}× the model's box")
+        assert worst <= 1.3
     finally:
         page.close()
