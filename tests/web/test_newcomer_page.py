@@ -7,12 +7,15 @@ Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 from __future__ import annotations
 
 import json
+import os
 import urllib.request
 
 import numpy as np
 import pygltflib
 import pytest
-from web_helpers import open_app
+from web_helpers import CAT, open_app, running_server
+
+from helpers import fixture_path
 
 pytestmark = pytest.mark.web
 
@@ -94,3 +97,31 @@ def test_children_bred_in_the_page_stay_within_the_box(browser, live_server):
         assert worst <= 1.3
     finally:
         page.close()
+
+
+def test_x_while_a_model_computes_removes_that_model(browser, web_files, tmp_path):
+    """Item 3: while a dropped model computes its harmonics the menu names it, and ✕ removes
+    it (said as a removal, not as a failure to add it); the model on screen stays."""
+    bunny = "/work/shared/data/meshes/bunny_stanford.obj"
+    if not os.path.exists(bunny):
+        bunny = fixture_path("meshes", "fertility.off")
+    with running_server([CAT, web_files["song"], "-k", "200"], tmp_path,
+                        tmp_path / "cache") as server:
+        page = open_app(browser, server["url"], "?test&size=2")
+        try:
+            page.set_input_files("#upload", bunny)
+            page.wait_for_function("document.getElementById('loading-text').textContent"
+                                   ".includes('computing its harmonics')", timeout=60_000)
+            name = os.path.basename(bunny)
+            assert page.locator("#mesh option:checked").text_content() == name
+            page.click("#remove-mesh")
+            page.wait_for_function("document.getElementById('status').textContent"
+                                   ".includes('removed from the library')", timeout=60_000)
+            page.wait_for_function("document.getElementById('loading').hidden", timeout=60_000)
+            page.wait_for_timeout(500)
+            assert page.locator("#error").is_hidden(), page.locator("#error-text").text_content()
+            assert [m["name"] for m in library(server["url"])["meshes"]] == ["cat_lowres.obj"]
+            assert page.locator("#mesh option:checked").text_content() == "cat_lowres.obj"
+            assert not page.errors, page.errors
+        finally:
+            page.close()

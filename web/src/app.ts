@@ -197,7 +197,7 @@ export class App {
   /** A new current mesh with its own history (a first gallery when it has none), and the
    * faster deformation path for it. Returns the gallery's failure (already shown), or null. */
   async showMesh(meshId: string): Promise<string | null> {
-    await this.library.loadMesh(meshId);
+    if (!await this.library.loadMesh(meshId)) return "removed while it was computed";
     if (this.rigs.active) { this.rigs.leave(); this.setView(this.view); }
     const failure = this.gallery.showMesh(meshId) ? null : await this.newGallery();
     if (this.gallery.size !== null) this.fillSizeMenu(this.gallery.tileCount || this.gallery.size);

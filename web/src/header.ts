@@ -91,6 +91,7 @@ async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void
   const id = rig ? menu.value.slice(4) : menu.value;
   const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
   await app.messages.guard(`Could not remove ${name}`, async () => {
+    if (kind === "mesh") app.library.drop(id); // its harmonics may be computing
     await api.remove(rig ? "rig" : kind, id);
     const library = await app.library.refresh();
     if (rig || (kind === "mesh" && id === app.library.meshId)) {

@@ -15,6 +15,10 @@ const HALF_ABOVE_BYTES = 128 * 2 ** 20;
 export class Library {
   meshId = "";
   songId = "";
+  /** the model being computed or loaded (the menu names it meanwhile), or null */
+  loading: string | null = null;
+  /** the model being loaded was removed on purpose (✕): its load ends quietly */
+  private dropped: string | null = null;
   private items: api.Library | null = null;
   /** Called once a new basis is in the motion and the viewer (the views re-prepare mappings). */
   onBasis: () => void = () => {};
@@ -38,7 +42,7 @@ export class Library {
     this.items = items;
     const models = $<HTMLSelectElement>("mesh");
     const shown = models.value; // a rig, while one is on screen
-    fillSelect(models, items.meshes, this.meshId);
+    fillSelect(models, items.meshes, this.loading ?? this.meshId);
     addRigs(models, items.rigs ?? []);
     if ([...models.options].some((option) => option.value === shown)) models.value = shown;
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
@@ -59,10 +63,16 @@ export class Library {
     return items;
   }
 
-  /** Make `meshId` current: wait for its basis job, download the basis, hand it over. */
-  async loadMesh(meshId: string): Promise<void> {
+  /** The model being loaded is removed (✕ while it computes): its load ends without error. */
+  drop(meshId: string): void { if (meshId === this.loading) this.dropped = meshId; }
+
+  /** Make `meshId` current: wait for its basis job, download the basis, hand it over. False
+   * when it was removed (`drop`) while it loaded: the model on screen stays. */
+  async loadMesh(meshId: string): Promise<boolean> {
     const mesh = this.items?.meshes.find((m) => m.id === meshId);
     if (!mesh) throw new Error(`the server has no model with id ${meshId}`);
+    this.loading = meshId;
+    $<HTMLSelectElement>("mesh").value = meshId; // the menu (and its ✕) names what computes
     try {
       if (!mesh.ready && mesh.job) {
         this.busy(`${mesh.name}: computing its harmonics…`, null);
@@ -86,7 +96,12 @@ export class Library {
       this.meshId = meshId;
       $<HTMLSelectElement>("mesh").value = meshId;
       this.onBasis();
+      return true;
+    } catch (error) {
+      if (this.dropped === meshId) return false;
+      throw error;
     } finally {
+      this.loading = this.dropped = null;
       $<HTMLSelectElement>("mesh").value = this.meshId; // the model on screen, if this one failed
       this.busy(null);
     }
