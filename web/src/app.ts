@@ -70,15 +70,15 @@ export class App {
     const status = (text: string) => messages.status(text);
     const guard = (what: string, task: () => Promise<void>) => messages.guard(what, task);
     this.gallery = new GalleryView(this.motion, { status, requestDraw, guard,
-      songId: () => this.library.songId,
+      songId: () => this.library.songId, modelName: () => this.library.meshName,
       open: (mapping) => this.open(mapping, `tile of generation ${this.gallery.generation + 1}`) },
     null);
     this.player = new PlayerView(this.motion, { requestDraw,
-      upload: (file) => void this.files.handle([file]),
+      upload: (file) => void this.files.handle([file]), modelName: () => this.library.meshName,
       harmonicScale: (index) => this.viewer.deformer?.harmonicScale(index) ?? 1 });
     this.recorder = new Recorder(this.transport,
       [$<HTMLButtonElement>("record"), $<HTMLButtonElement>("rig-record")], () => this.play(),
-      () => ({ viewer: this.shownViewer(),
+      () => ({ viewer: this.shownViewer(), name: this.modelName(),
         element: $(this.rigs.active ? "rig-player-area" : "player-area") }));
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => messages.loading(text, fraction), (text) => messages.error(text));
@@ -156,6 +156,11 @@ export class App {
   openRig(rigId: string): Promise<string | null> {
     this.frameRate.hideNotice(); // the harmonics' gallery leaves the screen
     return this.messages.guard("Could not show this rig", async () => {
+      if (!this.started) { // a library with a song and no model: a rig chosen in the menu
+        const library = await this.library.refresh();
+        if (library.songs.length) await this.library.loadSong(this.options.song ?? library.songs[0].id);
+        this.started = library.songs.length > 0;
+      }
       await this.rigs.open(rigId, this.rule?.max ?? 16);
       $<HTMLSelectElement>("mesh").value = `rig:${rigId}`;
       this.view = "gallery";
@@ -234,6 +239,9 @@ export class App {
     this.viewer.requestDraw();
     if (this.rigs.active) this.rigs.viewer.requestDraw();
   }
+
+  /** The model on screen's name: a rig's, or the mesh's. */
+  modelName(): string { return this.rigs.active ? this.rigs.rig?.name ?? "" : this.library.meshName; }
 
   /** The viewer drawing now: a rig's, or the harmonics'. */
   shownViewer(): Viewer { return this.rigs.active ? this.rigs.viewer : this.viewer; }

@@ -2,7 +2,7 @@
 // and the history of generations as a tree (each mesh keeps its own), with each tile's label
 // (the harmonics it drives) and its two plots.
 import * as api from "./api";
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
 import { drivenHarmonics, settingsOf } from "./filter";
 import type { Mapping, Prepared } from "./filter";
@@ -25,6 +25,8 @@ export interface GalleryEvents {
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
   /** the song the tiles dance to (children are bounded on it) */
   songId(): string;
+  /** the model's name (download names) */
+  modelName(): string;
 }
 
 /** "harmonics 4–7", "harmonic 1", or "still" for the tile label. */
@@ -211,7 +213,8 @@ export class GalleryView {
       const target = event.target as HTMLElement;
       if (target.closest(".open")) { this.events.open(mapping); return; }
       if (target.closest(".save")) {
-        saveJSON(mapping, `mapping-g${this.history.current + 1}-${index + 1}.json`);
+        saveJSON(mapping, fileName(this.events.modelName(),
+          `g${this.history.current + 1}-${index + 1}`, "json"));
         return;
       }
       this.toggle(index);

@@ -45,6 +45,10 @@ export function wireHeader(app: App): void {
     if (transport.muted) toggleMute(app);
   });
   $("mute").addEventListener("click", () => toggleMute(app));
+  $("loop").addEventListener("click", () => toggleLoop(app));
+  for (const id of ["reset-view", "rig-reset-view"]) {
+    $(id).addEventListener("click", () => resetView(app));
+  }
   $("tab-gallery").addEventListener("click", () => app.setView("gallery"));
   $("tab-player").addEventListener("click", () => app.setView("player"));
   const sizes = $<HTMLSelectElement>("size");
@@ -67,11 +71,31 @@ export function wireHeader(app: App): void {
     "[": () => app.gallery.step(-1),
     "]": () => app.gallery.step(1),
     m: () => toggleMute(app),
+    l: () => toggleLoop(app),
+    r: () => resetView(app),
+    f: () => toggleFullScreen(),
     "?": () => messages.help($("help").hidden),
     h: () => messages.help($("help").hidden),
     Escape: () => { messages.help(false); messages.clearError(); },
     Home: () => { transport.seek(0); viewer.requestDraw(); },
   });
+}
+
+function toggleLoop(app: App): void {
+  app.transport.loop = !app.transport.loop;
+  $("loop").setAttribute("aria-pressed", String(app.transport.loop));
+  $("loop").classList.toggle("on", app.transport.loop);
+}
+
+/** The player's camera back to the whole model (after turning or zooming it). */
+function resetView(app: App): void {
+  app.shownViewer().resetPlayerCamera();
+}
+
+/** The page in full screen, or back (Esc works too). */
+function toggleFullScreen(): void {
+  if (document.fullscreenElement) void document.exitFullscreen();
+  else void document.documentElement.requestFullscreen?.().catch(() => {});
 }
 
 function toggleMute(app: App): void {

@@ -45,6 +45,10 @@ export class Library {
     fillSelect(models, items.meshes, this.loading ?? this.meshId);
     addRigs(models, items.rigs ?? []);
     if ([...models.options].some((option) => option.value === shown)) models.value = shown;
+    else if (!items.meshes.length) { // nothing on screen: the menu says so (not a rig's name)
+      models.prepend(new Option("no model: drop one, or choose a rig", "", true, true));
+      models.options[0].disabled = true;
+    }
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
     const mappings = $<HTMLSelectElement>("mapping-menu");
     const chosen = mappings.value;

@@ -4,7 +4,7 @@
 // and the gallery of dances: mode mappings calibrated on the song (`POST api/rig-gallery`) bred
 // like the harmonic gallery's (`POST api/breed`).
 import * as api from "./api";
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
 import type { Mapping } from "./filter";
@@ -241,7 +241,7 @@ export class RigGalleryView {
       const mapping = this.dances()[index];
       if (target.closest(".open")) { this.events.open(mapping, `dance ${index + 1}`); return; }
       if (target.closest(".save")) {
-        saveJSON(mapping, `rig-mapping-g${this.generation + 1}-${index + 1}.json`);
+        saveJSON(mapping, fileName(rig.name, `g${this.generation + 1}-${index + 1}`, "json"));
         return;
       }
       this.toggle(index);
