@@ -88,8 +88,10 @@ export async function remove(kind: "mesh" | "song" | "mapping" | "rig", id: stri
 }
 
 export async function upload(file: File): Promise<any> {
+  // Always as bytes: the server names what it cannot read by its suffix (a .txt would else
+  // go as text/plain, which the server's guard refuses in HTTP words).
   const response = await fetch(`api/upload?name=${encodeURIComponent(file.name)}`, {
-    method: "POST", body: file,
+    method: "POST", body: file, headers: { "Content-Type": "application/octet-stream" },
   });
   return (await checked(response)).json();
 }

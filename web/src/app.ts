@@ -229,6 +229,18 @@ export class App {
     return this.live.start(choice);
   }
 
+  /** The live input `?source=` asks for; a failure (no device, permission refused, a source
+   * that is none) is said in the banner, and the status says the song plays instead. */
+  private async startAskedSource(): Promise<void> {
+    const { source, badSource } = this.options;
+    if (badSource !== null) {
+      this.messages.error(`?source=${badSource} is not a live input (?source=mic: a microphone `
+        + "or line in; ?source=tab: a tab's audio); the song plays instead");
+    } else if (source && !await this.startLive({ kind: source })) {
+      this.messages.status("the song plays instead of the live input (see above)");
+    }
+  }
+
   /** The library's current song again, after a live input (its spectrogram and sound). */
   private async restoreSong(): Promise<void> {
     if (this.library.songId) await this.library.loadSong(this.library.songId);
@@ -312,7 +324,7 @@ export class App {
       this.messages.hint(this.options.render ? "render mode" : READY, this.transport.playing);
     }
     await this.live.listDevices();
-    if (this.options.source) await this.startLive({ kind: this.options.source });
+    await this.startAskedSource();
     return true;
   }
 
@@ -364,7 +376,7 @@ export class App {
       this.transport.playing);
     this.notice = "";
     await this.live.listDevices();
-    if (options.source) await this.startLive({ kind: options.source });
+    await this.startAskedSource();
     return true;
   }
 }

@@ -81,8 +81,10 @@ export class Library {
       if (!mesh.ready && mesh.job) {
         this.busy(`${mesh.name}: computing its harmonics…`, null);
         await api.followJob(mesh.job.id, (job) => {
-          this.busy(`${mesh.name}: computing its harmonics (${job.done} of ${job.total})`,
-            job.total ? job.done / job.total : null);
+          // No count before the solver reports one: reading the cache or setting up says 0.
+          this.busy(job.done ? `${mesh.name}: computing its harmonics (${job.done} of `
+            + `${job.total})` : `${mesh.name}: preparing its harmonics…`,
+          job.done && job.total ? job.done / job.total : null);
         });
       }
       this.busy(`${mesh.name}: loading its harmonics…`, null);

@@ -86,7 +86,9 @@ def sniff(name: str, head: bytes) -> str | None:
         return f"unknown file type '{suffix}'"
     if not head:
         return "the file is empty"
-    return None if checks[suffix] else f"the content is not a {suffix[1:].upper()} file"
+    name = suffix[1:].upper()
+    article = "an" if name[0] in "AEFHILMNORSX" and name != "FLAC" else "a"  # an MP3, a WAV
+    return None if checks[suffix] else f"the content is not {article} {name} file"
 
 
 async def get_config(request: Request):
