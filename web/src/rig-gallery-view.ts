@@ -10,7 +10,7 @@ import { drivenHarmonics } from "./filter";
 import type { Mapping } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
-import { modesLabel, playedFrequency } from "./rig-bundle";
+import { SHOWN_HZ, modesLabel, playedFrequency, shownMode } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
 import type { Shot, Look } from "./viewer";
 
@@ -196,7 +196,8 @@ export class RigGalleryView {
     if (rig) {
       const s = this.events.timeScale();
       if (this.mode === "modes") {
-        this.prepared = this.modes.map((mode) => modeTile(rig, mode, s));
+        this.prepared = this.modes.map((mode) => modeTile(rig, mode,
+          shownMode(rig.frequencies[mode], s).timeScale));
       } else {
         this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
       }
@@ -221,9 +222,10 @@ export class RigGalleryView {
     if (this.mode === "modes") {
       const mode = prepared.selected[0];
       const natural = rig.frequencies[mode];
-      label.textContent = `mode ${mode + 1} · ${playedFrequency(natural, prepared.timeScale)}`;
-      label.title = `as played: natural frequency ${natural.toFixed(3)} Hz × time scale `
-        + `${prepared.timeScale.toFixed(2)}; click to select, then combine`;
+      label.textContent = `mode ${mode + 1} · ${shownMode(natural, this.events.timeScale()).label}`;
+      label.title = `natural frequency ${natural.toFixed(3)} Hz, shown × `
+        + `${prepared.timeScale.toFixed(3)} (a page shows ${SHOWN_HZ.low}–${SHOWN_HZ.high} Hz); `
+        + "the player plays it at the palette's time scale; click to select, then combine";
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
       label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`;
