@@ -104,3 +104,31 @@ def test_a_song_without_a_model_does_not_show_a_rig_s_name(browser, web_files, t
             assert not page.errors, page.errors
         finally:
             page.close()
+
+
+def test_the_slow_page_notice_agrees_with_the_readout_and_moves_no_tile(browser, live_server):
+    """Item 8: without a GPU, 16 tiles at full resolution are slow: the notice's frame rate is
+    the readout's, and its coming moves neither the tiles nor the help button."""
+    page = open_app(browser, live_server["url"], "?test&size=16&path=cpu&scale=1")
+    try:
+        def places():
+            return [page.locator(selector).bounding_box() for selector in
+                    ("#tiles > *:first-child", "#tiles > *:last-child", "#help-button")]
+        page.click("#play")
+        page.wait_for_function("document.getElementById('fps').textContent.includes('fps')",
+                               timeout=20_000)
+        before = places()
+        try:
+            page.wait_for_function("!document.getElementById('notice').hidden",
+                                   timeout=25_000)
+        except Exception:  # noqa: BLE001 - a fast machine has nothing to say
+            pytest.skip("this machine draws 16 tiles fast enough: no notice")
+        assert places() == before
+        for _ in range(6):
+            readout, notice = page.evaluate(
+                "[document.getElementById('fps').textContent, "
+                "document.getElementById('notice-text').textContent]")
+            assert f"only {readout.split()[0]} frames per second" in notice, (readout, notice)
+            page.wait_for_timeout(400)
+    finally:
+        page.close()
