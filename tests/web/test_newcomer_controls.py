@@ -132,3 +132,40 @@ def test_the_slow_page_notice_agrees_with_the_readout_and_moves_no_tile(browser,
             page.wait_for_timeout(400)
     finally:
         page.close()
+
+
+def test_the_session_survives_a_reload_and_a_file(browser, live_server, tmp_path):
+    """Item 10 / the session: bred generations and the selection come back after a reload; a
+    saved session file, opened in a fresh browser, brings the generations back."""
+    page = open_app(browser, live_server["url"], "?test&size=4&path=cpu")
+    try:
+        for tile in (0, 2):
+            page.locator("#tiles > *").nth(tile).click(position={"x": 5, "y": 5})
+        page.click("#breed")
+        page.wait_for_function("document.getElementById('generation').options.length === 2",
+                               timeout=60_000)
+        page.locator("#tiles > *").nth(1).click(position={"x": 5, "y": 5})
+        bred = page.evaluate("window.eigendance.mappings()")
+        page.reload()
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
+        page.evaluate("window.eigendance.ready")
+        assert page.locator("#generation option").count() == 2
+        assert page.evaluate("window.eigendance.mappings()") == bred
+        assert page.locator("#tiles > .selected").count() == 1
+        with page.expect_download() as saved:
+            page.click("#save-session")
+        session = tmp_path / saved.value.suggested_filename
+        saved.value.save_as(session)
+        assert saved.value.suggested_filename == "cat_lowres-session.json"
+    finally:
+        page.close()
+    fresh = open_app(browser, live_server["url"], "?test&size=4&path=cpu")  # empty storage
+    try:
+        assert fresh.locator("#generation option").count() == 1
+        fresh.set_input_files("#open-session", str(session))
+        fresh.wait_for_function("document.getElementById('generation').options.length === 2",
+                                timeout=30_000)
+        assert fresh.evaluate("window.eigendance.mappings()") == bred
+        assert not fresh.errors, fresh.errors
+    finally:
+        fresh.close()

@@ -21,6 +21,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
+import { storedSession } from "./session";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { Viewer, softwareRenderer } from "./viewer";
@@ -83,6 +84,8 @@ export class App {
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => messages.loading(text, fraction), (text) => messages.error(text));
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
+    const stored = storedSession();
+    if (stored) this.gallery.restore(stored.histories);
     this.live = new LiveSource({ transport: this.transport, motion: this.motion,
       error: (text) => messages.error(text), status, requestDraw: () => this.requestDraws(),
       restoreSong: () => this.restoreSong(),
@@ -355,7 +358,8 @@ export class App {
     await this.library.loadSong(options.song ?? library.songs[0].id);
     await this.library.loadMesh(options.mesh ?? library.meshes[0].id);
     this.started = true;
-    let failure = await this.newGallery();
+    // The session kept in the browser (session.ts): the generations come back after a reload.
+    let failure = this.gallery.showMesh(this.library.meshId) ? null : await this.newGallery();
     if (failure && this.gallery.size !== null && this.rule === null) {
       failure = await this.newGallery(null); // the size asked for was refused: the default
     }

@@ -3,10 +3,11 @@
 // these controls do.
 import * as api from "./api";
 import type { App } from "./app";
-import { $ } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
+import { readSession, sessionOf } from "./session";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -46,6 +47,21 @@ export function wireHeader(app: App): void {
   });
   $("mute").addEventListener("click", () => toggleMute(app));
   $("loop").addEventListener("click", () => toggleLoop(app));
+  $("save-session").addEventListener("click", () => {
+    saveJSON(sessionOf(app.gallery.snapshot()), fileName(app.library.meshName, "session", "json"));
+  });
+  $("open-session").addEventListener("change", (e) => {
+    const input = e.target as HTMLInputElement;
+    const file = input.files?.[0];
+    input.value = "";
+    if (!file) return;
+    void messages.guard(`Could not open ${file.name}`, async () => {
+      const session = readSession(await file.text());
+      app.gallery.restore(session.histories);
+      if (!app.rigs.active) app.gallery.showMesh(library.meshId);
+      messages.status(`${file.name}: ${Object.keys(session.histories).length} model(s) restored`);
+    });
+  });
   for (const id of ["reset-view", "rig-reset-view"]) {
     $(id).addEventListener("click", () => resetView(app));
   }
