@@ -72,8 +72,12 @@ def kind_of(name: str | os.PathLike, kinds: tuple[str, ...] = ("mesh", "audio", 
     if len(kinds) == 1:
         raise InputError(f"{name}: unknown {kinds[0]} format '{suffix or '(none)'}' (expected "
                          f"one of {', '.join(KINDS[kinds[0]])})", status=415)
-    known = "; ".join(f"{kind}: {' '.join(KINDS[kind])}" for kind in kinds)
-    raise InputError(f"{name}: unknown file type '{suffix or '(none)'}' ({known})", status=415)
+    words = {"mesh": ("a model", "models"), "audio": ("a song", "songs"),
+             "mapping": ("a mapping", "mappings")}
+    what = [words[kind][0] for kind in kinds]
+    known = "; ".join(f"{words[kind][1]}: {' '.join(KINDS[kind])}" for kind in kinds)
+    raise InputError(f"{name}: unknown file type '{suffix or '(none)'}': not "
+                     f"{', '.join(what[:-1])} or {what[-1]} ({known})", status=415)
 
 
 def check_suffix(path: str | os.PathLike, kind: str) -> None:

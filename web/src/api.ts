@@ -69,8 +69,12 @@ export async function gallery(mesh: string, song: string, size: number | null):
   return (await postJSON<{ mappings: Mapping[] }>("api/gallery", body)).mappings;
 }
 
-export async function breed(parents: Mapping[], size: number, seed: number): Promise<Mapping[]> {
-  return (await postJSON<{ mappings: Mapping[] }>("api/breed", { parents, size, seed })).mappings;
+/** Children of `parents`; `on` (the model and song they dance to) bounds them: none grows
+ * past 1.3× the model's size over the song (docs/design.md#breeding). */
+export async function breed(parents: Mapping[], size: number, seed: number,
+  on: { mesh?: string; rig?: string; song: string } | null = null): Promise<Mapping[]> {
+  return (await postJSON<{ mappings: Mapping[] }>("api/breed",
+    { parents, size, seed, ...(on ?? {}) })).mappings;
 }
 
 /** Remove an item from the server's library (not its file on disk): the ids removed with it
@@ -84,8 +88,10 @@ export async function remove(kind: "mesh" | "song" | "mapping" | "rig", id: stri
 }
 
 export async function upload(file: File): Promise<any> {
+  // Always as bytes: the server names what it cannot read by its suffix (a .txt would else
+  // go as text/plain, which the server's guard refuses in HTTP words).
   const response = await fetch(`api/upload?name=${encodeURIComponent(file.name)}`, {
-    method: "POST", body: file,
+    method: "POST", body: file, headers: { "Content-Type": "application/octet-stream" },
   });
   return (await checked(response)).json();
 }

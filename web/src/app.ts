@@ -21,6 +21,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
+import { storedSession } from "./session";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { Viewer, softwareRenderer } from "./viewer";
@@ -70,18 +71,21 @@ export class App {
     const status = (text: string) => messages.status(text);
     const guard = (what: string, task: () => Promise<void>) => messages.guard(what, task);
     this.gallery = new GalleryView(this.motion, { status, requestDraw, guard,
+      songId: () => this.library.songId, modelName: () => this.library.meshName,
       open: (mapping) => this.open(mapping, `tile of generation ${this.gallery.generation + 1}`) },
     null);
     this.player = new PlayerView(this.motion, { requestDraw,
-      upload: (file) => void this.files.handle([file]),
+      upload: (file) => void this.files.handle([file]), modelName: () => this.library.meshName,
       harmonicScale: (index) => this.viewer.deformer?.harmonicScale(index) ?? 1 });
     this.recorder = new Recorder(this.transport,
       [$<HTMLButtonElement>("record"), $<HTMLButtonElement>("rig-record")], () => this.play(),
-      () => ({ viewer: this.shownViewer(),
+      () => ({ viewer: this.shownViewer(), name: this.modelName(),
         element: $(this.rigs.active ? "rig-player-area" : "player-area") }));
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => messages.loading(text, fraction), (text) => messages.error(text));
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
+    const stored = storedSession();
+    if (stored) this.gallery.restore(stored.histories);
     this.live = new LiveSource({ transport: this.transport, motion: this.motion,
       error: (text) => messages.error(text), status, requestDraw: () => this.requestDraws(),
       restoreSong: () => this.restoreSong(),
@@ -155,6 +159,11 @@ export class App {
   openRig(rigId: string): Promise<string | null> {
     this.frameRate.hideNotice(); // the harmonics' gallery leaves the screen
     return this.messages.guard("Could not show this rig", async () => {
+      if (!this.started) { // a library with a song and no model: a rig chosen in the menu
+        const library = await this.library.refresh();
+        if (library.songs.length) await this.library.loadSong(this.options.song ?? library.songs[0].id);
+        this.started = library.songs.length > 0;
+      }
       await this.rigs.open(rigId, this.rule?.max ?? 16);
       $<HTMLSelectElement>("mesh").value = `rig:${rigId}`;
       this.view = "gallery";
@@ -196,7 +205,7 @@ export class App {
   /** A new current mesh with its own history (a first gallery when it has none), and the
    * faster deformation path for it. Returns the gallery's failure (already shown), or null. */
   async showMesh(meshId: string): Promise<string | null> {
-    await this.library.loadMesh(meshId);
+    if (!await this.library.loadMesh(meshId)) return "removed while it was computed";
     if (this.rigs.active) { this.rigs.leave(); this.setView(this.view); }
     const failure = this.gallery.showMesh(meshId) ? null : await this.newGallery();
     if (this.gallery.size !== null) this.fillSizeMenu(this.gallery.tileCount || this.gallery.size);
@@ -223,6 +232,18 @@ export class App {
     return this.live.start(choice);
   }
 
+  /** The live input `?source=` asks for; a failure (no device, permission refused, a source
+   * that is none) is said in the banner, and the status says the song plays instead. */
+  private async startAskedSource(): Promise<void> {
+    const { source, badSource } = this.options;
+    if (badSource !== null) {
+      this.messages.error(`?source=${badSource} is not a live input (?source=mic: a microphone `
+        + "or line in; ?source=tab: a tab's audio); the song plays instead");
+    } else if (source && !await this.startLive({ kind: source })) {
+      this.messages.status("the song plays instead of the live input (see above)");
+    }
+  }
+
   /** The library's current song again, after a live input (its spectrogram and sound). */
   private async restoreSong(): Promise<void> {
     if (this.library.songId) await this.library.loadSong(this.library.songId);
@@ -234,18 +255,22 @@ export class App {
     if (this.rigs.active) this.rigs.viewer.requestDraw();
   }
 
+  /** The model on screen's name: a rig's, or the mesh's. */
+  modelName(): string { return this.rigs.active ? this.rigs.rig?.name ?? "" : this.library.meshName; }
+
   /** The viewer drawing now: a rig's, or the harmonics'. */
   shownViewer(): Viewer { return this.rigs.active ? this.rigs.viewer : this.viewer; }
 
   /** What the export panel exports: the dance the player shows (null in the gallery). */
   private exportedDance() {
-    if (this.view !== "player") return null;
     const song = this.library.songId;
-    if (this.rigs.active) {
+    if (this.rigs.active) { // the rig's own views: combine selected and open reach its player
+      if (this.rigs.view !== "player") return null;
       const mapping = this.rigs.player.saved();
       return mapping && this.rigs.rig ? { kind: "rig" as const, id: this.rigs.rig.id, song,
         mapping, name: this.rigs.rig.name } : null;
     }
+    if (this.view !== "player") return null;
     const mapping = this.player.saved();
     return mapping ? { kind: "mesh" as const, id: this.library.meshId, song, mapping,
       name: this.library.meshName } : null;
@@ -305,7 +330,7 @@ export class App {
       this.messages.hint(this.options.render ? "render mode" : READY, this.transport.playing);
     }
     await this.live.listDevices();
-    if (this.options.source) await this.startLive({ kind: this.options.source });
+    await this.startAskedSource();
     return true;
   }
 
@@ -336,7 +361,8 @@ export class App {
     await this.library.loadSong(options.song ?? library.songs[0].id);
     await this.library.loadMesh(options.mesh ?? library.meshes[0].id);
     this.started = true;
-    let failure = await this.newGallery();
+    // The session kept in the browser (session.ts): the generations come back after a reload.
+    let failure = this.gallery.showMesh(this.library.meshId) ? null : await this.newGallery();
     if (failure && this.gallery.size !== null && this.rule === null) {
       failure = await this.newGallery(null); // the size asked for was refused: the default
     }
@@ -357,7 +383,7 @@ export class App {
       this.transport.playing);
     this.notice = "";
     await this.live.listDevices();
-    if (options.source) await this.startLive({ kind: options.source });
+    await this.startAskedSource();
     return true;
   }
 }

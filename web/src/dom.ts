@@ -14,6 +14,14 @@ export function saveBlob(blob: Blob, name: string): void {
   setTimeout(() => URL.revokeObjectURL(link.href), 1000);
 }
 
+/** A file name's part from a model's name and what it is: `fileName("cat.obj", "tile 3",
+ * "json")` is `cat-tile-3.json` (letters, digits, _ and -, and dots in `what`; "dance" without a name). */
+export function fileName(model: string, what: string, suffix: string): string {
+  const slug = (text: string, keep: RegExp) => text.replace(keep, "-").replace(/^-+|-+$/g, "");
+  const stem = slug(model.replace(/\.[^.]*$/, ""), /[^\w-]+/g) || "dance";
+  return `${[stem, slug(what, /[^\w.-]+/g)].filter(Boolean).join("-")}.${suffix}`;
+}
+
 /** Offer a JSON document (a mapping) as a download. */
 export function saveJSON(data: unknown, name: string): void {
   saveBlob(new Blob([JSON.stringify(data, null, 1)], { type: "application/json" }), name);

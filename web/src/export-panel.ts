@@ -3,7 +3,7 @@
 // video with the song or a glTF (.glb). The server renders it (`POST api/export`, a job with
 // progress like a basis solve); the page follows the job and offers the file.
 import * as api from "./api";
-import { $ } from "./dom";
+import { $, fileName } from "./dom";
 import type { Mapping } from "./filter";
 import type { Messages } from "./messages";
 
@@ -56,10 +56,8 @@ export function clipWindow(start: number, wanted: number, length: number):
 
 /** A file name for the clip: `cat-0m12s-15s.mp4`. */
 export function clipName(model: string, start: number, duration: number, format: string): string {
-  const stem = model.replace(/\.[^.]*$/, "").replace(/[^\w-]+/g, "-").replace(/^-+|-+$/g, "")
-    || "dance";
   const at = `${Math.floor(start / 60)}m${String(Math.floor(start % 60)).padStart(2, "0")}s`;
-  return `${stem}-${at}-${+duration.toFixed(1)}s.${format}`;
+  return fileName(model, `${at}-${+duration.toFixed(1)}s`, format);
 }
 
 export class ExportPanel {
@@ -78,6 +76,10 @@ export class ExportPanel {
   /** Show the panel with the current position and 15 s, or hide it. */
   toggle(): void {
     const panel = $("export-panel");
+    if (panel.hidden && this.events.dance() === null) {
+      this.messages.status("open a tile in the player to export it");
+      return;
+    }
     panel.hidden = !panel.hidden;
     if (!panel.hidden) this.fill();
   }
@@ -134,7 +136,10 @@ export class ExportPanel {
         say(state.state === "queued" ? "waiting for the renderer…"
           : `${state.done} of ${state.total} frames`);
       });
-      link.href = `api/exports/${job.id}`;
+      // The file as a blob: the download keeps the page's name (the model, where, how long)
+      const file = await (await api.checked(await fetch(`api/exports/${job.id}`))).blob();
+      if (link.href.startsWith("blob:")) URL.revokeObjectURL(link.href);
+      link.href = URL.createObjectURL(file);
       link.download = clipName(dance.name, request.start, request.duration, request.format);
       link.textContent = `download ${link.download}`;
       link.hidden = false;

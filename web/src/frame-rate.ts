@@ -30,6 +30,8 @@ export class FrameRateWatch {
   private readonly dismissed = new Set<number>();
   /** a smaller gallery is on its way: no notice until it is on screen */
   private pending = false;
+  /** what the notice shown is about (its rate follows the readout's), or null */
+  private said: { tiles: number; floor: string; target: number } | null = null;
 
   constructor(private readonly events: FrameRateEvents) {
     $("notice-close").addEventListener("click", () => {
@@ -62,6 +64,15 @@ export class FrameRateWatch {
       + "the song plays";
     readout.classList.toggle("slow", fps > 0 && fps < viewer.resolution.rule.target);
     this.check(viewer, fps, now);
+    if (!$("notice").hidden && fps > 0) this.sayRate(fps); // one number: the readout's
+  }
+
+  /** The notice's sentence at frame rate `fps`, formatted as the readout formats it. */
+  private sayRate(fps: number): void {
+    if (!this.said) return;
+    const { tiles, floor, target } = this.said;
+    $("notice-text").textContent = `This page draws only ${fps.toFixed(fps < 10 ? 1 : 0)} `
+      + `frames per second with ${tiles} tiles${floor} (it aims at ${target}).`;
   }
 
   /** Below the target at the lowest resolution for SLOW_FOR_MS in the gallery: say so and offer
@@ -81,11 +92,9 @@ export class FrameRateWatch {
     this.slowSince ??= now;
     if (now - this.slowSince < SLOW_FOR_MS || !$("notice").hidden) return;
     const offer = fewerTiles(tiles, fps, target, this.events.smallest());
-    const rate = fps.toFixed(fps < 10 ? 1 : 0);
     const said = viewer.resolution.describe();
-    const floor = said ? `, even ${said.replace(/ to keep .*/, "")}` : "";
-    $("notice-text").textContent = `This page draws only ${rate} frames per second with `
-      + `${tiles} tiles${floor} (it aims at ${target}).`;
+    this.said = { tiles, target, floor: said ? `, even ${said.replace(/ to keep .*/, "")}` : "" };
+    this.sayRate(fps);
     const button = $<HTMLButtonElement>("notice-fewer");
     button.hidden = offer === null;
     button.textContent = `show ${offer} tiles`;

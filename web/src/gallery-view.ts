@@ -2,11 +2,13 @@
 // and the history of generations as a tree (each mesh keeps its own), with each tile's label
 // (the harmonics it drives) and its two plots.
 import * as api from "./api";
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
 import { drivenHarmonics, settingsOf, withBasis } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { History } from "./history";
+import { sessionOf, storeSession } from "./session";
+import type { SavedHistory } from "./session";
 import type { Motion } from "./motion";
 import { drawAmplification, drawTransfer, effectiveAmplification } from "./plots";
 import type { Shot } from "./viewer";
@@ -23,6 +25,10 @@ export interface GalleryEvents {
   requestDraw(): void;
   /** Run a request; a failure is shown as an error `what: message` (never thrown). */
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the song the tiles dance to (children are bounded on it) */
+  songId(): string;
+  /** the model's name (download names) */
+  modelName(): string;
 }
 
 /** "harmonics 4–7", "harmonic 1", or "still" for the tile label. */
@@ -40,6 +46,8 @@ export class GalleryView {
   private prepared: Prepared[] = [];
   private readonly selected = new Set<number>();
   private tiles: Tile[] = [];
+  /** tiles selected when a session was restored, applied once its model shows */
+  private readonly restoredSelection = new Map<string, number[]>();
 
   constructor(private readonly motion: Motion, private readonly events: GalleryEvents,
               size: number | null) {
@@ -105,7 +113,8 @@ export class GalleryView {
     if (!parents.length) return;
     this.events.status("breeding…");
     const from = this.history.current;
-    const children = await api.breed(parents, this.size ?? parents.length, seed);
+    const children = await api.breed(parents, this.size ?? parents.length, seed,
+      { mesh: this.meshId, song: this.events.songId() });
     this.history.add(children, from);
     this.setGeneration(this.history.current);
     this.events.status("");
@@ -115,8 +124,36 @@ export class GalleryView {
   showMesh(meshId: string): boolean {
     this.meshId = meshId;
     this.setGeneration(this.history.current);
+    for (const index of this.restoredSelection.get(meshId) ?? []) this.toggle(index);
+    this.restoredSelection.delete(meshId);
+    if (this.history.size) this.size = this.tileCount || this.size;
     return this.history.size > 0;
   }
+
+  /** Every model's history as a session saves it (session.ts). */
+  snapshot(): Record<string, SavedHistory> {
+    const out: Record<string, SavedHistory> = {};
+    for (const [id, history] of this.histories) {
+      if (!history.size) continue;
+      out[id] = { generations: history.generations, current: history.current,
+        selected: id === this.meshId ? this.selection : [] };
+    }
+    return out;
+  }
+
+  /** Histories of a saved session, in place of these models' (others stay). */
+  restore(histories: Record<string, SavedHistory>): void {
+    for (const [id, saved] of Object.entries(histories)) {
+      const history = new History<Mapping>();
+      for (const g of saved.generations) history.add(g.mappings, g.parent, g.note);
+      history.current = Math.max(0, Math.min(saved.current, history.size - 1));
+      this.histories.set(id, history);
+      this.restoredSelection.set(id, saved.selected ?? []);
+    }
+  }
+
+  /** Keep the session in the browser after every change. */
+  private persist(): void { storeSession(sessionOf(this.snapshot())); }
 
   /** A new basis or edited mappings: prepare the generation on screen again, redraw plots. */
   refresh(): void {
@@ -145,6 +182,7 @@ export class GalleryView {
     $<HTMLButtonElement>("forward").disabled = history.neighbour(1) === history.current;
     this.updateBreedButton();
     this.events.requestDraw();
+    this.persist();
   }
 
   /** Select or unselect tile `index`. */
@@ -152,6 +190,7 @@ export class GalleryView {
     if (this.selected.has(index)) this.selected.delete(index); else this.selected.add(index);
     this.tiles[index]?.element.classList.toggle("selected", this.selected.has(index));
     this.updateBreedButton();
+    this.persist();
   }
 
   /** The generation before (−1) or after (+1) this one in the history's tree order. */
@@ -208,8 +247,8 @@ export class GalleryView {
       const target = event.target as HTMLElement;
       if (target.closest(".open")) { this.events.open(mapping); return; }
       if (target.closest(".save")) {
-        saveJSON(withBasis(mapping, this.motion.basis),
-          `mapping-g${this.history.current + 1}-${index + 1}.json`);
+        saveJSON(withBasis(mapping, this.motion.basis), fileName(this.events.modelName(),
+          `g${this.history.current + 1}-${index + 1}`, "json"));
         return;
       }
       this.toggle(index);

@@ -3,10 +3,11 @@
 // these controls do.
 import * as api from "./api";
 import type { App } from "./app";
-import { $ } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
+import { readSession, sessionOf } from "./session";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -45,6 +46,25 @@ export function wireHeader(app: App): void {
     if (transport.muted) toggleMute(app);
   });
   $("mute").addEventListener("click", () => toggleMute(app));
+  $("loop").addEventListener("click", () => toggleLoop(app));
+  $("save-session").addEventListener("click", () => {
+    saveJSON(sessionOf(app.gallery.snapshot()), fileName(app.library.meshName, "session", "json"));
+  });
+  $("open-session").addEventListener("change", (e) => {
+    const input = e.target as HTMLInputElement;
+    const file = input.files?.[0];
+    input.value = "";
+    if (!file) return;
+    void messages.guard(`Could not open ${file.name}`, async () => {
+      const session = readSession(await file.text());
+      app.gallery.restore(session.histories);
+      if (!app.rigs.active) app.gallery.showMesh(library.meshId);
+      messages.status(`${file.name}: ${Object.keys(session.histories).length} model(s) restored`);
+    });
+  });
+  for (const id of ["reset-view", "rig-reset-view"]) {
+    $(id).addEventListener("click", () => resetView(app));
+  }
   $("tab-gallery").addEventListener("click", () => app.setView("gallery"));
   $("tab-player").addEventListener("click", () => app.setView("player"));
   const sizes = $<HTMLSelectElement>("size");
@@ -67,11 +87,31 @@ export function wireHeader(app: App): void {
     "[": () => app.gallery.step(-1),
     "]": () => app.gallery.step(1),
     m: () => toggleMute(app),
+    l: () => toggleLoop(app),
+    r: () => resetView(app),
+    f: () => toggleFullScreen(),
     "?": () => messages.help($("help").hidden),
     h: () => messages.help($("help").hidden),
     Escape: () => { messages.help(false); messages.clearError(); },
     Home: () => { transport.seek(0); viewer.requestDraw(); },
   });
+}
+
+function toggleLoop(app: App): void {
+  app.transport.loop = !app.transport.loop;
+  $("loop").setAttribute("aria-pressed", String(app.transport.loop));
+  $("loop").classList.toggle("on", app.transport.loop);
+}
+
+/** The player's camera back to the whole model (after turning or zooming it). */
+function resetView(app: App): void {
+  app.shownViewer().resetPlayerCamera();
+}
+
+/** The page in full screen, or back (Esc works too). */
+function toggleFullScreen(): void {
+  if (document.fullscreenElement) void document.exitFullscreen();
+  else void document.documentElement.requestFullscreen?.().catch(() => {});
 }
 
 function toggleMute(app: App): void {
@@ -91,6 +131,7 @@ async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void
   const id = rig ? menu.value.slice(4) : menu.value;
   const name = menu.selectedOptions[0]?.textContent ?? `the ${kind}`;
   await app.messages.guard(`Could not remove ${name}`, async () => {
+    if (kind === "mesh") app.library.drop(id); // its harmonics may be computing
     await api.remove(rig ? "rig" : kind, id);
     const library = await app.library.refresh();
     if (rig || (kind === "mesh" && id === app.library.meshId)) {

@@ -15,6 +15,10 @@ const HALF_ABOVE_BYTES = 128 * 2 ** 20;
 export class Library {
   meshId = "";
   songId = "";
+  /** the model being computed or loaded (the menu names it meanwhile), or null */
+  loading: string | null = null;
+  /** the model being loaded was removed on purpose (✕): its load ends quietly */
+  private dropped: string | null = null;
   private items: api.Library | null = null;
   /** Called once a new basis is in the motion and the viewer (the views re-prepare mappings). */
   onBasis: () => void = () => {};
@@ -38,9 +42,13 @@ export class Library {
     this.items = items;
     const models = $<HTMLSelectElement>("mesh");
     const shown = models.value; // a rig, while one is on screen
-    fillSelect(models, items.meshes, this.meshId);
+    fillSelect(models, items.meshes, this.loading ?? this.meshId);
     addRigs(models, items.rigs ?? []);
     if ([...models.options].some((option) => option.value === shown)) models.value = shown;
+    else if (!items.meshes.length) { // nothing on screen: the menu says so (not a rig's name)
+      models.prepend(new Option("no model: drop one, or choose a rig", "", true, true));
+      models.options[0].disabled = true;
+    }
     fillSelect($<HTMLSelectElement>("song"), items.songs, this.songId);
     const mappings = $<HTMLSelectElement>("mapping-menu");
     const chosen = mappings.value;
@@ -59,16 +67,24 @@ export class Library {
     return items;
   }
 
-  /** Make `meshId` current: wait for its basis job, download the basis, hand it over. */
-  async loadMesh(meshId: string): Promise<void> {
+  /** The model being loaded is removed (✕ while it computes): its load ends without error. */
+  drop(meshId: string): void { if (meshId === this.loading) this.dropped = meshId; }
+
+  /** Make `meshId` current: wait for its basis job, download the basis, hand it over. False
+   * when it was removed (`drop`) while it loaded: the model on screen stays. */
+  async loadMesh(meshId: string): Promise<boolean> {
     const mesh = this.items?.meshes.find((m) => m.id === meshId);
     if (!mesh) throw new Error(`the server has no model with id ${meshId}`);
+    this.loading = meshId;
+    $<HTMLSelectElement>("mesh").value = meshId; // the menu (and its ✕) names what computes
     try {
       if (!mesh.ready && mesh.job) {
         this.busy(`${mesh.name}: computing its harmonics…`, null);
         await api.followJob(mesh.job.id, (job) => {
-          this.busy(`${mesh.name}: computing its harmonics (${job.done} of ${job.total})`,
-            job.total ? job.done / job.total : null);
+          // No count before the solver reports one: reading the cache or setting up says 0.
+          this.busy(job.done ? `${mesh.name}: computing its harmonics (${job.done} of `
+            + `${job.total})` : `${mesh.name}: preparing its harmonics…`,
+          job.done && job.total ? job.done / job.total : null);
         });
       }
       this.busy(`${mesh.name}: loading its harmonics…`, null);
@@ -86,7 +102,12 @@ export class Library {
       this.meshId = meshId;
       $<HTMLSelectElement>("mesh").value = meshId;
       this.onBasis();
+      return true;
+    } catch (error) {
+      if (this.dropped === meshId) return false;
+      throw error;
     } finally {
+      this.loading = this.dropped = null;
       $<HTMLSelectElement>("mesh").value = this.meshId; // the model on screen, if this one failed
       this.busy(null);
     }

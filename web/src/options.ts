@@ -33,6 +33,8 @@ export interface Options {
   scale: number | null;
   /** `?source=mic`: start on the default live input (docs/design.md#live); `tab`: tab audio */
   source: "mic" | "tab" | null;
+  /** a `?source=` that names no live input (said, not ignored), or null */
+  badSource: string | null;
 }
 
 /** The render scale `?scale=` asks for, or null (dynamic resolution) when absent or not a
@@ -61,6 +63,8 @@ export function readOptions(search: string): Options {
     batch: Number(params.get("batch") ?? 8),
     scale: fixedScale(params.get("scale")),
     source: params.get("source") === "mic" ? "mic" : params.get("source") === "tab" ? "tab" : null,
+    badSource: params.has("source") && !["mic", "tab"].includes(params.get("source")!)
+      ? params.get("source") : null,
   };
 }
 

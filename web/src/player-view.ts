@@ -3,7 +3,7 @@
 // own (saving writes them, so
 // `eigendance animate` gives what the player shows), the harmonics explorer, and saving /
 // loading mappings.
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import { settingsOf, withBasis, withSettings } from "./filter";
 import type { Mapping, Prepared, Settings, Shading } from "./filter";
 import type { Motion } from "./motion";
@@ -16,6 +16,8 @@ export interface PlayerEvents {
   requestDraw(): void;
   /** 1 / max |U[:, ν]|: the explorer's colour scale for harmonic ν */
   harmonicScale(index: number): number;
+  /** the model's name (download names) */
+  modelName(): string;
 }
 
 /** The sliders and menu of the mapping's settings, by element id. */
@@ -120,7 +122,7 @@ export class PlayerView {
     harmonic.addEventListener("input", () => this.explore(harmonic.value));
     $("save-mapping").addEventListener("click", () => {
       const mapping = this.saved();
-      if (mapping) saveJSON(mapping, "mapping.json");
+      if (mapping) saveJSON(mapping, fileName(this.events.modelName(), this.source, "json"));
     });
     $("load-mapping").addEventListener("change", (e) => {
       const input = e.target as HTMLInputElement;

@@ -5,7 +5,7 @@
 // without the Segment's Duration: players could not seek it, so the duration measured while
 // recording is written into the file (fix-webm-duration) before it is offered.
 import fixWebmDuration from "fix-webm-duration";
-import { saveBlob } from "./dom";
+import { fileName, saveBlob } from "./dom";
 import type { AudioTransport } from "./transport";
 import type { Viewer } from "./viewer";
 
@@ -20,7 +20,7 @@ export function recordingSize(width: number, height: number, ratio: number):
 }
 
 /** What is recorded: the viewer drawing the view, and the view's element. */
-export interface Recorded { viewer: Viewer; element: HTMLElement; }
+export interface Recorded { viewer: Viewer; element: HTMLElement; /** the model's name (the file's) */ name: string; }
 
 export class Recorder {
   private recorder: MediaRecorder | null = null;
@@ -55,6 +55,7 @@ export class Recorder {
       return;
     }
     const source = this.shown();
+    const name = source.name;
     const box = source.element.getBoundingClientRect();
     const { width, height } = recordingSize(box.width, box.height, Math.min(devicePixelRatio, 2));
     const canvas = document.createElement("canvas");
@@ -83,7 +84,7 @@ export class Recorder {
       // A file without the duration is still a recording: keep it if the fix fails.
       const seekable = await fixWebmDuration(recorded, duration, { logger: false })
         .catch(() => recorded);
-      saveBlob(seekable, "eigendance.webm");
+      saveBlob(seekable, fileName(name, "dance", "webm"));
     };
     this.started = performance.now();
     recorder.start(250);

@@ -98,6 +98,25 @@ export function playedFrequency(natural: number, timeScale: number): string {
     : `${played} (×${timeScale.toFixed(2)} time scale)`;
 }
 
+/** The frequencies (Hz) a mode tile is shown between: a page drawing 10 frames a second shows
+ * a 1.5 Hz swing in about 7 frames; a mode above it would read as a still, one under 0.4 Hz
+ * hardly moves while one looks (the thesis's galleries were time-scaled the same way). */
+export const SHOWN_HZ = { low: 0.4, high: 1.5 };
+
+/** A mode tile's time scale: the mode at `natural` Hz × the palette's `timeScale`, brought
+ * into SHOWN_HZ; and its label, the natural and the shown frequency ("42.10 Hz, shown at
+ * 1.50 Hz"; one number when they agree). */
+export function shownMode(natural: number, timeScale: number): { timeScale: number;
+  label: string } {
+  if (!(natural > 0)) return { timeScale, label: playedFrequency(natural, timeScale) };
+  const shown = Math.min(SHOWN_HZ.high, Math.max(SHOWN_HZ.low, natural * timeScale));
+  if (Math.abs(shown - natural * timeScale) < 1e-9) {
+    return { timeScale, label: playedFrequency(natural, timeScale) };
+  }
+  return { timeScale: shown / natural,
+    label: `${natural.toFixed(2)} Hz, shown at ${shown.toFixed(2)} Hz` };
+}
+
 /** "mode 4", "modes 1–3, 5": 0-based mode indices as the page numbers them (from 1). */
 export function modesLabel(modes: ArrayLike<number>): string {
   const sorted = [...new Set(Array.from(modes))].sort((a, b) => a - b);

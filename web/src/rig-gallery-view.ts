@@ -4,13 +4,13 @@
 // and the gallery of dances: mode mappings calibrated on the song (`POST api/rig-gallery`) bred
 // like the harmonic gallery's (`POST api/breed`).
 import * as api from "./api";
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
 import type { Mapping } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
-import { modesLabel, playedFrequency } from "./rig-bundle";
+import { SHOWN_HZ, modesLabel, playedFrequency, shownMode } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
 import type { Shot, Look } from "./viewer";
 
@@ -37,6 +37,8 @@ export interface RigGalleryEvents {
   status(text: string): void;
   requestDraw(): void;
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
+  /** the song the dances are calibrated on (children are bounded on it) */
+  songId(): string;
   /** play the selected modes (mode gallery) or this dance in the player */
   combine(modes: number[]): void;
   open(mapping: Mapping, source: string): void;
@@ -161,7 +163,8 @@ export class RigGalleryView {
     const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dances()[i]);
     if (!parents.length) return;
     this.events.status("breeding…");
-    const children = await api.breed(parents, this.dances().length, seed);
+    const children = await api.breed(parents, this.dances().length, seed,
+      { rig: this.rig!.id, song: this.events.songId() });
     this.generations.push(children);
     this.showGeneration(this.generations.length - 1);
     this.events.status("");
@@ -193,7 +196,8 @@ export class RigGalleryView {
     if (rig) {
       const s = this.events.timeScale();
       if (this.mode === "modes") {
-        this.prepared = this.modes.map((mode) => modeTile(rig, mode, s));
+        this.prepared = this.modes.map((mode) => modeTile(rig, mode,
+          shownMode(rig.frequencies[mode], s).timeScale));
       } else {
         this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
       }
@@ -218,9 +222,10 @@ export class RigGalleryView {
     if (this.mode === "modes") {
       const mode = prepared.selected[0];
       const natural = rig.frequencies[mode];
-      label.textContent = `mode ${mode + 1} · ${playedFrequency(natural, prepared.timeScale)}`;
-      label.title = `as played: natural frequency ${natural.toFixed(3)} Hz × time scale `
-        + `${prepared.timeScale.toFixed(2)}; click to select, then combine`;
+      label.textContent = `mode ${mode + 1} · ${shownMode(natural, this.events.timeScale()).label}`;
+      label.title = `natural frequency ${natural.toFixed(3)} Hz, shown × `
+        + `${prepared.timeScale.toFixed(3)} (a page shows ${SHOWN_HZ.low}–${SHOWN_HZ.high} Hz); `
+        + "the player plays it at the palette's time scale; click to select, then combine";
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
       label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`;
@@ -238,7 +243,7 @@ export class RigGalleryView {
       const mapping = this.dances()[index];
       if (target.closest(".open")) { this.events.open(mapping, `dance ${index + 1}`); return; }
       if (target.closest(".save")) {
-        saveJSON(mapping, `rig-mapping-g${this.generation + 1}-${index + 1}.json`);
+        saveJSON(mapping, fileName(rig.name, `g${this.generation + 1}-${index + 1}`, "json"));
         return;
       }
       this.toggle(index);

@@ -3,7 +3,7 @@
 // music on or off, gain and offset b — the modal-skinning / LBS switch, the bones, the pose
 // editor (thesis Fig. 4.17: pick a joint, turn it about x, y, z; the modes are recomputed) and
 // per-joint stiffness. *save mapping* writes a version-2 mapping with `modes` and `offset`.
-import { $, saveJSON } from "./dom";
+import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { prepareRig } from "./modal-skin";
 import { paletteOf } from "./palette";
@@ -124,7 +124,7 @@ export class RigPlayerView {
     });
     $("rig-save").addEventListener("click", () => {
       const saved = this.saved();
-      if (saved) saveJSON(saved, "rig-mapping.json");
+      if (saved) saveJSON(saved, fileName(this.rig?.name ?? "", this.source, "json"));
     });
   }
 

@@ -56,6 +56,7 @@ export class RigStage {
     this.viewer.onFrame = (t) => this.beforeFrame(t);
     const requestDraw = () => this.viewer.requestDraw();
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
+      songId: () => events.songId(),
       combine: (modes) => this.combine(modes),
       open: (mapping, source) => { this.player.show(mapping, source); this.setView("player"); },
       timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1 });

@@ -15,6 +15,8 @@ export interface Clock {
 export class AudioTransport implements Clock {
   /** The song's length (s), from its spectrogram, so audio and motion end together. */
   duration = 0;
+  /** At the song's end, play it again from the start (the *loop* switch, L). */
+  loop = false;
   /** Called when playback starts or stops (to show ▶ or ❚❚). */
   onChange: (playing: boolean) => void = () => {};
 
@@ -135,6 +137,7 @@ export class AudioTransport implements Clock {
     if (this.live) return;
     this.pause();
     this.offset = 0;
+    if (this.loop) this.play(); // the *loop* switch: again from the start
   }
 
   /** A stream of what plays (at full level, whatever the volume), for the recorder; `untap`

@@ -39,7 +39,7 @@ from eigendance.inputs.song import is_spectrogram_file, read_song
 from eigendance.modal.motion import parse_modes
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
-from eigendance.music.breeding import breed
+from eigendance.music.breeding import bounded_children, breed
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
     check_gallery_size,
@@ -330,7 +330,8 @@ def gallery_dances(args, mapping: Mapping | None) -> tuple[list, list]:
     items = breed([read_mapping(path) for path in args.breed], size, args.seed) \
         if args.breed else None
     basis, spectrogram = harmonic_inputs(args, items[0] if items else None)
-    items = items or initial_gallery(basis, spectrogram, size)
+    items = bounded_children(basis, spectrogram, items) if items else \
+        initial_gallery(basis, spectrogram, size)
     name = os.path.splitext(os.path.basename(args.output))[0]
     dances = [HarmonicDance(basis, spectrogram, item, song_of(args), name).window(
         args.start, args.duration) for item in items]

@@ -33,7 +33,7 @@ from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.inputs.mapping import read_mapping
 from eigendance.inputs.model import model_kind, read_model
 from eigendance.inputs.song import read_song
-from eigendance.music.breeding import breed
+from eigendance.music.breeding import bounded_children, breed
 from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.gallery import (
     DEFAULT_GALLERY,
@@ -170,15 +170,13 @@ def run_gallery(args) -> None:
     paths = [os.path.join(args.output, f"{i}.json") for i in range(size)]
     for path in paths:
         refuse_overwrite(path, args.force)
-    basis = spectrogram = None
-    if args.breed:
-        parents = [read_mapping(path) for path in args.breed]
-        items = breed(parents, size, args.seed)
-    if not args.breed or args.verbose:
-        basis = basis_for(args.basis, None, args.k, None, args.output)
-        spectrogram = read_song(args.spectrogram)
-    if not args.breed:  # each records the basis it was made on
-        items = initial_gallery(basis, spectrogram, size)
+    parents = [read_mapping(path) for path in args.breed or []]
+    basis = basis_for(args.basis, parents[0] if parents else None, args.k, None, args.output)
+    spectrogram = read_song(args.spectrogram)
+    # Children are bounded on the model and song, as the first generation is calibrated on them;
+    # each item records the basis it was made on.
+    items = bounded_children(basis, spectrogram, breed(parents, size, args.seed)) if parents \
+        else initial_gallery(basis, spectrogram, size)
     for item, path in zip(items, paths, strict=True):
         item.save(path)
     what = f"children of {len(args.breed)} parents" if args.breed else "initial gallery"

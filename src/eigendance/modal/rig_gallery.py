@@ -67,6 +67,11 @@ class RigDancer:
         return self.model.frequencies[self.palette.selected]
 
     @property
+    def vertices(self) -> np.ndarray:
+        """(n, 3) the skin's vertices at rest, the rig's unit."""
+        return self.skin.vertices
+
+    @property
     def diagonal(self) -> float:
         """Bounding-box diagonal of the skin at rest, the rig's unit."""
         return self._diagonal

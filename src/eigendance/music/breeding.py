@@ -13,7 +13,9 @@ from dataclasses import replace
 import numpy as np
 
 from eigendance.errors import InputError
+from eigendance.music.dancer import frame_motion, motion_gram, song_times
 from eigendance.music.envelope import Envelope, Pulse
+from eigendance.music.gallery import PEAK_MOTION
 from eigendance.music.mapping import Mapping, resample_amplification
 
 
@@ -267,3 +269,91 @@ def with_rhythm_genes(child: Mapping, first: Mapping, second: Mapping, random: M
     pulse = Pulse(max(0.0, float(amount)), max(1e-3, float(decay)), low, high,
                   first.pulse.source)
     return replace(child, envelope=envelope, pulse=pulse)
+
+
+# Children are calibrated like the first generation (docs/design.md#breeding): a crossing can
+# send a loud band to a harmonic whose amplification was calibrated for a quiet one.
+BOX_LIMIT = 1.3  # promised: a child's bounding box (diagonal) stays within this × the rest's
+BOX_AIM = 1.2  # what the measured frames are held to: the margin covers frames not measured
+MEASURED_FRAMES = 32  # the song's frames of largest RMS motion whose bounding box is measured
+
+
+def box_growth(rest: np.ndarray, moved: np.ndarray) -> np.ndarray:
+    """Bounding-box diagonal of each frame over the rest shape's.
+
+    Parameters
+    ----------
+    rest : (n, 3) positions at rest.
+    moved : (F, n, 3) positions.
+
+    Returns
+    -------
+    (F,) ratios (1: the same size).
+    """
+    size = np.linalg.norm(np.ptp(rest, axis=0))
+    return np.linalg.norm(moved.max(axis=1) - moved.min(axis=1), axis=1) / max(size, 1e-300)
+
+
+def child_scale(dancer, spectrogram, child: Mapping, offset: float, swing: bool) -> float:
+    """α ≤ 1 bounding one child: its largest frame's RMS motion at most PEAK_MOTION of the
+    diagonal (the first generation's cap), and its bounding box at most BOX_AIM × the rest's on
+    the MEASURED_FRAMES frames of largest RMS motion (bisection, the motion taken linear in α).
+
+    Parameters
+    ----------
+    dancer : the model (`music.dancer.Dancer` with `vertices`, its rest positions).
+    spectrogram : the song it will dance to.
+    child : the child.
+    offset : b of its filter (1 for harmonics, the mapping's own for a rig's modes).
+    swing : the motion also reaches −φ (a rig's modes oscillate), so that side is measured.
+
+    Returns
+    -------
+    float in [0, 1].
+    """
+    k = len(dancer.frequencies)
+    music = child.play(spectrogram, song_times(spectrogram), k, offset=0.0)  # a·(Σ g̃ + kick)
+    targets = np.flatnonzero(np.abs(music).max(axis=0) > 0)
+    if not len(targets):
+        return 1.0
+    rms = frame_motion(music[:, targets], motion_gram(dancer, targets))
+    scale = min(1.0, PEAK_MOTION * dancer.diagonal / max(rms.max(), 1e-300))
+    loudest = music[np.argsort(rms)[-MEASURED_FRAMES:]]
+    rest = np.asarray(dancer.vertices, dtype=np.float64)
+    still = dancer.displacements(np.full((1, k), offset))
+    fields = np.concatenate([dancer.displacements(offset + sign * scale * loudest) - still
+                             for sign in ((1, -1) if swing else (1,))])
+
+    def fits(alpha: float) -> bool:
+        return bool(box_growth(rest, rest + alpha * fields).max() <= BOX_AIM)
+
+    if fits(1.0):
+        return scale
+    low, high = 0.0, 1.0
+    for _ in range(12):
+        middle = (low + high) / 2
+        low, high = (middle, high) if fits(middle) else (low, middle)
+    return scale * low
+
+
+def bounded_children(dancer, spectrogram, children, rig: bool = False) -> list[Mapping]:
+    """The children with their amplifications scaled by `child_scale`, so that over the song
+    none grows past BOX_LIMIT × the rest shape's bounding box (a quiet child is left as bred).
+
+    Parameters
+    ----------
+    dancer : the model the children dance on (a `HarmonicBasis`, or a rig's `RigDancer`).
+    spectrogram : the song they dance to.
+    children : the bred mappings (`breed`).
+    rig : the dancer is a rig's modes (offset b: the mapping's; the modes swing to −φ).
+
+    Returns
+    -------
+    list of Mapping (same names, seeds and genes but the amplification's scale).
+    """
+    bounded = []
+    for child in children:
+        alpha = child_scale(dancer, spectrogram, child, child.offset if rig else 1.0, rig)
+        bounded.append(child if alpha >= 1.0 else
+                       replace(child, amplification=child.amplification * alpha))
+    return bounded

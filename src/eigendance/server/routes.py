@@ -24,7 +24,7 @@ from eigendance.checks import number
 from eigendance.files import kind_of, suffix_of
 from eigendance.inputs.mapping import check_mapping_size, mapping_from
 from eigendance.inputs.model import published_suffixes
-from eigendance.music.breeding import breed
+from eigendance.music.breeding import bounded_children, breed
 from eigendance.music.gallery import DEFAULT_GALLERY, MAX_GALLERY, MIN_GALLERY, initial_gallery
 from eigendance.server.archive import is_archive
 from eigendance.server.items import RigItem
@@ -82,7 +82,9 @@ def sniff(name: str, head: bytes) -> str | None:
         return f"unknown file type '{suffix}'"
     if not head:
         return "the file is empty"
-    return None if checks[suffix] else f"the content is not a {suffix[1:].upper()} file"
+    name = suffix[1:].upper()
+    article = "an" if name[0] in "AEFHILMNORSX" and name != "FLAC" else "a"  # an MP3, a WAV
+    return None if checks[suffix] else f"the content is not {article} {name} file"
 
 
 async def get_config(request: Request):
@@ -363,7 +365,8 @@ async def gallery(request: Request):
 
 
 async def breed_route(request: Request):
-    """POST /api/breed {parents, size, seed}: children of the selected mappings.
+    """POST /api/breed {parents, size, seed, mesh | rig?, song?}: children of the selected
+    mappings, bounded on the model and song when the body names them (`children_bound`).
 
     Parameters
     ----------
@@ -385,12 +388,40 @@ async def breed_route(request: Request):
     for index, data in enumerate(body["parents"]):
         check_mapping_size(data, f"parent {index + 1}")
 
+    bound = await children_bound(request, body)
+
     def make():
         parents = [mapping_from(data, f"parent {index + 1}")
                    for index, data in enumerate(body["parents"])]
-        return {"mappings": [m.to_json() for m in breed(parents, size, seed)]}
+        return {"mappings": [m.to_json() for m in bound(breed(parents, size, seed))]}
 
     return await answer(make)
+
+
+async def children_bound(request: Request, body: dict):
+    """What bounds the children of a breeding (`bounded_children`): on the model (`mesh` or
+    `rig`) and `song` of the body, when it names them; else nothing (children as bred).
+
+    Parameters
+    ----------
+    request : the breeding request.
+    body : its JSON body.
+
+    Returns
+    -------
+    callable(children) → children.
+    """
+    if "song" not in body or not ("mesh" in body or "rig" in body):
+        return lambda children: children
+    song = song_of(request, str(body["song"])).spectrogram
+    if "rig" in body:
+        item = item_of(request, "rig", str(body["rig"]))
+        await in_worker(library_of(request).ready_rig, item)
+        rig = item.rig
+        return lambda children: [bounded_children(rig.dancer(rig.palette_of(child)), song,
+                                                  [child], rig=True)[0] for child in children]
+    basis = ready_basis(request, str(body["mesh"])).basis
+    return lambda children: bounded_children(basis, song, children)
 
 
 async def get_mapping(request: Request):

@@ -1,0 +1,197 @@
+"""The page as a newcomer finds it, round 2 (issue 30), from the user's side: what the page
+shows after a click, what file arrives. Each test failed on the build before its fix.
+
+Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import urllib.request
+
+import numpy as np
+import pygltflib
+import pytest
+from web_helpers import CAT, open_app, running_server
+
+from helpers import fixture_path
+
+pytestmark = pytest.mark.web
+
+
+def library(url: str) -> dict:
+    with urllib.request.urlopen(url + "api/library") as answer:
+        return json.load(answer)
+
+
+def rig_id(url: str, name: str) -> str:
+    return next(rig["id"] for rig in library(url)["rigs"] if rig["name"] == name)
+
+
+def open_rig_from_menu(page, url: str, name: str) -> None:
+    """Choose the rig in the model menu, as a person does, and wait for its mode tiles."""
+    page.select_option("#mesh", f"rig:{rig_id(url, name)}")
+    page.wait_for_function("document.querySelectorAll('#rig-tiles .rig-tile').length > 0",
+                           timeout=60_000)
+
+
+def test_combined_modes_of_a_rig_export_as_a_glb(browser, live_server):
+    """Item 1: select two mode tiles, *combine selected*, ⇩ export: the panel opens naming the
+    rig, and *export* as glTF delivers a .glb named after the rig that animates."""
+    page = open_app(browser, live_server["url"], "?test")
+    try:
+        open_rig_from_menu(page, live_server["url"], "hand")
+        tiles = page.locator("#rig-tiles .rig-tile .caption")
+        tiles.nth(0).click()
+        tiles.nth(2).click()
+        page.click("#rig-combine")
+        assert page.locator("#rig-player-view").is_visible()
+        page.click("#rig-export-open")
+        assert page.locator("#export-panel").is_visible()
+        assert "hand" in page.locator("#export-what").text_content()
+        page.select_option("#export-format", "glb")
+        page.fill("#export-duration", "1")
+        with page.expect_download(timeout=120_000) as download:
+            page.click("#export-go")
+        arrived = download.value
+        assert arrived.suggested_filename.startswith("hand") and \
+            arrived.suggested_filename.endswith(".glb")
+        gltf = pygltflib.GLTF2.load_from_bytes(open(arrived.path(), "rb").read())
+        assert gltf.animations and gltf.animations[0].channels
+        assert not page.errors, page.errors
+    finally:
+        page.close()
+
+
+EXTENT = """([tile, t]) => {
+  const p = window.eigendance.cpuPositions(tile, t);
+  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < p.length; i++) {
+    low[i % 3] = Math.min(low[i % 3], p[i]); high[i % 3] = Math.max(high[i % 3], p[i]);
+  }
+  return Math.hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+}"""
+
+
+def test_children_bred_in_the_page_stay_within_the_box(browser, live_server):
+    """Item 2: three calm tiles bred (seeds 5 and 7) give children whose drawn positions stay within
+    1.3× the model's bounding box over the song (read back at 4 frames a second)."""
+    page = open_app(browser, live_server["url"], "?test&size=8&path=cpu")
+    try:
+        rest = page.evaluate(EXTENT, [0, 0])  # tile 1 at 0:00, silent: the rest shape
+        duration = page.evaluate("window.eigendance.info().duration")
+        worst = 1.0
+        for seed in (5, 7):  # 1.46× and 1.43× as bred (k = 24, the demo song)
+            for tile in (5, 6, 7):
+                page.locator("#tiles > *").nth(tile).click(position={"x": 5, "y": 5})
+            assert page.evaluate("window.eigendance.info().selected") == [5, 6, 7]
+            page.evaluate(f"window.eigendance.breed({seed})")  # as *breed selected*, seeded
+            assert page.evaluate("window.eigendance.info().generation") > 0
+            assert page.evaluate("window.eigendance.info().error") is None
+            for tile in range(page.evaluate("window.eigendance.info().tiles")):
+                for t in np.arange(0.0, duration, 0.25):
+                    worst = max(worst, page.evaluate(EXTENT, [tile, float(t)]) / rest)
+            page.evaluate("window.eigendance.generation(0)")
+        print(f"children in the page grow to {worst:.2f}× the model's box")
+        assert worst <= 1.3
+    finally:
+        page.close()
+
+
+def test_x_while_a_model_computes_removes_that_model(browser, web_files, tmp_path):
+    """Item 3: while a dropped model computes its harmonics the menu names it, and ✕ removes
+    it (said as a removal, not as a failure to add it); the model on screen stays."""
+    bunny = "/work/shared/data/meshes/bunny_stanford.obj"
+    if not os.path.exists(bunny):
+        bunny = fixture_path("meshes", "fertility.off")
+    with running_server([CAT, web_files["song"], "-k", "200"], tmp_path,
+                        tmp_path / "cache") as server:
+        page = open_app(browser, server["url"], "?test&size=2")
+        try:
+            page.set_input_files("#upload", bunny)
+            page.wait_for_function("document.getElementById('loading-text').textContent"
+                                   ".includes('computing its harmonics')", timeout=60_000)
+            name = os.path.basename(bunny)
+            assert page.locator("#mesh option:checked").text_content() == name
+            page.click("#remove-mesh")
+            page.wait_for_function("document.getElementById('status').textContent"
+                                   ".includes('removed from the library')", timeout=60_000)
+            page.wait_for_function("document.getElementById('loading').hidden", timeout=60_000)
+            page.wait_for_timeout(500)
+            assert page.locator("#error").is_hidden(), page.locator("#error-text").text_content()
+            assert [m["name"] for m in library(server["url"])["meshes"]] == ["cat_lowres.obj"]
+            assert page.locator("#mesh option:checked").text_content() == "cat_lowres.obj"
+            assert not page.errors, page.errors
+        finally:
+            page.close()
+
+
+SHARED_RIGS = "/work/shared/data/rigged"
+
+
+def rig_files() -> list[str]:
+    folder = SHARED_RIGS if os.path.isdir(SHARED_RIGS) else fixture_path("rigged")
+    return sorted(os.path.join(folder, name) for name in os.listdir(folder)
+                  if name.endswith((".glb", ".gltf")))
+
+
+def test_high_modes_are_shown_slow_enough_to_see_and_say_both_frequencies(browser, live_server):
+    """Item 7: a mode above what a page shows plays time-scaled to 1.5 Hz at most, its tile
+    saying the natural and the shown frequency (the hand's last page: modes of 2–20 Hz)."""
+    page = open_app(browser, live_server["url"], "?test", 1280, 800)
+    try:
+        open_rig_from_menu(page, live_server["url"], "hand")
+        while page.locator("#rig-more-modes").is_enabled():
+            page.click("#rig-more-modes")
+        labels = page.locator("#rig-tiles .caption").all_text_contents()
+        assert labels and all(", shown at " in label for label in labels), labels
+        for label in labels:
+            natural, shown = (float(x.split(" Hz")[0]) for x in
+                              label.split(" · ")[1].split(", shown at "))
+            assert natural > 1.5 and shown == 1.5, label
+    finally:
+        page.close()
+
+
+@pytest.mark.xfail(strict=True, reason="not done: the frequencies are visible now, but the "
+                   "palette's amplitude of a high mode (a finger, an ear) moves under 0.1% of "
+                   "a 1280×800 page's tile on 167 tiles of the shared rigs (issue 30 item 7)")
+def test_every_tile_of_every_page_of_every_shared_rig_moves(browser, web_files, tmp_path):
+    """Item 7: the mode gallery plays each mode time-scaled into what a page can show (labelled
+    with the natural and the shown frequency): every tile of every page moves ≥ 0.1% of its
+    pixels between four times a quarter of a second apart (a 10 fps page's frames)."""
+    files = rig_files()
+    with running_server([*files, web_files["song"]], tmp_path, web_files["cache"]) as server:
+        page = open_app(browser, server["url"], "?test", 1280, 800)
+        try:
+            rigs = {rig["name"]: rig["id"] for rig in library(server["url"])["rigs"]}
+            still = []
+            for path in files:
+                name = os.path.basename(path)
+                if name not in rigs:
+                    continue
+                page.evaluate(f"window.eigendance.rig.open('{rigs[name]}')")
+                info = page.evaluate("window.eigendance.rig.info()")
+                if info["error"] or not info["k"]:
+                    continue
+                page.evaluate("window.eigendance.rig.live()")
+                for number in range(info["pages"]):
+                    page.evaluate(f"window.eigendance.rig.page({number})")
+                    labels = page.evaluate("window.eigendance.rig.labels()")
+                    frames = []
+                    for t in (0.2, 0.45, 0.7, 0.95):
+                        page.evaluate(f"window.eigendance.rig.renderAt({t})")
+                        frames.append([np.frombuffer(base64.b64decode(p), np.uint8)
+                                       .astype(float) for p in
+                                       page.evaluate("window.eigendance.rig.tileBytes(2)")])
+                    for tile, label in enumerate(labels):
+                        changed = max(np.mean(np.abs(frames[a][tile] - frames[b][tile]) > 24)
+                                      for a in range(4) for b in range(a))
+                        if changed < 0.001:
+                            still.append(f"{name} {label}: {changed:.4f}")
+            print("\n".join(still))
+            assert not still, f"{len(still)} still tiles"
+        finally:
+            page.close()
