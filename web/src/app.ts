@@ -366,8 +366,7 @@ export class App {
     if (failure && this.gallery.size !== null && this.rule === null) {
       failure = await this.newGallery(null); // the size asked for was refused: the default
     }
-    const served = options.mapping
-      ?? library.mappings.find((m) => m.origin === "file")?.id ?? null;
+    const served = options.mapping ?? library.mappings.find((m) => m.origin === "file")?.id ?? null;
     if (served) {
       const name = library.mappings.find((m) => m.id === served)?.name ?? "mapping";
       $<HTMLSelectElement>("mapping-menu").value = served;
