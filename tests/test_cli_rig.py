@@ -134,3 +134,28 @@ def test_modes_prints_the_default_palette(tmp_path, capsys):
     assert main(["modes", "loop16", "-o", str(tmp_path / "m.npz")]) == 0
     printed = capsys.readouterr().out
     assert "default palette: modes 0, 1, 2, 3" in printed and "time scale" in printed
+
+
+@pytest.mark.parametrize("tempo", ["free", "beat"])
+def test_animate_rig_tempo_flag_sets_the_palette_tempo(tmp_path, tempo):
+    """`--tempo free|beat` plays what a mapping whose palette says that tempo plays (the
+    Blender add-on's *On the beat* switch); the two differ on a song with beats."""
+    audio = fixture_path("audio", "beatnet_808kick120bpm.mp3")  # a real kick track: beats
+    output = tmp_path / f"{tempo}.npz"
+    assert main(["animate-rig", "hand", audio, "--tempo", tempo, "--fps", "24", "--duration",
+                 "6", "-o", str(output)]) == 0
+    rig = Rig.from_skeleton(load_rig("hand"))
+    spectrogram = Spectrogram.from_file(audio)
+    assert spectrogram.rhythm.has_beats
+    as_file = rig.mapping(spectrogram, None)
+    as_file = Mapping.from_json({**as_file.to_json(),
+                                 "modes": {**as_file.modes.to_json(), "tempo": tempo}})
+    with np.load(output) as data:
+        times, coefficients = data["times"], data["coefficients"]
+    np.testing.assert_allclose(coefficients, rig_coefficients(rig.model, spectrogram, as_file,
+                                                              times), rtol=1e-12, atol=1e-12)
+    other = "beat" if tempo == "free" else "free"
+    as_other = Mapping.from_json({**as_file.to_json(),
+                                  "modes": {**as_file.modes.to_json(), "tempo": other}})
+    assert not np.allclose(coefficients, rig_coefficients(rig.model, spectrogram, as_other,
+                                                          times))

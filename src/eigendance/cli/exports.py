@@ -146,7 +146,7 @@ def dance_from(args, mapping: Mapping | None) -> Dance:
         mapping = rig.mapping(spectrogram, mapping,
                               selected=parse_modes(args.modes, rig.model.n_modes),
                               amplitude=args.amplitude, time_scale=args.time_scale,
-                              offset=args.offset)
+                              offset=args.offset, tempo=args.tempo)
         dance = rig_dance(rig, spectrogram, mapping, args.skinning, song_of(args), name,
                           surface=surface_of(args, rig, spectrogram, mapping))
     else:

@@ -265,6 +265,9 @@ def add_palette_options(parser) -> None:
     group.add_argument("--offset", type=number(-1e6, 1e6), default=None,
                        help="the filter's offset b: 0 keeps silence still, 1 sways idly "
                             "(default: the mapping's, else 0)")
+    group.add_argument("--tempo", choices=("beat", "free"), default=None,
+                       help="beat: the sway turns on the song's beats; free: the thesis's "
+                            "free-running modes (default: the mapping's, else beat)")
     group.add_argument("--skinning", choices=("modal", "lbs"), default="modal",
                        help="modal (default, first-order, as live) or lbs (exact body "
                             "transforms, linear blend: what a glTF skin plays exactly)")

@@ -175,7 +175,8 @@ def run_animate_rig(args) -> None:
     times = frame_times(window.duration, args.fps)
     mapping = rig.mapping(spectrogram, mapping, selected=parse_modes(args.modes, model.n_modes),
                           amplitude=args.amplitude, time_scale=args.time_scale,
-                          offset=args.offset, bands=args.bands)
+                          offset=args.offset, bands=args.bands,
+                          tempo=args.tempo)
     palette = rig.palette_of(mapping)
     check_rig_animation(rig, len(times), args.output)
     coefficients = rig.coefficients(spectrogram, mapping, window.start + times)

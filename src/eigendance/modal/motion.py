@@ -306,7 +306,7 @@ def default_mapping(spectrogram: Spectrogram, n_modes: int) -> Mapping:
 def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
                 mapping: Mapping | None = None, selected=None, amplitude: float | None = None,
                 time_scale: float | None = None, offset: float | None = None,
-                bands: int = 64) -> Mapping:
+                bands: int = 64, tempo: str | None = None) -> Mapping:
     """The complete mapping a rig plays, its palette resolved, with a person's overrides.
 
     Parameters
@@ -319,6 +319,9 @@ def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
     amplitude : every selected mode's largest body rotation at φ = 1, radians.
     time_scale : s.
     offset : b.
+    bands : the filter's bands when there is neither a song nor a mapping.
+    tempo : "beat" (locked to the song's beats, docs/design.md#tempo-lock) or "free" (the
+        thesis's free-running sinusoids) instead of the mapping's, or None (the mapping's).
 
     Returns
     -------
@@ -335,6 +338,10 @@ def rig_mapping(model: ModalModel, spectrogram: Spectrogram | None,
         settings = replace(settings, amplitudes=np.full(count, float(amplitude)))
     if time_scale is not None:
         settings = replace(settings, time_scale=float(time_scale))
+    if tempo is not None:
+        if tempo not in ("beat", "free"):
+            raise InputError(f"tempo must be \"beat\" or \"free\", not {tempo!r}")
+        settings = replace(settings, tempo=tempo)
     palette = resolve_palette(model, settings)
     if mapping is None:
         mapping = band_mapping(bands, len(palette.selected)) if spectrogram is None else \

@@ -278,6 +278,7 @@ class EIGENDANCE_OT_dance_rig(Bake, bpy.types.Operator):
     modes: props.MODES
     amplitude: props.AMPLITUDE
     time_scale: props.TIME_SCALE
+    on_beat: props.ON_BEAT
     options: props.OPTIONS
 
     def start_job(self, context) -> None:
@@ -296,7 +297,8 @@ class EIGENDANCE_OT_dance_rig(Bake, bpy.types.Operator):
         self.object_name, self.song_file, self.rig_path = armature.name, song, rig
         palette = (["--modes", self.modes] if self.modes else []) + \
             (["--amplitude", repr(self.amplitude)] if self.amplitude else []) + \
-            (["--time-scale", repr(self.time_scale)] if self.time_scale else [])
+            (["--time-scale", repr(self.time_scale)] if self.time_scale else []) + \
+            ["--tempo", "beat" if self.on_beat else "free"]
         self.output = os.path.join(self.folder, "rig.npz")
         extra = self.options.split()
         self.run([*words, "animate-rig", rig, song, "--skinning", "lbs", *palette, *extra,

@@ -1,7 +1,7 @@
 """The dance settings, defined once: the operators' parameters and the scene's settings that
 the panel shows and passes to them (tooltips and defaults included)."""
 
-from bpy.props import FloatProperty, IntProperty, StringProperty
+from bpy.props import BoolProperty, FloatProperty, IntProperty, StringProperty
 
 SONG = StringProperty(name="Song", subtype="FILE_PATH",
                       description="The song (WAV, MP3, Ogg, FLAC): it drives the dance and is "
@@ -31,6 +31,9 @@ AMPLITUDE = FloatProperty(name="Amplitude", default=0.0, min=0.0, max=3.14159,
                                       "radians (0: the default)")
 TIME_SCALE = FloatProperty(name="Time scale", default=0.0, min=0.0, max=1000.0,
                            description="Multiply the natural frequencies (0: the default)")
+ON_BEAT = BoolProperty(name="On the beat", default=True,
+                       description="The sway turns on the song's beats (off: the modes run free "
+                                   "at their own frequencies, as in the thesis)")
 OPTIONS = StringProperty(name="More options", default="",
                          description="More options of `eigendance animate-rig`, as typed on "
                                      "its command line (e.g. --offset 1)")

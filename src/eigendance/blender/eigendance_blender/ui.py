@@ -41,6 +41,7 @@ class EigendanceSettings(bpy.types.PropertyGroup):
     modes: props.MODES
     amplitude: props.AMPLITUDE
     time_scale: props.TIME_SCALE
+    on_beat: props.ON_BEAT
     options: props.OPTIONS
 
 
@@ -86,10 +87,10 @@ class EIGENDANCE_PT_panel(bpy.types.Panel):
             layout.operator("eigendance.gallery_stop", icon="CANCEL")
 
     def draw_rig(self, layout, settings):
-        for name in ("rig_file", "modes", "amplitude", "time_scale", "options"):
+        for name in ("rig_file", "modes", "amplitude", "time_scale", "on_beat", "options"):
             layout.prop(settings, name)
         op = layout.operator("eigendance.dance_rig", icon="ARMATURE_DATA")
-        for name in (*SHARED, "rig_file", "modes", "amplitude", "time_scale", "options"):
+        for name in (*SHARED, "rig_file", "modes", "amplitude", "time_scale", "on_beat", "options"):
             setattr(op, name, getattr(settings, name))
 
 
