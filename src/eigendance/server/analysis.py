@@ -28,8 +28,9 @@ from eigendance.modal.gltf_skin import has_skin
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.modal.skeleton import Skeleton
+from eigendance.music.analyser import BANDS, RATE
 from eigendance.music.decode import SOUNDFILE_MAGIC, SOUNDFILE_SUFFIXES
-from eigendance.music.spectrogram import BANDS, RATE, Spectrogram
+from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 
