@@ -1,11 +1,16 @@
 """The rhythm on real recordings against librosa's default call, bars (meter and phase) and
 sections (docs/design.md#rhythm)."""
 
+from dataclasses import replace
+
 import librosa
 import mir_eval
 import numpy as np
 import pytest
 
+from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import mode_coefficients, tempo_lock
+from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.decode import read_audio
 from eigendance.music.rhythm import beat_phase
 from eigendance.music.spectrogram import Spectrogram
@@ -102,3 +107,23 @@ def test_downbeats_and_sections_round_trip_and_old_files_load(tmp_path):
     np.savez(tmp_path / "older.npz", **arrays)
     assert len(Spectrogram.load(tmp_path / "older.npz").rhythm.sections) == 0
     assert np.all(np.isfinite(beat_phase(song.rhythm.beats, [0.0, 5.0])))
+
+
+def test_the_rig_lock_accents_each_bars_first_beat():
+    """A locked sway's turning points fall on the beats (|sin| = 1 there); on a bar's first
+    beat it reaches a quarter further (docs/design.md#tempo-lock): the motion's magnitude at the
+    downbeats over that at the other beats is 1.25, on a song with hand-placed beats in 3."""
+    song = Spectrogram.from_samples(np.zeros(SR * 8), SR, bands=16)
+    beats = 0.5 + 0.5 * np.arange(14)  # 120 BPM
+    song.rhythm = replace(song.rhythm, beats=beats, tempo=120.0, downbeats=beats[1::3])
+    model = ModalModel.from_skeleton(sample_rig("loop8"))
+    c = mode_coefficients(model, beats, beat=tempo_lock(song, None, beats))
+    magnitude = np.abs(c).max(axis=1)
+    down = np.isin(beats, beats[1::3])
+    assert magnitude[~down].min() > 0
+    np.testing.assert_allclose(magnitude[down] / magnitude[~down].mean(), 1.25, rtol=1e-9)
+    np.testing.assert_allclose(magnitude[~down], magnitude[~down].mean(), rtol=1e-9)
+    # half a beat from a downbeat: 1 + ¼·cos²(π/4) = 1.125 of the free amplitude
+    half = beats[4] + 0.25
+    accent = tempo_lock(song, None, [half])[2]
+    np.testing.assert_allclose(accent, [1.125], rtol=1e-12)

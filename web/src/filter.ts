@@ -236,6 +236,29 @@ export function beatPhase(beats: ArrayLike<number>, t: number): number {
   return low + (t - beats[low]) / (beats[low + 1] - beats[low]);
 }
 
+/** How much further the tempo-locked sway reaches on a bar's first beat
+ * (eigendance.music.rhythm.DOWNBEAT_ACCENT). */
+export const DOWNBEAT_ACCENT = 0.25;
+
+/** The tempo lock at time t: B(t), the tempo and the bar's accent 1 + A·cos²(πx/2) for
+ * |x| < 1 (else 1), x = B(t) − B(d) for the downbeat d nearest in beats; 1 without bars
+ * (eigendance.music.rhythm.Rhythm.downbeat_accent). Needs `hasBeats`. */
+export function beatLock(spectrum: Spectrum, t: number): { phase: number; tempo: number;
+    accent: number } {
+  const { beats, downbeats } = spectrum;
+  const phase = beatPhase(beats, t);
+  let accent = 1;
+  if (spectrum.meter > 0 && downbeats.length >= 2) {
+    let after = 0; // the first downbeat after t, clipped to 1 … n − 1
+    while (after < downbeats.length && downbeats[after] <= t) after++;
+    after = Math.min(Math.max(after, 1), downbeats.length - 1);
+    const x = Math.min(Math.abs(phase - beatPhase(beats, downbeats[after - 1])),
+      Math.abs(phase - beatPhase(beats, downbeats[after])));
+    if (x < 1) accent += DOWNBEAT_ACCENT * Math.cos((Math.PI * x) / 2) ** 2;
+  }
+  return { phase, tempo: spectrum.tempo, accent };
+}
+
 /** Amplification resampled to k entries by normalised index (docs/design.md#mapping). */
 export function resampleAmplification(amplification: number[], k: number): Float64Array {
   const K = amplification.length;
