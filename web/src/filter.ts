@@ -37,6 +37,8 @@ export interface Mapping {
   look?: { deformed_normal_weight?: number; shading?: Shading; materials?: boolean };
   envelope?: EnvelopeJSON | null;
   pulse?: PulseJSON | null;
+  /** the section gene: a gain factor per part of the song, cycled (absent: none) */
+  sections?: number[] | null;
 }
 
 /** What the player applies besides transfer and amplification: all of it is in the mapping. */
@@ -282,6 +284,8 @@ export interface Prepared {
   envelope: Envelope;
   /** the pulse (amount 0: none) */
   pulse: Pulse;
+  /** the section gene's gain factors (empty: none; `sectionGain`) */
+  sections: Float64Array;
 }
 
 export function prepare(mapping: Mapping, k: number): Prepared {
@@ -292,7 +296,18 @@ export function prepare(mapping: Mapping, k: number): Prepared {
   const { gain, smoothing } = settingsOf(mapping);
   return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k),
     gain, smoothing, envelope: envelopeOf(mapping, mapping.transfer.length),
-    pulse: pulseOf(mapping, k) };
+    pulse: pulseOf(mapping, k), sections: Float64Array.from(mapping.sections ?? []) };
+}
+
+/** g(t), the section gene's factor at time t: sections[s mod n] with s the song's section
+ * starts ≤ t; 1 without the gene or the song's sections (eigendance.music.mapping.Mapping
+ * .section_gain). */
+export function sectionGain(prepared: Prepared, starts: ArrayLike<number>, t: number): number {
+  const gene = prepared.sections;
+  if (!gene || gene.length === 0 || starts.length === 0) return 1;
+  let part = 0;
+  while (part < starts.length && starts[part] <= t) part++;
+  return gene[part % gene.length];
 }
 
 /** The harmonics a mapping moves: reached by a band and amplified (ascending). */

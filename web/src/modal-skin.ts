@@ -56,9 +56,9 @@ export function modeTile(rig: Rig, mode: number, timeScale: number): RigPrepared
 /** φ_ν = gain·a(ν)·Σ g̃ + b over the selected modes (band values after the mapping's
  * smoothing); null band values (no song) or music off: φ ≡ 1. */
 export function modeDrive(prepared: RigPrepared, bandValues: ArrayLike<number> | null,
-                          kick = 0): Float64Array {
+                          kick = 0, gain = prepared.gain): Float64Array {
   if (!prepared.music || bandValues === null) return new Float64Array(prepared.k).fill(1);
-  const phi = filterValues(prepared, bandValues, prepared.gain, undefined, kick); // + 1
+  const phi = filterValues(prepared, bandValues, gain, undefined, kick); // + 1
   for (let v = 0; v < phi.length; v++) phi[v] += prepared.offset - 1;
   return phi;
 }
@@ -181,7 +181,8 @@ export class RigMotion {
   drive(prepared: RigPrepared, t: number): Float64Array {
     const music = prepared.music && this.music.spectrum;
     const bands = music ? this.music.bandValuesAt(t, prepared) : null;
-    return modeDrive(prepared, bands, music ? this.music.kick(prepared, t) : 0);
+    return modeDrive(prepared, bands, music ? this.music.kick(prepared, t) : 0,
+      prepared.gain * (music ? this.music.sectionGain(prepared, t) : 1));
   }
 
   weights(prepared: Prepared, t: number): Float32Array {
