@@ -37,7 +37,7 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.files import checked_array
 from eigendance.music.constants import ANALYSIS
-from eigendance.music.onset import FRAME_RATE
+from eigendance.music.onset import ENVELOPE_LAG, FRAME_RATE
 from eigendance.music.structure import bars, sections
 
 # From analysis.json, which the page's live analysis reads too:
@@ -294,8 +294,9 @@ def analyse_rhythm(envelope, rate: float, features) -> Rhythm:
     beats = np.asarray(frames, dtype=np.float64) / FRAME_RATE
     if len(beats) < MIN_BEATS:
         return Rhythm(envelope, onsets, beats, 0.0, float(rate))
-    downbeats = beats[bars(frames, decibels, chroma)]
-    parts = sections(frames, decibels, chroma, len(median) / FRAME_RATE)
+    at = np.maximum(np.asarray(frames) - ENVELOPE_LAG, 0)  # the beats' mel frames
+    downbeats = beats[bars(at, decibels, chroma)]
+    parts = sections(at, decibels, chroma, len(median) / FRAME_RATE)
     return Rhythm(envelope, onsets, beats, tempo, float(rate), downbeats, parts)
 
 
