@@ -25,12 +25,16 @@ classical), scored against the beats of librosa's default call: no annotations.
 4. Agreement on the eleven shared real recordings (whole files, no annotations): our tempo and
    librosa's default call's, beat F of ours against its beats (±70 ms, first 5 s trimmed; not
    trimmed for a file shorter than 10 s), the meter and the number of sections we find, and
-   the rhythm's CPU seconds per minute of audio. Downbeat F (1.) is ours against the pieces'
+   the rhythm's CPU seconds per minute of audio, and the bars' consistency: each
+   WINDOW-second window of the song analysed alone (the whole analysis, beats included), its
+   downbeats scored against the whole song's downbeats in that window (F at ±70 ms, mean over
+   the windows; 1.00: every part of the song alone chose the same bar phase as the whole), and
+   how many windows chose the whole song's meter. Downbeat F (1.) is ours against the pieces'
    bars; librosa's default call has no downbeats: beside it, every 4th of its beats from the
    first (a naive bar).
 
 Run: EIGENDANCE_SHARED_DATA=/path/to/shared/data .venv/bin/python benchmarks/bench_rhythm.py
-(`--real` runs 4. alone).
+(`--real` runs 4. alone; `--bars` runs 4. and 1., not the dances).
 """
 
 from __future__ import annotations
@@ -53,6 +57,7 @@ from rhythm_pieces import PIECES  # noqa: E402
 from shared_data import shared_path  # noqa: E402
 
 TOLERANCE = 0.07
+WINDOW = 30.0  # s: the windows of the bars' consistency (4.)
 
 
 def beat_f(reference, estimate) -> float:
@@ -220,7 +225,8 @@ def agreement() -> None:
     names = sorted(n for n in os.listdir(folder) if n.endswith((".ogg", ".mp3")))
     print("\nshared real recordings (no annotations): ours vs librosa's default call")
     print(f"{'recording':34s} {'s':>6s} {'tempo ours':>10s} {'librosa':>8s} {'beat F':>7s} "
-          f"{'meter':>5s} {'sections':>8s} {'rhythm CPU s/min':>16s}")
+          f"{'meter':>5s} {'sections':>8s} {'rhythm CPU s/min':>16s} {'bar consistency':>15s} "
+          f"{'same meter':>10s}")
     for name in names:
         rate, chunks = open_audio(os.path.join(folder, name))
         samples = np.concatenate(list(chunks))
@@ -237,9 +243,30 @@ def agreement() -> None:
         short = song.duration < 10
         f = mir_eval.beat.f_measure(np.asarray(beats), rhythm.beats) if short else \
             beat_f(beats, rhythm.beats)
+        consistency, meters = bar_consistency(samples, rate, rhythm)
         print(f"{name[:34]:34s} {song.duration:6.1f} {rhythm.tempo:10.1f} "
               f"{float(np.ravel(tempo)[0]):8.1f} {f:7.2f} {rhythm.meter:5d} "
-              f"{len(rhythm.sections):8d} {rhythm_time:16.2f}")
+              f"{len(rhythm.sections):8d} {rhythm_time:16.2f} {consistency:>15s} {meters:>10s}")
+
+
+def bar_consistency(samples, rate, rhythm) -> tuple[str, str]:
+    """Each WINDOW-s window analysed alone: mean downbeat F against the whole song's
+    downbeats within it (a second at either end left out), and windows of the same meter /
+    windows."""
+    size = int(WINDOW * rate)
+    if not len(rhythm.downbeats) or len(samples) < size:
+        return "–", "–"
+    scores, same = [], 0
+    for start in range(0, len(samples) - size + 1, size):
+        part = Spectrogram.from_samples(samples[start:start + size], rate).rhythm
+        offset = start / rate
+        whole = rhythm.downbeats[(rhythm.downbeats >= offset + 1.0)
+                                 & (rhythm.downbeats <= offset + WINDOW - 1.0)] - offset
+        alone = part.downbeats[(part.downbeats >= 1.0) & (part.downbeats <= WINDOW - 1.0)]
+        scores.append(mir_eval.beat.f_measure(whole, alone))
+        same += part.meter == rhythm.meter
+    return f"{np.mean(scores):.2f}", f"{same}/{len(scores)}"
+
 
 
 def main() -> None:
@@ -250,6 +277,8 @@ def main() -> None:
         return
     with tempfile.TemporaryDirectory() as folder:
         songs = analysis(clips(folder))
+    if "--bars" in sys.argv:
+        return
     songs.update(real_songs())
     harmonics(songs)
     rigs(songs)

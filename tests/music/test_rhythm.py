@@ -325,7 +325,8 @@ def turning_points(signal, rate):
 
 def test_rig_dance_locks_to_the_beats(analysed):
     """The main sway of loop8's default dance turns on the beats (or half-beats) of a drifting
-    drum loop; free-running it does not; the locked formula is c = φ·μ·sin(2π r B(t) + γ′)."""
+    drum loop; free-running it does not; the locked formula is c = φ·μ·α(t)·sin(2π r B(t) + γ′),
+    α the bar's accent."""
     song, beats = analysed["drum loop drifting 105 → 128 BPM"]
     rig = Rig(sample_rig("loop8"))
     halves = np.sort(np.concatenate([beats, (beats[:-1] + beats[1:]) / 2]))
@@ -353,8 +354,12 @@ def test_rig_dance_locks_to_the_beats(analysed):
     amplitude = drive[:, palette.selected] / np.sin(free_angle)
     ratios = lock_ratios(rig.model.frequencies[palette.selected], palette.time_scale,
                          song.rhythm.tempo)
-    expected = amplitude * np.sin(2 * np.pi * ratios * phase[:, None]
-                                  + locked_phases(palette.phases))
+    # the bar's accent by hand: 1 + ¼·cos²(πx/2) within a beat x of a downbeat's beat number
+    x = np.abs(phase[:, None] - np.searchsorted(detected, song.rhythm.downbeats)).min(axis=1)
+    accent = 1 + 0.25 * np.where(x < 1, np.cos(np.pi * x / 2) ** 2, 0)
+    assert accent.max() > 1.05  # the times reach near a downbeat
+    expected = amplitude * accent[:, None] * np.sin(2 * np.pi * ratios * phase[:, None]
+                                                    + locked_phases(palette.phases))
     locked = rig.coefficients(song, mapping, times)[:, palette.selected]
     np.testing.assert_allclose(locked, expected, rtol=1e-6, atol=1e-12)
     # The exports play the Rig's motion: a dance and its window (the song's start + t) locked.

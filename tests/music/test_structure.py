@@ -1,13 +1,20 @@
 """The rhythm on real recordings against librosa's default call, bars (meter and phase) and
 sections (docs/design.md#rhythm)."""
 
+from dataclasses import replace
+
 import librosa
 import mir_eval
 import numpy as np
 import pytest
 
+from eigendance.errors import InputError
+from eigendance.modal.model import ModalModel
+from eigendance.modal.motion import mode_coefficients, tempo_lock
+from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.decode import read_audio
-from eigendance.music.rhythm import beat_phase
+from eigendance.music.mapping import Mapping
+from eigendance.music.rhythm import Rhythm, beat_phase
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.music.structure import bar_scores
 from helpers import fixture_path
@@ -102,3 +109,53 @@ def test_downbeats_and_sections_round_trip_and_old_files_load(tmp_path):
     np.savez(tmp_path / "older.npz", **arrays)
     assert len(Spectrogram.load(tmp_path / "older.npz").rhythm.sections) == 0
     assert np.all(np.isfinite(beat_phase(song.rhythm.beats, [0.0, 5.0])))
+
+
+def test_the_rig_lock_accents_each_bars_first_beat():
+    """A locked sway's turning points fall on the beats (|sin| = 1 there); on a bar's first
+    beat it reaches a quarter further (docs/design.md#tempo-lock): the motion's magnitude at the
+    downbeats over that at the other beats is 1.25, on a song with hand-placed beats in 3."""
+    song = Spectrogram.from_samples(np.zeros(SR * 8), SR, bands=16)
+    beats = 0.5 + 0.5 * np.arange(14)  # 120 BPM
+    song.rhythm = replace(song.rhythm, beats=beats, tempo=120.0, downbeats=beats[1::3])
+    model = ModalModel.from_skeleton(sample_rig("loop8"))
+    c = mode_coefficients(model, beats, beat=tempo_lock(song, None, beats))
+    magnitude = np.abs(c).max(axis=1)
+    down = np.isin(beats, beats[1::3])
+    assert magnitude[~down].min() > 0
+    np.testing.assert_allclose(magnitude[down] / magnitude[~down].mean(), 1.25, rtol=1e-9)
+    np.testing.assert_allclose(magnitude[~down], magnitude[~down].mean(), rtol=1e-9)
+    # half a beat from a downbeat: 1 + ¼·cos²(π/4) = 1.125 of the free amplitude
+    half = beats[4] + 0.25
+    accent = tempo_lock(song, None, [half])[2]
+    np.testing.assert_allclose(accent, [1.125], rtol=1e-12)
+
+
+def test_a_section_gene_scales_the_dance_per_part_and_old_mappings_play_as_before():
+    """g(t) = sections[s mod n], s the section starts ≤ t: φ − b = g·(φ without the gene − b),
+    by hand on a song whose parts start at 2 s and 4 s (three parts, a two-factor gene)."""
+    rate = 100.0
+    values = np.random.default_rng(3).random((601, 4)).astype(np.float32)
+    song = Spectrogram(np.arange(601) / rate, [20.0, 200.0, 2000.0, 5000.0, 10000.0], values,
+                       rate, 22050, 6.0)
+    song.rhythm = Rhythm(np.zeros(601), np.zeros(0), np.zeros(0), 0.0, rate,
+                         sections=np.array([2.0, 4.0]))
+    plain = Mapping([0.1, 0.4, 0.6, 0.9], [1.0, -2.0, 0.5], offset=0.3)
+    gene = replace(plain, sections=(0.5, 2.0))
+    times = np.array([0.5, 1.99, 2.0, 3.5, 4.5, 5.9])
+    factor = np.array([0.5, 0.5, 2.0, 2.0, 0.5, 0.5])  # parts 0, 1, 2 → 0.5, 2, 0.5 (cycled)
+    without = plain.play(song, times, 3, offset=0.3)
+    np.testing.assert_allclose(gene.play(song, times, 3, offset=0.3) - 0.3,
+                               factor[:, None] * (without - 0.3), rtol=1e-12, atol=1e-12)
+    # round trip; a document without the field (every file written before it) plays as before
+    document = gene.to_json()
+    assert document["sections"] == [0.5, 2.0] and "sections" not in plain.to_json()
+    assert Mapping.from_json(document).to_json() == document
+    np.testing.assert_array_equal(Mapping.from_json(plain.to_json()).play(song, times, 3),
+                                  plain.play(song, times, 3))
+    # a song without sections: g ≡ 1
+    bare = replace(song, rhythm=replace(song.rhythm, sections=np.zeros(0)))
+    np.testing.assert_array_equal(gene.play(bare, times, 3), plain.play(bare, times, 3))
+    for bad in ([], [-1.0], [11.0], ["x"], [1.0] * 65):
+        with pytest.raises(InputError, match="sections"):
+            Mapping.from_json({**document, "sections": bad})

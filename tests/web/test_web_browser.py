@@ -520,7 +520,7 @@ def test_live_playback_follows_the_audio_clock_and_records_webm_with_audio(brows
                            timeout=20_000)
     with page.expect_download() as download:
         page.click("#record")
-    assert download.value.suggested_filename == "eigendance.webm"
+    assert download.value.suggested_filename == "cat_lowres-dance.webm"
     with open(download.value.path(), "rb") as file:
         video = file.read()
     assert video[:4] == b"\x1a\x45\xdf\xa3"  # EBML: WebM

@@ -31,7 +31,7 @@ def recording(browser, live_server, tmp_path_factory):
     with page.expect_download(timeout=30_000) as download:
         page.click("#record")
         span = time.monotonic() - started
-    assert download.value.suggested_filename == "eigendance.webm"
+    assert download.value.suggested_filename == "cat_lowres-dance.webm"
     path = tmp_path_factory.mktemp("recording") / "eigendance.webm"
     download.value.save_as(path)
     page.recorded_view = box

@@ -160,6 +160,7 @@ def rhythm_reference(basis):
             rig.model, song, mapping, times).tolist()})
     reference = {"times": RHYTHM_TIMES, "frames_step": 37, "beats": song.rhythm.beats.tolist(),
                  "phase": song.rhythm.beat_phase(times).tolist(), "tempo": song.rhythm.tempo,
+                 "accent": song.rhythm.downbeat_accent(times).tolist(),
                  "cases": cases, "rig_cases": rig_cases}
     return {"rhythm.json": json.dumps(reference, indent=0).encode(),
             "rhythm.bin": spectrogram_bundle(song, "clicks-6s")}

@@ -113,8 +113,14 @@ export interface Spectrum {
   /** the song's beats and onsets, s (docs/design.md#rhythm; empty without them) */
   beats: Float32Array;
   onsets: Float32Array;
+  /** the beats that start a bar and the starts of the song's parts after the first, s
+   * (docs/design.md#rhythm; empty without them: a live take has neither) */
+  downbeats: Float32Array;
+  sections: Float32Array;
   /** beats per minute, 0: no beat */
   tempo: number;
+  /** beats per bar, 0: no bars */
+  meter: number;
 }
 
 export function spectrumFromBundle(bundle: Bundle): Spectrum {
@@ -126,6 +132,8 @@ export function spectrumFromBundle(bundle: Bundle): Spectrum {
     bandEdges: a.band_edges.data as Float32Array,
     beats: (a.beats?.data as Float32Array) ?? new Float32Array(0),
     onsets: (a.onsets?.data as Float32Array) ?? new Float32Array(0),
-    tempo: bundle.meta.tempo ?? 0,
+    downbeats: (a.downbeats?.data as Float32Array) ?? new Float32Array(0),
+    sections: (a.sections?.data as Float32Array) ?? new Float32Array(0),
+    tempo: bundle.meta.tempo ?? 0, meter: bundle.meta.meter ?? 0,
   };
 }

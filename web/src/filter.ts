@@ -39,9 +39,10 @@ export interface Mapping {
   look?: { deformed_normal_weight?: number; shading?: Shading; materials?: boolean };
   envelope?: EnvelopeJSON | null;
   pulse?: PulseJSON | null;
-  /** the basis it was made on: `eigendance animate` solves the same
-   * (docs/design.md#mapping-file) */
+  /** the basis it was made on: `eigendance animate` solves the same (design.md#mapping-file) */
   basis?: BasisRecord | null;
+  /** the section gene: a gain factor per part of the song, cycled (absent: none) */
+  sections?: number[] | null;
 }
 
 /** What a mapping records of the basis it was made on
@@ -198,6 +199,29 @@ export function beatPhase(beats: ArrayLike<number>, t: number): number {
   return low + (t - beats[low]) / (beats[low + 1] - beats[low]);
 }
 
+/** How much further the tempo-locked sway reaches on a bar's first beat
+ * (eigendance.music.rhythm.DOWNBEAT_ACCENT). */
+export const DOWNBEAT_ACCENT = 0.25;
+
+/** The tempo lock at time t: B(t), the tempo and the bar's accent 1 + A·cos²(πx/2) for
+ * |x| < 1 (else 1), x = B(t) − B(d) for the downbeat d nearest in beats; 1 without bars
+ * (eigendance.music.rhythm.Rhythm.downbeat_accent). Needs `hasBeats`. */
+export function beatLock(spectrum: Spectrum, t: number): { phase: number; tempo: number;
+    accent: number } {
+  const { beats, downbeats } = spectrum;
+  const phase = beatPhase(beats, t);
+  let accent = 1;
+  if (spectrum.meter > 0 && downbeats.length >= 2) {
+    let after = 0; // the first downbeat after t, clipped to 1 … n − 1
+    while (after < downbeats.length && downbeats[after] <= t) after++;
+    after = Math.min(Math.max(after, 1), downbeats.length - 1);
+    const x = Math.min(Math.abs(phase - beatPhase(beats, downbeats[after - 1])),
+      Math.abs(phase - beatPhase(beats, downbeats[after])));
+    if (x < 1) accent += DOWNBEAT_ACCENT * Math.cos((Math.PI * x) / 2) ** 2;
+  }
+  return { phase, tempo: spectrum.tempo, accent };
+}
+
 /** Amplification resampled to k entries by normalised index (docs/design.md#mapping). */
 export function resampleAmplification(amplification: number[], k: number): Float64Array {
   const K = amplification.length;
@@ -221,6 +245,8 @@ export interface Prepared {
   envelope: Envelope;
   /** the pulse (amount 0: none) */
   pulse: Pulse;
+  /** the section gene's gain factors (empty: none; `sectionGain`) */
+  sections: Float64Array;
 }
 
 export function prepare(mapping: Mapping, k: number): Prepared {
@@ -231,7 +257,18 @@ export function prepare(mapping: Mapping, k: number): Prepared {
   const { gain, smoothing } = settingsOf(mapping);
   return { k, harmonicOfBand, amplification: resampleAmplification(mapping.amplification, k),
     gain, smoothing, envelope: envelopeOf(mapping, mapping.transfer.length),
-    pulse: pulseOf(mapping, k) };
+    pulse: pulseOf(mapping, k), sections: Float64Array.from(mapping.sections ?? []) };
+}
+
+/** g(t), the section gene's factor at time t: sections[s mod n] with s the song's section
+ * starts ≤ t; 1 without the gene or the song's sections (eigendance.music.mapping.Mapping
+ * .section_gain). */
+export function sectionGain(prepared: Prepared, starts: ArrayLike<number>, t: number): number {
+  const gene = prepared.sections;
+  if (!gene || gene.length === 0 || starts.length === 0) return 1;
+  let part = 0;
+  while (part < starts.length && starts[part] <= t) part++;
+  return gene[part % gene.length];
 }
 
 /** The harmonics a mapping moves: reached by a band and amplified (ascending). */

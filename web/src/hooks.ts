@@ -120,6 +120,7 @@ function galleryHooks(app: App) {
       detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
       said: viewer.resolution.describe(), pixelRatio: viewer.renderer.getPixelRatio() }),
     /** The export panel's request for the window in its fields (what `export` would send). */
+    exportRequest: () => app.exporter.request(),
   };
 }
 

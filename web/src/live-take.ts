@@ -27,7 +27,8 @@ export class LiveTake {
     this.spectrum = { name, rate: RATE, frames: 1, bands: BANDS, duration: 0,
       times: new Float32Array(FIRST_CAPACITY), values: new Float32Array(FIRST_CAPACITY * BANDS),
       bandEdges: Float32Array.from(bandEdges(sampleRate)), beats: new Float32Array(0),
-      onsets: new Float32Array(0), tempo: 0, live: true, revision: 0,
+      onsets: new Float32Array(0), downbeats: new Float32Array(0), sections: new Float32Array(0),
+      tempo: 0, meter: 0, live: true, revision: 0,
       onsetStrength: new Float32Array(FIRST_CAPACITY) };
   }
 

@@ -2,7 +2,7 @@
 // the mode coefficients c(t) of `eigendance.modal.motion.rig_coefficients`, the shader weights
 // that turn the harmonics' positions pass into GPU modal skinning (thesis §6.5), and the body
 // poses that move bones and three.js linear blend skinning. Same numbers as the Python.
-import { beatPhase, filterValues, hasBeats, prepare } from "./filter";
+import { beatLock, filterValues, hasBeats, prepare } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import type { Motion } from "./motion";
 import type { ModeSettings, Rig } from "./rig-bundle";
@@ -56,18 +56,19 @@ export function modeTile(rig: Rig, mode: number, timeScale: number): RigPrepared
 /** φ_ν = gain·a(ν)·Σ g̃ + b over the selected modes (band values after the mapping's
  * smoothing); null band values (no song) or music off: φ ≡ 1. */
 export function modeDrive(prepared: RigPrepared, bandValues: ArrayLike<number> | null,
-                          kick = 0): Float64Array {
+                          kick = 0, gain = prepared.gain): Float64Array {
   if (!prepared.music || bandValues === null) return new Float64Array(prepared.k).fill(1);
-  const phi = filterValues(prepared, bandValues, prepared.gain, undefined, kick); // + 1
+  const phi = filterValues(prepared, bandValues, gain, undefined, kick); // + 1
   for (let v = 0; v < phi.length; v++) phi[v] += prepared.offset - 1;
   return phi;
 }
 
 /** c (k) at time t: c_{κ_ν} = φ_ν·(A_ν / reach_{κ_ν})·sin(2π ν_{κ_ν} s t + γ_ν), 0 elsewhere
- * (`rig_coefficients`); locked to the beats (`beat`: B(t) and the tempo), the angle is
+ * (`rig_coefficients`); locked to the beats (`beat`: B(t), the tempo, the bar's accent), the angle is
  * 2π r_ν B(t) + γ′_ν instead (docs/design.md#tempo-lock). */
 export function rigCoefficients(rig: Rig, prepared: RigPrepared, phi: ArrayLike<number>, t: number,
-                                out?: Float64Array, beat?: { phase: number; tempo: number }):
+                                out?: Float64Array,
+                                beat?: { phase: number; tempo: number; accent?: number }):
     Float64Array {
   const c = out ?? new Float64Array(rig.k);
   c.fill(0);
@@ -77,7 +78,7 @@ export function rigCoefficients(rig: Rig, prepared: RigPrepared, phi: ArrayLike<
       ? 2 * Math.PI * lockRatio(rig.frequencies[mode], prepared.timeScale, beat.tempo) * beat.phase
         + lockedPhase(prepared.phases[v])
       : 2 * Math.PI * rig.frequencies[mode] * prepared.timeScale * t + prepared.phases[v];
-    c[mode] = phi[v] * mu * Math.sin(angle);
+    c[mode] = phi[v] * mu * Math.sin(angle) * (beat?.accent ?? 1);
   });
   return c;
 }
@@ -165,20 +166,23 @@ export class RigMotion {
       this.beat(prepared, t));
   }
 
-  /** B(t) and the tempo when `prepared` locks to the song's beats, else undefined. */
-  beat(prepared: RigPrepared, t: number): { phase: number; tempo: number } | undefined {
+  /** B(t), the tempo and the bar's accent when `prepared` locks to the song's beats, else
+   * undefined. */
+  beat(prepared: RigPrepared, t: number): { phase: number; tempo: number; accent: number } |
+      undefined {
     const spectrum = this.music.spectrum;
     if (!prepared.lock || prepared.tempo === "free" || !spectrum || !hasBeats(spectrum)) {
       return undefined;
     }
-    return { phase: beatPhase(spectrum.beats, t), tempo: spectrum.tempo };
+    return beatLock(spectrum, t);
   }
 
   /** φ over the selected modes at time t. */
   drive(prepared: RigPrepared, t: number): Float64Array {
     const music = prepared.music && this.music.spectrum;
     const bands = music ? this.music.bandValuesAt(t, prepared) : null;
-    return modeDrive(prepared, bands, music ? this.music.kick(prepared, t) : 0);
+    return modeDrive(prepared, bands, music ? this.music.kick(prepared, t) : 0,
+      prepared.gain * (music ? this.music.sectionGain(prepared, t) : 1));
   }
 
   weights(prepared: Prepared, t: number): Float32Array {

@@ -4,7 +4,8 @@
 // tile or the player shows is what its saved mapping gives `eigendance animate`.
 import type { Basis, Spectrum } from "./bundle";
 import {
-  filterValues, kickAt, prepare, pulseEvents, shapeValues, shaderWeights, smoothed, spectrumAt,
+  filterValues, kickAt, prepare, pulseEvents, sectionGain, shapeValues, shaderWeights, smoothed,
+  spectrumAt,
 } from "./filter";
 import type { Envelope, Mapping, Prepared } from "./filter";
 import { StreamShaper } from "./live-shaping";
@@ -63,6 +64,11 @@ export class Motion {
     return spectrumAt(spectrum, t, this.buffer, spectrum.values);
   }
 
+  /** The mapping's section gene's gain factor at time t (1 without; `sectionGain`). */
+  sectionGain(prepared: Prepared, t: number): number {
+    return this.spectrum ? sectionGain(prepared, this.spectrum.sections, t) : 1;
+  }
+
   /** amount·p(t) of a mapping's pulse on the song's beats or onsets (0 without). */
   kick(prepared: Prepared, t: number): number {
     if (!(prepared.pulse.amount > 0) || !this.spectrum) return 0;
@@ -119,7 +125,8 @@ export class Motion {
 
   /** The deformation shader's weights (φ − 1) ⊙ X̃ of one mapping at time t. */
   weights(prepared: Prepared, t: number): Float32Array {
-    const phi = filterValues(prepared, this.bandValuesAt(t, prepared), prepared.gain, undefined,
+    const phi = filterValues(prepared, this.bandValuesAt(t, prepared),
+      prepared.gain * this.sectionGain(prepared, t), undefined,
       this.kick(prepared, t));
     return shaderWeights(this.basis!, phi);
   }

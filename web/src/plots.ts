@@ -6,21 +6,48 @@ import type { Prepared } from "./filter";
 
 /** How long a beat tick on the spectrum strip takes to fade, s. */
 const TICK_DECAY = 0.12;
-const TICK = { amount: 1, decay: TICK_DECAY, source: "beats" as const,
-  routed: new Float64Array(0), targets: new Int32Array(0) };
+const tick = (amount: number) => ({ amount, decay: TICK_DECAY, source: "beats" as const,
+  routed: new Float64Array(0), targets: new Int32Array(0) });
+/** A beat ticks at half strength, a bar's first beat (a downbeat) at full strength. */
+const BEAT = tick(0.5), DOWNBEAT = tick(1);
 
-/** The beat tick of the spectrum strip: its top edge lights up on each of the song's beats and
- * fades in TICK_DECAY (CSS variable --beat, the opacity of #spectrum::after); the strip's title
- * says the tempo. */
+/** The rhythm on the spectrum strip: its top edge lights up on each of the song's beats, twice
+ * as bright on each downbeat, and fades in TICK_DECAY (CSS variable --beat, the opacity of
+ * #spectrum::after); a mark along its bottom edge per section start (at start/duration of the
+ * width, `drawSections`); the strip's title says the tempo, the meter and the sections. */
 export function drawBeat(strip: HTMLElement, spectrum: Spectrum | null, t: number): void {
   const beats = spectrum && hasBeats(spectrum) ? spectrum.beats : null;
-  strip.style.setProperty("--beat", beats ? kickAt(TICK, beats, t).toFixed(3) : "0");
-  const tempo = beats ? `${spectrum!.tempo.toFixed(0)} BPM: the top edge ticks on each beat`
+  const bars = beats && spectrum!.meter > 0 ? spectrum!.downbeats : null;
+  const kick = beats ? Math.max(kickAt(BEAT, beats, t), bars ? kickAt(DOWNBEAT, bars, t) : 0) : 0;
+  strip.style.setProperty("--beat", kick.toFixed(3));
+  const meter = bars ? ` in ${spectrum!.meter}/4, brighter on each bar's first beat` : "";
+  const parts = spectrum?.sections.length
+    ? `; ${spectrum.sections.length + 1} sections (a mark along the bottom edge where each starts)`
+    : "";
+  const tempo = beats ? `${spectrum!.tempo.toFixed(0)} BPM${meter}: the top edge ticks on each beat${parts}`
     : "no beat detected: the dance follows the loudness";
   if (strip.dataset.tempo !== tempo) {
     strip.dataset.tempo = tempo;
     strip.title = `the song's loudness per band now: bass on the left, treble on the right; ${tempo}`;
   }
+  drawSections(strip, spectrum);
+}
+
+/** One `i.section` mark per section start of the song, at start/duration of the strip's width
+ * (remade only when the song changes). */
+function drawSections(strip: HTMLElement, spectrum: Spectrum | null): void {
+  const starts = spectrum?.sections ?? new Float32Array(0);
+  const key = spectrum ? `${spectrum.name} ${spectrum.duration} ${starts.join(",")}` : "";
+  if (strip.dataset.sections === key) return;
+  strip.dataset.sections = key;
+  strip.querySelectorAll(":scope > i.section").forEach((mark) => mark.remove());
+  starts.forEach((start) => {
+    const mark = document.createElement("i");
+    mark.className = "section";
+    mark.style.left = `${((100 * start) / spectrum!.duration).toFixed(3)}%`;
+    mark.dataset.start = start.toFixed(2);
+    strip.append(mark);
+  });
 }
 
 const DRIVEN = "#ffb347";
@@ -31,14 +58,15 @@ const IDLE = "#5a6070";
  * compositor drop a band of the WebGL canvas (at the strip's rectangle, upside down). */
 export function drawSpectrum(strip: HTMLElement, bandValues: Float32Array): void {
   const B = bandValues.length;
-  if (strip.childElementCount !== B) {
-    strip.replaceChildren(...Array.from({ length: B }, (_, b) => {
+  const bars = strip.getElementsByTagName("span");
+  if (bars.length !== B) {
+    for (const bar of [...bars]) bar.remove();
+    strip.prepend(...Array.from({ length: B }, (_, b) => {
       const bar = document.createElement("span");
       bar.style.background = `hsl(${30 + 200 * (b / B)}, 80%, 55%)`;
       return bar;
     }));
   }
-  const bars = strip.children as HTMLCollectionOf<HTMLElement>;
   for (let b = 0; b < B; b++) {
     const v = Math.max(0, Math.min(1, bandValues[b]));
     bars[b].style.transform = `scaleY(${v.toFixed(3)})`;

@@ -86,7 +86,8 @@ export class SurfacePlay {
   phi(music: Motion, t: number): Float64Array {
     if (!music.spectrum) return new Float64Array(this.surface.k).fill(1);
     return filterValues(this.prepared, music.bandValuesAt(t, this.prepared),
-      this.prepared.gain * this.gain, undefined, music.kick(this.prepared, t));
+      this.prepared.gain * this.gain * music.sectionGain(this.prepared, t), undefined,
+      music.kick(this.prepared, t));
   }
 
   /** The mapping with its gain as played (the rig mapping's `surface` genes). */

@@ -7,7 +7,7 @@ import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
 import {
-  beatPhase, filterValues, kickAt, prepare, pulseEvents, shapeValues, smoothed, spectrumAt,
+  beatLock, beatPhase, filterValues, kickAt, prepare, pulseEvents, shapeValues, smoothed, spectrumAt,
 } from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { prepareRig, rigCoefficients, modeDrive } from "../src/modal-skin";
@@ -42,6 +42,12 @@ describe("rhythm in the spectrogram bundle", () => {
   it("counts beats continuously like Rhythm.beat_phase", () => {
     const phase = reference.times.map((t: number) => beatPhase(song.beats, t));
     expect(worst(phase, reference.phase)).toBeLessThanOrEqual(1e-5); // float32 beat times
+  });
+
+  it("accents the bar's first beat like Rhythm.downbeat_accent", () => {
+    const accent = reference.times.map((t: number) => beatLock(song, t).accent);
+    expect(worst(accent, reference.accent)).toBeLessThanOrEqual(1e-5);
+    expect(Math.max(...accent)).toBeGreaterThan(1.1); // the fixture's times reach near a downbeat
   });
 });
 
@@ -84,7 +90,7 @@ describe("rig motion locked to the beats", () => {
       reference.times.forEach((t: number, i: number) => {
         const phi = modeDrive(prepared, spectrumAt(song, t, undefined, shaped),
           kickAt(prepared.pulse, events, t));
-        const beat = locked ? { phase: beatPhase(song.beats, t), tempo: song.tempo } : undefined;
+        const beat = locked ? beatLock(song, t) : undefined;
         const coefficients = rigCoefficients(rig, prepared, phi, t, undefined, beat);
         expect(worst(coefficients, c.coefficients[i])).toBeLessThanOrEqual(2e-5);
       });

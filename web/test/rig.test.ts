@@ -7,7 +7,7 @@ import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
 import {
-  beatPhase, deformCPU, hasBeats, shapeValues, smoothed, spectrumAt,
+  beatLock, deformCPU, hasBeats, shapeValues, smoothed, spectrumAt,
 } from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { bodyMatrices, modalWeights, modeDrive, prepareRig, rigCoefficients } from "../src/modal-skin";
@@ -47,7 +47,7 @@ describe("rig motion", () => {
       it(`case ${index}, t = ${t}: coefficients, modal skinning, body poses`, () => {
         const bands = spectrumAt(spectrum, t, undefined, shaped);
         const beat = prepared.tempo !== "free" && hasBeats(spectrum)
-          ? { phase: beatPhase(spectrum.beats, t), tempo: spectrum.tempo } : undefined;
+          ? beatLock(spectrum, t) : undefined;
         const c = rigCoefficients(rig, prepared, modeDrive(prepared, bands), t, undefined, beat);
         const scale = Math.max(...item.coefficients.flat().map(Math.abs));
         expect(worst(c, item.coefficients[i])).toBeLessThan(2e-5 * scale);

@@ -54,9 +54,9 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
     time_scale : s.
     drive : φ, (T, nm) (or (T, len(modes)) when `modes` is given); default 1.
     modes : indices of the modes that move (others get c = 0); default all.
-    beat : None (free-running), or (B(t) (T,) the beat phase in beats, tempo in beats per
-        minute): the tempo lock, where the angle is 2π r_κ B(t) + γ′_κ with r_κ =
-        `lock_ratios` and γ′ = `locked_phases` (docs/design.md#tempo-lock).
+    beat : None (free-running), or (B(t) (T,) in beats, tempo in BPM[, accent (T,)]): the
+        tempo lock (docs/design.md#tempo-lock): the angle is 2π r_κ B(t) + γ′_κ, r_κ =
+        `lock_ratios`, γ′ = `locked_phases`, c times the accent (`Rhythm.downbeat_accent`).
 
     Returns
     -------
@@ -72,16 +72,18 @@ def mode_coefficients(model: ModalModel, times, amplitudes=None, phases=None,
         np.broadcast_to(np.asarray(amplitudes, dtype=float), (count,))
     phases = np.zeros(count) if phases is None else \
         np.broadcast_to(np.asarray(phases, dtype=float), (count,))
-    result = np.zeros((times.size, count))
+    result, accent = np.zeros((times.size, count)), ()
     if beat is None:
         argument = 2 * math.pi * model.frequencies[selected] * time_scale * times[:, None] \
             + phases[selected]
     else:
-        phase, tempo = beat
+        phase, tempo, *accent = beat
         ratios = lock_ratios(model.frequencies[selected], time_scale, tempo)
         argument = 2 * math.pi * ratios * np.asarray(phase, dtype=float).reshape(-1, 1) \
             + locked_phases(phases[selected])
     values = amplitudes[selected] * np.sin(argument)
+    if accent:
+        values = values * np.asarray(accent[0], dtype=float).reshape(-1, 1)
     if drive is not None:
         drive = np.asarray(drive, dtype=float)
         if drive.shape == (times.size, count) and modes is not None:
@@ -157,8 +159,7 @@ def rig_coefficients(model: ModalModel, spectrogram: Spectrogram | None,
 def tempo_lock(spectrogram: Spectrogram | None, mapping: Mapping | None, times):
     """The tempo lock of a dance (docs/design.md#tempo-lock), or None (free-running).
 
-    It locks when the palette's `tempo` is "beat" or unset and the song has beats
-    (`Rhythm.has_beats`: a spectrogram file of version 2 with at least 4 beats).
+    It locks when the palette's `tempo` is "beat" or unset and the song has beats (4 or more).
 
     Parameters
     ----------
@@ -168,7 +169,7 @@ def tempo_lock(spectrogram: Spectrogram | None, mapping: Mapping | None, times):
 
     Returns
     -------
-    (B(t) (T,) beats counted continuously, tempo in beats per minute), or None.
+    (B(t) (T,) in beats, tempo in BPM, the accent (T,) `Rhythm.downbeat_accent`), or None.
     """
     rhythm = getattr(spectrogram, "rhythm", None)
     settings = mapping.modes if mapping is not None else None
@@ -176,7 +177,7 @@ def tempo_lock(spectrogram: Spectrogram | None, mapping: Mapping | None, times):
         return None
     if rhythm is None or not rhythm.has_beats:
         return None
-    return rhythm.beat_phase(times), rhythm.tempo
+    return rhythm.beat_phase(times), rhythm.tempo, rhythm.downbeat_accent(times)
 
 
 def twists(model: ModalModel, coefficients) -> np.ndarray:

@@ -46,6 +46,10 @@ GRAM_CHUNK = 64  # harmonics per block when only the diagonal of the Gram matrix
 # Items that pulse on the beat (`beat_shaping`): the loudness's attack and release (s), the
 # kick's decay (s) and its size against the loud frames' band sum.
 PULSE_ATTACK, PULSE_RELEASE, PULSE_DECAY, PULSE_SHARE = 0.1, 0.5, 0.18, 1.0
+# Every fourth item (s ≡ 3 mod 4) of a song with sections changes its dance at each: its
+# section gene (`Mapping.sections`) alternates a quieter and a bigger part, as a music video's
+# verse and chorus; the calibration then holds the whole song's motion to the item's target.
+SECTION_GENE, SECTION_EVERY = (0.6, 1.4), 4
 
 
 def check_gallery_size(size) -> int:
@@ -368,12 +372,15 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
     transfers = [part_transfer(part, bands, k) for part in parts]
     shapings = [beat_shaping(part, spectrogram, k) if s % 2 else (Envelope(), Pulse())
                 for s, part in enumerate(parts)]
+    parted = len(getattr(getattr(spectrogram, "rhythm", None), "sections", ()))
+    genes = [SECTION_GENE if parted and s % SECTION_EVERY == SECTION_EVERY - 1 else None
+             for s in range(len(parts))]
     scales = []
-    for part, transfer, target, (envelope, pulse) in zip(parts, transfers, motion_targets(size),
-                                                         shapings, strict=True):
+    for part, transfer, target, (envelope, pulse), gene in zip(
+            parts, transfers, motion_targets(size), shapings, genes, strict=True):
         unit = np.zeros(k)
         unit[part.harmonics] = part.unit
-        mapping = Mapping(transfer, unit, envelope=envelope, pulse=pulse)
+        mapping = Mapping(transfer, unit, envelope=envelope, pulse=pulse, sections=gene)
         scales.append(calibrate(dancer, spectrogram, times, mapping, target, diagonal))
     dormant = np.zeros(k)  # |amplification| every item has on each harmonic outside its part
     for part, scale in zip(parts, scales, strict=True):
@@ -384,7 +391,7 @@ def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
         amplification[part.harmonics] = scale * part.unit
         envelope, pulse = shapings[s]
         items.append(Mapping(transfer, amplification, None, f"gallery item {s + 1}",
-                             envelope=envelope, pulse=pulse,
+                             envelope=envelope, pulse=pulse, sections=genes[s],
                              basis=getattr(dancer, "record", None)))  # a basis's (k …)
     return items
 

@@ -11,7 +11,11 @@ the offset b is 1 for harmonics (thesis 6-1: a ≡ 0 leaves the mesh still) and 
 own for modes. Version 3 shapes g̃ first (envelopes, auto-range: `eigendance.music.envelope`)
 and adds a pulse on the beats to a range of targets:
 
-    φ(ν) = gain·a_k(ν)·(Σ_{ξ: ν(ξ)=ν} e(ξ, t) + amount·p(t)·[ν in the pulse's range]) + b.
+    φ(ν) = gain·g(t)·a_k(ν)·(Σ_{ξ: ν(ξ)=ν} e(ξ, t) + amount·p(t)·[ν in the pulse's range]) + b,
+
+g(t) the section gene (optional `sections`: per part of the song a gain factor, cycled; the song's
+parts are `Rhythm.sections`): g(t) = sections[s mod len(sections)] with s the number of section
+starts ≤ t, and g ≡ 1 without the gene or without sections (docs/design.md#mapping).
 
 `Mapping.play` is the one path from a song to φ that every caller takes (animate, export,
 render, the rig motion, the gallery).
@@ -35,6 +39,8 @@ from eigendance.writes import atomic_write
 FORMAT = "eigendance.mapping"
 VERSION = 3  # written; versions 1 (transfer, amplification, seed) and 2 are still read
 READABLE_VERSIONS = (1, 2, 3)
+MAX_SECTIONS = 64  # the most gain factors a section gene holds
+MAX_SECTION_GAIN = 10.0
 TEMPO_MODES = ("beat", "free")  # a rig's palette: locked to the song's beats, or free-running
 
 
@@ -147,6 +153,8 @@ class Mapping:
         follow this one (docs/design.md#surface-of-a-rig), or None.
     basis : the basis of a mesh it was made on (`BasisRecord`: k, construction, samples), or
         None (a rig's, or a mapping from before the record: the commands take the default k).
+    sections : the section gene, a gain factor in [0, 10] per part of the song (cycled), or
+        None (the dance keeps its gain throughout; `section_gain`).
 
     Example
     -------
@@ -172,6 +180,7 @@ class Mapping:
     pulse: Pulse = field(default_factory=Pulse)
     surface: Mapping | None = None
     basis: BasisRecord | None = None
+    sections: tuple | None = None
 
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
@@ -189,6 +198,8 @@ class Mapping:
                              f"{shown(self.materials)}")
         self.materials = bool(self.materials)
         self.envelope = self.envelope.for_bands(self.bands, self.name)
+        if self.sections is not None:
+            self.sections = _section_gene(self.sections, self.name)
         if self.surface is not None and self.surface.surface is not None:
             raise InputError(f"{self.name}: a surface mapping has no surface of its own")
 
@@ -297,8 +308,12 @@ class Mapping:
 
         def phi(times, k: int, offset: float = 1.0) -> np.ndarray:
             times = np.asarray(times, dtype=np.float64)
-            return filters([self], shaped.at(times), k, offset,
-                           self.kicks(spectrogram, times)[None])[0]
+            phi = filters([self], shaped.at(times), k, offset,
+                          self.kicks(spectrogram, times)[None])[0]
+            if self.sections is None:
+                return phi
+            return offset + np.asarray(self.section_gain(spectrogram, times))[..., None] * (
+                phi - offset)
 
         return phi
 
@@ -355,6 +370,26 @@ class Mapping:
         rhythm = getattr(spectrogram, "rhythm", None)
         return self.pulse.amount * self.pulse.signal(rhythm, times)
 
+    def section_gain(self, spectrogram, times) -> np.ndarray:
+        """g(t): the section gene's factor for the part of the song at each time (module
+        docstring; 1 without the gene or without the song's sections).
+
+        Parameters
+        ----------
+        spectrogram : the song (its `rhythm.sections`).
+        times : (T,) s.
+
+        Returns
+        -------
+        (T,) ≥ 0.
+        """
+        times = np.asarray(times, dtype=np.float64)
+        starts = getattr(getattr(spectrogram, "rhythm", None), "sections", np.zeros(0))
+        if self.sections is None or not len(starts):
+            return np.ones(times.shape)
+        part = np.searchsorted(starts, times, side="right")
+        return np.asarray(self.sections, dtype=np.float64)[part % len(self.sections)]
+
     # JSON (docs/design.md#mapping-file) ------------------------------------------------------
 
     def to_json(self) -> dict:
@@ -376,6 +411,8 @@ class Mapping:
                 "basis": None if self.basis is None else self.basis.to_json()}
         if self.surface is not None:  # only a rig's dance with a rippling skin has it
             document["surface"] = self.surface.to_json()
+        if self.sections is not None:  # written only with the gene: older readers see as before
+            document["sections"] = list(self.sections)
         return document
 
     @classmethod
@@ -439,6 +476,8 @@ class Mapping:
                 settings["surface"] = Mapping.from_json(data["surface"], f"{name}: surface")
             if data.get("basis") is not None:
                 settings["basis"] = BasisRecord.from_json(data["basis"], name)
+            if data.get("sections") is not None:
+                settings["sections"] = data["sections"]
         return cls(np.array(transfer, dtype=np.float64), np.array(amplification, dtype=np.float64),
                    seed, name, **settings)
 
@@ -481,6 +520,17 @@ def _number_list(value, field_name: str, name: str) -> list:
     if not isinstance(value, list) or not value:
         raise InputError(f"{name}: {field_name} must be a non-empty list of numbers")
     return [number(x, f"{name}: {field_name}[{index}]") for index, x in enumerate(value)]
+
+
+def _section_gene(values, name: str) -> tuple:
+    """The section gene checked: 1 … MAX_SECTIONS numbers in [0, MAX_SECTION_GAIN]."""
+    if isinstance(values, tuple | np.ndarray):
+        values = [float(x) for x in values]
+    values = _number_list(values, "sections", name)
+    if len(values) > MAX_SECTIONS or not all(0 <= x <= MAX_SECTION_GAIN for x in values):
+        raise InputError(f"{name}: sections must be 1 to {MAX_SECTIONS} gain factors in "
+                         f"[0, {MAX_SECTION_GAIN:g}]")
+    return tuple(float(x) for x in values)
 
 
 def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = False) -> None:

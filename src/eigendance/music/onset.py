@@ -36,6 +36,9 @@ from eigendance.music.constants import ANALYSIS
 SR = int(ANALYSIS["onset"]["beat_sample_rate"])  # Hz: librosa's default, the tracker's input
 HOP = int(ANALYSIS["onset"]["beat_hop"])  # samples between frames (librosa's default hop)
 N_FFT = 2048  # samples per frame (librosa's default)
+# Frames the onset strength (and so a beat frame) trails the mel frame its rise goes into: e_t
+# holds S_{t−3} − S_{t−4}, a rise into mel frame t − 2 (librosa's lag and centring).
+ENVELOPE_LAG = N_FFT // (2 * HOP)
 MELS = 128  # librosa's default mel bands
 TOP_DB = 80.0  # librosa.power_to_db's floor below the maximum
 AMIN = 1e-10  # librosa.power_to_db's smallest power
@@ -119,7 +122,7 @@ class BeatFeatures:
         if count:
             np.maximum(decibels, decibels.max() - TOP_DB, out=decibels)
         flux = np.maximum(decibels[1:] - decibels[:-1], 0)
-        delay = 1 + N_FFT // (2 * HOP)
+        delay = 1 + ENVELOPE_LAG
         median, mean = np.zeros(count, np.float32), np.zeros(count, np.float32)
         if len(flux) and count > delay:
             median[delay:] = np.median(flux, axis=1)[:count - delay]

@@ -37,7 +37,7 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.files import checked_array
 from eigendance.music.constants import ANALYSIS
-from eigendance.music.onset import FRAME_RATE
+from eigendance.music.onset import ENVELOPE_LAG, FRAME_RATE
 from eigendance.music.structure import bars, sections
 
 # From analysis.json, which the page's live analysis reads too:
@@ -48,6 +48,7 @@ LAG = float(ANALYSIS["onset"]["lag"])  # s: the flux compares a frame with the o
 CHUNK_SECONDS = 60.0  # the tempogram is computed over chunks this long
 AC_SIZE = float(ANALYSIS["onset"]["tempo_window"])  # s: librosa.feature.tempo's ac_size
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
+DOWNBEAT_ACCENT = 0.25  # the tempo-locked sway reaches this much further on a bar's first beat
 QUIET = 1e-3  # an envelope whose 99th percentile is below this is silence
 
 
@@ -141,6 +142,29 @@ class Rhythm:
         (…,) beats (B(b_i) = i).
         """
         return beat_phase(self.beats, times)
+
+    def downbeat_accent(self, times) -> np.ndarray:
+        """The bar's accent on the tempo lock: 1 + A·cos²(πx/2) for |x| < 1, else 1, where x is
+        B(t) − B(d) for the downbeat d nearest in beats and A = DOWNBEAT_ACCENT (1 everywhere
+        without beats or bars): largest on each bar's first beat, grown over the beat before
+        and faded over the beat after (docs/design.md#tempo-lock).
+
+        Parameters
+        ----------
+        times : (…,) s.
+
+        Returns
+        -------
+        (…,) ≥ 1.
+        """
+        times = np.asarray(times, dtype=np.float64)
+        if not self.has_beats or self.meter == 0:
+            return np.ones(times.shape)
+        at = beat_phase(self.beats, self.downbeats)  # the downbeats' beat numbers
+        phase = beat_phase(self.beats, times)
+        after = np.clip(np.searchsorted(self.downbeats, times, side="right"), 1, len(at) - 1)
+        x = np.minimum(np.abs(phase - at[after - 1]), np.abs(phase - at[after]))
+        return 1.0 + DOWNBEAT_ACCENT * np.where(x < 1.0, np.cos(np.pi * x / 2) ** 2, 0.0)
 
     def tempo_curve(self, times) -> np.ndarray:
         """Tempo over time: 60·dB/dt, piecewise constant between beats.
@@ -270,8 +294,9 @@ def analyse_rhythm(envelope, rate: float, features) -> Rhythm:
     beats = np.asarray(frames, dtype=np.float64) / FRAME_RATE
     if len(beats) < MIN_BEATS:
         return Rhythm(envelope, onsets, beats, 0.0, float(rate))
-    downbeats = beats[bars(frames, decibels, chroma)]
-    parts = sections(frames, decibels, chroma, len(median) / FRAME_RATE)
+    at = np.maximum(np.asarray(frames) - ENVELOPE_LAG, 0)  # the beats' mel frames
+    downbeats = beats[bars(at, decibels, chroma)]
+    parts = sections(at, decibels, chroma, len(median) / FRAME_RATE)
     return Rhythm(envelope, onsets, beats, tempo, float(rate), downbeats, parts)
 
 

@@ -12,8 +12,9 @@ packed four harmonics per RGBA texel (zero padded), ready for a float texture. A
 `coarse` (m, 4·⌈k/4⌉) f32 (always: it is small), U_r packed the same way, and P:
 `weights` (n, 8) f16 (exact: multiples of 2⁻¹¹) and `indices` (n, 8) u16 (u32 when m > 65536).
 Spectrogram bundle (`spectrogram_bundle`): times (T,) f32, values (T,B) f32, band_edges (B+1,)
-f32, beats (n_b,) and onsets (n_o,) f32 seconds (the song's rhythm, docs/design.md#rhythm;
-empty without it), meta rate/sample_rate/duration and tempo (beats per minute, 0: no beat).
+f32, beats (n_b,), onsets (n_o,), downbeats (n_d,) and sections (n_s,) f32 seconds (the song's
+rhythm, bars and parts, docs/design.md#rhythm; empty without them), meta rate/sample_rate/duration,
+tempo (beats per minute, 0: no beat) and meter (beats per bar, 0: no bars).
 Rig bundle (`rig_bundle`): what the page needs to play a rig — modal skinning packed for float
 textures, linear blend skinning for three.js, the bodies and their per-mode twists; the arrays
 and their units are listed in docs/web.md#rig-bundle.
@@ -165,8 +166,8 @@ def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
 
     Returns
     -------
-    bytes of the bundle: times (T,) s, values (T, B), band_edges (B+1,) Hz; meta rate,
-    sample_rate, duration.
+    bytes of the bundle: times (T,) s, values (T, B), band_edges (B+1,) Hz, beats, onsets,
+    downbeats, sections s; meta rate, sample_rate, duration, tempo, meter.
     """
     values = np.asarray(spectrogram.values, dtype=np.float32)
     meta = {"kind": "spectrogram", "name": name, "rate": float(spectrogram.rate),
@@ -177,11 +178,14 @@ def spectrogram_bundle(spectrogram, name: str = "song") -> bytes:
     rhythm = getattr(spectrogram, "rhythm", None)
     beats = rhythm.beats if rhythm is not None and rhythm.has_beats else np.zeros(0)
     meta["tempo"] = float(rhythm.tempo) if len(beats) else 0.0
-    onsets = rhythm.onsets if rhythm is not None else np.zeros(0)
+    meta["meter"] = int(rhythm.meter) if len(beats) else 0
+    events = {key: np.asarray(getattr(rhythm, key) if rhythm is not None else np.zeros(0),
+                              dtype=np.float64) for key in ("onsets", "downbeats", "sections")}
+    if not len(beats):
+        events["downbeats"] = np.zeros(0)
     return pack(meta, {"times": np.asarray(spectrogram.times), "values": values,
                        "band_edges": np.asarray(spectrogram.band_edges),
-                       "beats": np.asarray(beats, dtype=np.float64),
-                       "onsets": np.asarray(onsets, dtype=np.float64)})
+                       "beats": np.asarray(beats, dtype=np.float64), **events})
 
 
 def packed_modes(per_mode: np.ndarray, n: int) -> np.ndarray:
