@@ -76,6 +76,8 @@ def test_the_loading_box_shows_above_the_first_visit_help_without_a_false_count(
             while time.monotonic() < end and page.locator("#loading").is_visible():
                 shown.append(page.text_content("#loading-text"))
                 box = page.locator("#loading").bounding_box()
+                if box is None:  # hidden since: the solve is done
+                    break
                 on_top = page.evaluate(
                     "([x, y]) => document.getElementById('loading')"
                     ".contains(document.elementFromPoint(x, y))",
