@@ -1,6 +1,7 @@
 """The rig player's surface in headless Chromium (docs/design.md#surface-of-a-rig): off by
 default; on, the skin's harmonics ripple on the GPU (and the CPU path) as the Python's
-`SurfaceDance` says, added to the modal skin.
+`SurfaceDance` says, added to the modal skin; the LBS view carries them too, as
+`animate-rig --skinning lbs` does.
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 """
@@ -14,6 +15,7 @@ import numpy as np
 import pytest
 from web_helpers import open_app
 
+from eigendance.cli import main
 from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
@@ -69,3 +71,47 @@ def test_the_surface_ripples_the_skin_on_the_gpu_as_python_does(page, live_serve
     page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
     back = np.array(page.evaluate(f"window.eigendance.rig.readPositions('player', {TIMES[1]})"))
     np.testing.assert_allclose(back.reshape(-1, 3), bones[1], atol=1e-4 * diagonal)
+
+
+def lbs_view(page, t):
+    """The LBS skin's positions (three.js's morphing and skinning) and the player's pixels."""
+    positions = np.array(page.evaluate(f"window.eigendance.rig.lbsPositions({t})"))
+    page.evaluate(f"window.eigendance.rig.renderAt({t})")
+    return positions.reshape(-1, 3), np.array(
+        page.evaluate("window.eigendance.rig.playerPixels(3)"), dtype=float)
+
+
+def test_the_lbs_view_ripples_as_animate_rig_lbs_does(page, live_server, web_files, tmp_path):
+    """The LBS view with the surface on: the skin's harmonics as morph targets before the skin,
+    Σ_b w_ib T_b (x_i + d_i), within 1e-4 of the diagonal of `animate-rig --skinning lbs` on
+    the page's saved dance (its surface genes); drawn (its pixels change with the surface)."""
+    with urllib.request.urlopen(live_server["url"] + "api/library") as answer:
+        hand = next(r["id"] for r in json.load(answer)["rigs"] if r["name"] == "hand")
+    assert page.evaluate(f"window.eigendance.rig.open('{hand}')") is None
+    diagonal = page.evaluate("window.eigendance.rig.info()")["diagonal"]
+    page.evaluate("window.eigendance.rig.setView('player'); "
+                  "window.eigendance.rig.setSkinning('lbs')")
+    fps, frames = 10, (4, 13, 29)
+    off = [lbs_view(page, f / fps) for f in frames]
+    page.evaluate(SWITCH, True)
+    page.wait_for_function("!document.getElementById('rig-surface-dance').disabled")
+    on = [lbs_view(page, f / fps) for f in frames]
+    saved = page.evaluate("window.eigendance.rig.playerMapping()")
+    assert saved["surface"] is not None
+    dance = tmp_path / "dance.json"
+    dance.write_text(json.dumps(saved))
+    out = tmp_path / "lbs.npz"
+    assert main(["animate-rig", "hand", web_files["song"], "--mapping", str(dance),
+                 "--skinning", "lbs", "--fps", str(fps), "--duration", "3",
+                 "-o", str(out)]) == 0
+    expected = np.load(out)["positions"]
+    for f, (positions, _), (still, _) in zip(frames, on, off, strict=True):
+        np.testing.assert_allclose(positions, expected[f], atol=1e-4 * diagonal)
+        assert np.abs(positions - still).max() > 1e-3 * diagonal  # the surface moves it
+    changed = [np.mean(np.abs(a[1] - b[1]) > 40) for a, b in zip(on, off, strict=True)]
+    assert max(changed) > 0.002, changed  # drawn: the rippled skin shows
+    page.evaluate(SWITCH, False)
+    page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
+    back, _ = lbs_view(page, frames[1] / fps)
+    np.testing.assert_allclose(back, off[1][0], atol=1e-6 * diagonal)
+    page.evaluate("window.eigendance.rig.setSkinning('modal')")

@@ -2,12 +2,16 @@
 // lines between each body's ends, the joints as points (the pose editor picks them), and the
 // skin by three.js linear blend skinning (`SkinnedMesh`, one bone per body; in the rig's
 // materials too, sharing the modal skin's textures) — all moved by the body poses of the same
-// mode coefficients.
+// mode coefficients. With the surface on (docs/design.md#surface-of-a-rig) the LBS skin carries
+// the skin's harmonics as three.js morph targets, applied before the skin as in the glb:
+// Σ_b w_ib T_b (x_i + d_i), exactly.
 import * as THREE from "three";
 import { CLAY } from "./deform";
 import type { DrawnLook } from "./look";
 import type { Rig } from "./rig-bundle";
 import { normalising } from "./rig-bundle";
+import { surfaceTargets } from "./rig-surface";
+import type { RigSurface } from "./rig-surface";
 import { SURFACE_FRAGMENT } from "./shaders";
 
 /** Linear blend skinning with three.js's own skinning chunks; shaded like the modal skin (the
@@ -15,6 +19,7 @@ import { SURFACE_FRAGMENT } from "./shaders";
 const LBS_VERTEX = /* glsl */ `
 #include <common>
 #include <skinning_pars_vertex>
+#include <morphtarget_pars_vertex>
 out vec3 vViewPosition;
 out vec3 vNormal;
 #ifdef MATERIAL
@@ -32,6 +37,7 @@ out vec4 vColor;
 void main() {
   #include <skinbase_vertex>
   #include <begin_vertex>
+  #include <morphtarget_vertex>
   #include <skinning_vertex>
 #ifdef MATERIAL
   vUv0 = texcoord0;
@@ -49,6 +55,14 @@ void main() {
 }
 `;
 
+/** Relative morph targets (n*3 each) on a geometry, set before its mesh is made (the mesh then
+ * holds one influence per target). */
+function withTargets(geometry: THREE.BufferGeometry, targets: Float32Array[]): void {
+  if (!targets.length) return;
+  geometry.morphAttributes.position = targets.map((t) => new THREE.BufferAttribute(t, 3));
+  geometry.morphTargetsRelative = true;
+}
+
 export class RigFigure {
   /** in the page's normalised units: scale σ about the skin's centre */
   readonly group = new THREE.Group();
@@ -62,7 +76,8 @@ export class RigFigure {
   private readonly skeletonBones: THREE.Bone[];
   private readonly rest: THREE.Matrix4[];
 
-  constructor(readonly rig: Rig, look: DrawnLook | null = null) {
+  /** `surface`: the skin's harmonics, its ripple drawn by `ripple` (null: none). */
+  constructor(readonly rig: Rig, look: DrawnLook | null = null, surface: RigSurface | null = null) {
     const s = normalising(rig);
     this.group.matrixAutoUpdate = false;
     this.group.matrix.makeScale(s, s, s).setPosition(-rig.center[0] * s, -rig.center[1] * s,
@@ -75,6 +90,8 @@ export class RigFigure {
     geometry.computeVertexNormals();
     geometry.setAttribute("skinIndex", new THREE.Uint16BufferAttribute(rig.skinJoints, 4));
     geometry.setAttribute("skinWeight", new THREE.BufferAttribute(rig.skinWeights, 4));
+    const targets = surface ? surfaceTargets(surface) : [];
+    withTargets(geometry, targets);
     this.lbsMaterial = new THREE.ShaderMaterial({
       glslVersion: THREE.GLSL3, vertexShader: LBS_VERTEX, fragmentShader: SURFACE_FRAGMENT,
       uniforms: { baseColor: { value: new THREE.Color().setHex(CLAY, THREE.SRGBColorSpace) },
@@ -99,6 +116,7 @@ export class RigFigure {
     if (look) {
       const drawn = look.drawnGeometry(rig.vertices, { skinIndex: [rig.skinJoints, 4],
         skinWeight: [rig.skinWeights, 4] });
+      withTargets(drawn, targets.map((target) => look.gathered(target, 3)));
       this.skinnedLook = new THREE.SkinnedMesh(drawn, look.materialsWith(LBS_VERTEX));
       this.skinnedLook.frustumCulled = false;
       this.skinnedLook.bindMode = THREE.DetachedBindMode;
@@ -174,15 +192,22 @@ export class RigFigure {
     joints.needsUpdate = true;
   }
 
-  /** The LBS positions (n*3, file units) of the last pose, by three.js's own skinning. */
+  /** The skin's ripple for the surface's filter φ (k): morph target ν weighs φ_ν − 1 (null:
+   * none). */
+  ripple(phi: ArrayLike<number> | null): void {
+    for (const mesh of [this.skinned, this.skinnedLook]) {
+      const influences = mesh?.morphTargetInfluences;
+      if (!influences) continue;
+      for (let nu = 0; nu < influences.length; nu++) influences[nu] = phi ? phi[nu] - 1 : 0;
+    }
+  }
+
+  /** The LBS positions (n*3, file units) of the last pose and ripple, by three.js's own
+   * morphing and skinning (`SkinnedMesh.getVertexPosition`, the CPU twin of its shader). */
   lbsPositions(): Float32Array {
     this.skinned.skeleton.update();
     const out = new Float32Array(3 * this.rig.n), v = new THREE.Vector3();
-    for (let i = 0; i < this.rig.n; i++) {
-      v.fromArray(this.rig.vertices, 3 * i);
-      this.skinned.applyBoneTransform(i, v);
-      v.toArray(out, 3 * i);
-    }
+    for (let i = 0; i < this.rig.n; i++) this.skinned.getVertexPosition(i, v).toArray(out, 3 * i);
     return out;
   }
 

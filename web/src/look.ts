@@ -142,7 +142,7 @@ export class DrawnLook {
   }
 
   /** Per drawn vertex, its welded vertex's `size` values. */
-  private gathered(values: ArrayLike<number>, size: number): Float32Array {
+  gathered(values: ArrayLike<number>, size: number): Float32Array {
     const welded = this.appearance.welded, out = new Float32Array(welded.length * size);
     for (let i = 0; i < welded.length; i++) {
       for (let d = 0; d < size; d++) out[size * i + d] = values[size * welded[i] + d];

@@ -3,7 +3,6 @@
 // units.
 import type { App } from "./app";
 import { deformCPU } from "./filter";
-import { bodyMatrices } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { toFileUnits } from "./rig-bundle";
 import { RIG_LOOK } from "./rig-gallery-view";
@@ -50,11 +49,11 @@ function rigReadHooks(app: App) {
     /** Mode coefficients c (k) of a tile or the player at time t. */
     coefficients: (tile: number | "player", t: number) =>
       Array.from(rigs.motion.coefficients(prepared(tile), t)),
-    /** three.js linear blend skinning of the player's body poses at time t (file units). */
+    /** three.js linear blend skinning of the player's body poses at time t, of the bind pose
+     * rippled by the surface when it is on (file units). */
     lbsPositions(t: number): number[] {
-      const figure = rigs.figure!;
-      figure.pose(bodyMatrices(rigs.rig!, rigs.motion.coefficients(prepared("player"), t)));
-      return Array.from(figure.lbsPositions());
+      rigs.poseFigure(t);
+      return Array.from(rigs.figure!.lbsPositions());
     },
     tilePixels: (step = 4): number[][] => pixelsOf(rigs.viewer, rigs.gallery.views(), step),
     /** The same as base64 strings of the RGB bytes (far faster to hand over than numbers). */

@@ -74,6 +74,20 @@ export function surfaceWeights(rig: Rig, surface: RigSurface, phi: ArrayLike<num
   return weights;
 }
 
+/** The skin's ripple per unit of φ_ν − 1, D_ν = u_ν X̃_ν (k arrays of n*3, the rig's units):
+ * the glb's morph targets, which the LBS skin applies before skinning (bones.ts). */
+export function surfaceTargets(surface: RigSurface): Float32Array[] {
+  const width = 4 * surface.G;
+  return Array.from({ length: surface.k }, (_, nu) => {
+    const target = new Float32Array(3 * surface.n);
+    for (let i = 0; i < surface.n; i++) {
+      const u = surface.harmonics[i * width + nu];
+      for (let d = 0; d < 3; d++) target[3 * i + d] = u * surface.coefficients[3 * nu + d];
+    }
+    return target;
+  });
+}
+
 /** What the player's surface plays: the skin's harmonics, a surface mapping and its gain. */
 export class SurfacePlay {
   readonly prepared: Prepared;

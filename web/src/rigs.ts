@@ -197,7 +197,7 @@ export class RigStage {
     this.viewer.setBasis(surface ? surfaceBasis(rig, surface.surface) : rigBasis(rig), this.batch,
       this.appearance);
     this.figure?.dispose();
-    this.figure = new RigFigure(rig, this.viewer.deformer!.look);
+    this.figure = new RigFigure(rig, this.viewer.deformer!.look, surface?.surface ?? null);
     this.viewer.deformer!.scene.add(this.figure.group);
   }
 
@@ -248,11 +248,17 @@ export class RigStage {
     const player = this.view === "player" && this.player.prepared !== null;
     const lbs = player && this.player.skinning === "lbs";
     deformer.shown = !lbs;
-    if (player) {
-      figure.pose(bodyMatrices(this.rig!, this.motion.coefficients(this.player.prepared!, t)));
-    }
+    if (player) this.poseFigure(t);
     figure.show({ lbs, bones: player && this.player.bones, joint: player ? this.player.joint : -1,
       materials: RIG_LOOK.materials });
+  }
+
+  /** Bones, joints and the LBS skin at the player's time t: its body poses, and the skin's
+   * ripple in the bind pose (the surface's φ at t, as the modal skin's) when the surface is on. */
+  poseFigure(t: number): void {
+    const figure = this.figure!, surface = this.motion.surface;
+    figure.pose(bodyMatrices(this.rig!, this.motion.coefficients(this.player.prepared!, t)));
+    figure.ripple(surface ? surface.phi(this.motion.music, t) : null);
   }
 
   /** The rig's skin's look, if the library lists one (null: clay, or it cannot be shown). */
