@@ -178,3 +178,35 @@ def test_the_draco_astronaut_shows_the_colours_three_js_draws(browser, served, p
           f"{ {name: len(hues(pixels)) for name, pixels in shown.items()} }")
     assert min(len(hues(pixels)) for pixels in shown.values()) > 200
     assert overlap > 0.75 and clay_overlap < 0.3
+
+
+def test_the_lbs_skin_ripples_in_its_materials(served, page):
+    """The surface on the LBS skin of the character with a gun, in its materials: the drawn
+    vertices carry the skin's morph targets (gathered from the welded ones), so the picture
+    changes with the surface; no shader error is logged."""
+    logged = []
+    page.on("console", lambda message: logged.append(message.text)
+            if message.type == "error" else None)
+    rig_id = next(rig["id"] for rig in served["library"]["rigs"]
+                  if rig["name"] == "quaternius_Character_Gun.glb")
+    assert page.evaluate(f"window.eigendance.rig.open('{rig_id}')") is None
+    page.evaluate("window.eigendance.rig.setView('player'); "
+                  "window.eigendance.rig.setSkinning('lbs')")
+    switch = """(on) => { const box = document.getElementById('rig-surface');
+      box.checked = on; box.dispatchEvent(new Event('change')); }"""
+    pictures = {}
+    try:
+        for on in (False, True):
+            page.evaluate(switch, on)
+            page.wait_for_function(f"document.getElementById('rig-surface-dance').disabled "
+                                   f"=== {str(not on).lower()}", timeout=120_000)
+            page.evaluate("window.eigendance.rig.renderAt(1.3)")
+            pictures[on] = np.array(page.evaluate("window.eigendance.rig.playerPixels(3)"),
+                                    dtype=float)
+    finally:
+        page.evaluate(switch, False)
+        page.evaluate("window.eigendance.rig.setSkinning('modal')")
+        page.evaluate("window.eigendance.setView('gallery')")
+    changed = np.mean(np.abs(pictures[True] - pictures[False]) > 40)
+    print(f"gun rig, LBS in materials: {changed:.4f} of the pixels change with the surface")
+    assert changed > 0.002 and not logged, (changed, logged)
