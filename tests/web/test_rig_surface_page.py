@@ -1,7 +1,8 @@
 """The rig player's surface in headless Chromium (docs/design.md#surface-of-a-rig): off by
 default; on, the skin's harmonics ripple on the GPU (and the CPU path) as the Python's
 `SurfaceDance` says, added to the modal skin; the LBS view carries them too, as
-`animate-rig --skinning lbs` does.
+`animate-rig --skinning lbs` does; rig dances carry surface genes and breed them as Python's
+`breed` does.
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 """
@@ -20,6 +21,7 @@ from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.surface import SurfaceDance, surface_share
+from eigendance.music.breeding import breed
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
@@ -115,3 +117,57 @@ def test_the_lbs_view_ripples_as_animate_rig_lbs_does(page, live_server, web_fil
     back, _ = lbs_view(page, frames[1] / fps)
     np.testing.assert_allclose(back, off[1][0], atol=1e-6 * diagonal)
     page.evaluate("window.eigendance.rig.setSkinning('modal')")
+
+
+def test_rig_dances_breed_with_their_surface_genes_as_python_does(page, live_server, web_files):
+    """With the surface on, each rig dance carries surface genes (the surface section's dance
+    i mod m) and its tile ripples by them; breeding two of them gives children whose genes are
+    Python's `breed` of the same parents and seed (crossed or copied), and a child opened in the
+    player ripples by its own genes, saved in its file's `surface`."""
+    with urllib.request.urlopen(live_server["url"] + "api/library") as answer:
+        hand = next(r["id"] for r in json.load(answer)["rigs"] if r["name"] == "hand")
+    assert page.evaluate(f"window.eigendance.rig.open('{hand}')") is None
+    hooks = "window.eigendance.rig"
+    page.evaluate(f"{hooks}.setMode('dances')")
+    assert page.evaluate(f"{hooks}.dance(0)").get("surface") is None  # off: the bones alone
+    page.evaluate(SWITCH, True)
+    page.wait_for_function("!document.getElementById('rig-surface-dance').disabled")
+    song = Spectrogram.from_file(web_files["song"])
+    rig = Rig.from_skeleton(sample_rig("hand"), dtype=np.float64)
+    surfaces = initial_gallery(rig.surface().basis, song, 8)
+    parents = [page.evaluate(f"{hooks}.dance({i})") for i in (0, 1)]
+    for i, parent in enumerate(parents):  # the section's dance i, as the server calibrates it
+        np.testing.assert_allclose(parent["surface"]["amplification"],
+                                   surfaces[i].amplification, rtol=1e-6)
+    assert all("rippling skin" in label for label in page.evaluate(f"{hooks}.labels()"))
+    page.evaluate(f"{hooks}.select(0); {hooks}.select(1)")
+    seed = 11
+    assert page.evaluate(f"{hooks}.breed({seed})") is None
+    size = page.evaluate(f"{hooks}.info()")["tiles"]
+    children = [page.evaluate(f"{hooks}.dance({i})") for i in range(size)]
+    bred = breed([Mapping.from_json(p) for p in parents], size, seed)
+    genes = [(c["surface"]["transfer"], c["surface"]["amplification"]) for c in children]
+    for child, (transfer, amplification) in zip(bred, genes, strict=True):
+        np.testing.assert_allclose(transfer, child.surface.transfer, atol=1e-12)
+        np.testing.assert_allclose(amplification, child.surface.amplification, atol=1e-12)
+    parent_genes = [p["surface"]["amplification"] for p in parents]
+    assert any(not np.allclose(a, p) for _, a in genes for p in parent_genes)  # crossed ones
+    # A child's tile ripples by its genes: the modal skin plus its SurfaceDance.
+    diagonal = page.evaluate(f"{hooks}.info()")["diagonal"]
+    crossed = next(i for i, (_, a) in enumerate(genes)
+                   if all(not np.allclose(a, p) for p in parent_genes))
+    child = Mapping.from_json(children[crossed])
+    ripple = SurfaceDance(rig.surface(), song, child.surface).displacements(TIMES)
+    bones = rig.skin.positions(rig_coefficients(rig.model, song, child, TIMES))
+    for i, t in enumerate(TIMES):
+        shown = np.array(page.evaluate(f"{hooks}.cpuPositions({crossed}, {t})")).reshape(-1, 3)
+        np.testing.assert_allclose(shown, bones[i] + ripple[i], atol=1e-4 * diagonal)
+    page.evaluate(f"{hooks}.openDance({crossed})")
+    saved = page.evaluate(f"{hooks}.playerMapping()")
+    assert saved["surface"]["amplification"] == children[crossed]["surface"]["amplification"]
+    shown = np.array(page.evaluate(f"{hooks}.cpuPositions('player', {TIMES[1]})"))
+    np.testing.assert_allclose(shown.reshape(-1, 3), bones[1] + ripple[1], atol=1e-4 * diagonal)
+    page.evaluate(SWITCH, False)
+    page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
+    assert page.evaluate(f"{hooks}.playerMapping()").get("surface") is None
+    assert page.evaluate(f"{hooks}.dance({crossed})").get("surface") is None

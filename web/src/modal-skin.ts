@@ -150,8 +150,8 @@ export class RigMotion {
   /** the skin's ripple (docs/design.md#surface-of-a-rig), drawn with the basis of
    * `surfaceBasis`; null: off */
   surface: SurfacePlay | null = null;
-  /** the mapping the surface plays with (the player's) */
-  surfaceFor: () => Prepared | null = () => null;
+  /** what ripples the skin of the player or a tile drawn with `prepared` (null: none) */
+  surfaceOf: (prepared: Prepared) => SurfacePlay | null = () => null;
   private coefficientsBuffer = new Float64Array(0);
 
   constructor(readonly music: Motion) {}
@@ -188,10 +188,11 @@ export class RigMotion {
   weights(prepared: Prepared, t: number): Float32Array {
     const c = this.coefficients(prepared as RigPrepared, t);
     if (!this.surface) return modalWeights(this.rig!, c);
-    // The skin's ripple (rig-surface.ts): its texels follow the modal skin's, the player's only.
+    // The skin's ripple (rig-surface.ts): its texels follow the modal skin's; the player's,
+    // and each dance tile's by its surface genes.
     const weights = modalWeights(this.rig!, c, new Float32Array(12 * this.texels()));
-    return prepared === this.surfaceFor()
-      ? surfaceWeights(this.rig!, this.surface.surface, this.surface.phi(this.music, t), weights)
+    const play = this.surfaceOf(prepared);
+    return play ? surfaceWeights(this.rig!, play.surface, play.phi(this.music, t), weights)
       : weights;
   }
 

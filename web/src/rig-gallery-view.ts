@@ -2,16 +2,19 @@
 // vibration mode, lowest first, each oscillating alone at its time-scaled frequency, printed
 // under it; a page of at most the gallery rule's largest size, and "more modes" for the rest —
 // and the gallery of dances: mode mappings calibrated on the song (`POST api/rig-gallery`) bred
-// like the harmonic gallery's (`POST api/breed`).
+// like the harmonic gallery's (`POST api/breed`). With the surface on, each dance carries its
+// surface genes (docs/design.md#surface-of-a-rig): its tile ripples by them, and breeding
+// crosses them as Python's `breed` does.
 import * as api from "./api";
 import { $, fileName, saveJSON } from "./dom";
 import { gridColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
-import type { Mapping } from "./filter";
+import type { Mapping, Prepared } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { SHOWN_HZ, modesLabel, playedFrequency, shownMode } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
+import type { RigDance } from "./rig-surface";
 import type { Shot, Look } from "./viewer";
 
 export type RigGalleryMode = "modes" | "dances";
@@ -59,6 +62,8 @@ export class RigGalleryView {
   private tiles: Tile[] = [];
   private readonly selectedModes = new Set<number>();
   private readonly selectedDances = new Set<number>();
+  /** the surface section's dances while it is on (null: off, the dances are the bones' alone) */
+  private surfaces: Mapping[] | null = null;
 
   constructor(private readonly events: RigGalleryEvents) {
     $("rig-show-modes").addEventListener("click", () => this.setMode("modes"));
@@ -92,6 +97,28 @@ export class RigGalleryView {
   }
 
   dances(): Mapping[] { return this.generations[this.generation] ?? []; }
+
+  /** Dance `index` as it plays, opens, saves and breeds: while the surface is on, with its
+   * surface genes (its own, else the surface section's dance index mod m); while it is off,
+   * without them. */
+  dance(index: number): RigDance {
+    const { surface, ...bones } = this.dances()[index] as RigDance;
+    const surfaces = this.surfaces;
+    return surfaces?.length
+      ? { ...bones, surface: surface ?? surfaces[index % surfaces.length] } : bones;
+  }
+
+  /** The surface section's dances (null: the surface is off); the dance tiles follow. */
+  setSurfaces(surfaces: Mapping[] | null): void {
+    this.surfaces = surfaces;
+    if (this.mode === "dances") this.build();
+  }
+
+  /** The surface genes of the dance tile drawn with `prepared` (null: none, or a mode tile). */
+  surfaceGenes(prepared: Prepared): Mapping | null {
+    const index = this.mode === "dances" ? this.prepared.indexOf(prepared as RigPrepared) : -1;
+    return index < 0 ? null : this.dance(index).surface ?? null;
+  }
 
   shots(): Shot[] {
     return this.tiles.map((tile, i) => ({ element: tile.view, prepared: this.prepared[i],
@@ -160,7 +187,7 @@ export class RigGalleryView {
 
   /** The next generation of dances from the selected ones (`eigendance.music.breeding.breed`). */
   async breed(seed = Math.floor(Math.random() * 2 ** 31)): Promise<void> {
-    const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dances()[i]);
+    const parents = [...this.selectedDances].sort((a, b) => a - b).map((i) => this.dance(i));
     if (!parents.length) return;
     this.events.status("breeding…");
     const children = await api.breed(parents, this.dances().length, seed,
@@ -228,7 +255,8 @@ export class RigGalleryView {
         + "the player plays it at the palette's time scale; click to select, then combine";
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
-      label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`;
+      label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`
+        + (this.dance(index).surface ? " · rippling skin" : "");
       label.title = "the modes this dance's mapping drives (a band reaches them with a non-zero "
         + "amplification), at its time scale";
       element.classList.toggle("selected", this.selectedDances.has(index));
@@ -240,7 +268,7 @@ export class RigGalleryView {
     }
     element.addEventListener("click", (event) => {
       const target = event.target as HTMLElement;
-      const mapping = this.dances()[index];
+      const mapping = this.dance(index);
       if (target.closest(".open")) { this.events.open(mapping, `dance ${index + 1}`); return; }
       if (target.closest(".save")) {
         saveJSON(mapping, fileName(rig.name, `g${this.generation + 1}-${index + 1}`, "json"));

@@ -82,9 +82,11 @@ function rigControlHooks(app: App) {
     combine: () => rigs.combine(rigs.gallery.selection),
     breed: (seed?: number) => app.messages.guard("Breeding failed", () => rigs.gallery.breed(seed)),
     openDance: (index: number) => {
-      rigs.player.show(rigs.gallery.dances()[index], `dance ${index + 1}`);
+      rigs.openDance(rigs.gallery.dance(index), `dance ${index + 1}`);
       app.setView("player");
     },
+    /** Dance `index` as its tile's *save* writes it (with its surface genes while on). */
+    dance: (index: number) => rigs.gallery.dance(index),
     setSkinning: (skinning: Skinning) => {
       rigs.player.skinning = skinning;
       (document.getElementById("rig-skinning") as HTMLSelectElement).value = skinning;

@@ -11,6 +11,7 @@ import type { RigPrepared } from "./modal-skin";
 import { playedFrequency } from "./rig-bundle";
 import type { ModeSettings, Rig } from "./rig-bundle";
 import { RIG_LOOK } from "./rig-gallery-view";
+import type { RigDance } from "./rig-surface";
 import type { Shot } from "./viewer";
 
 export type Skinning = "modal" | "lbs";
@@ -130,14 +131,16 @@ export class RigPlayerView {
 
   /** The player's mapping as *save mapping* writes it: version 3 with its palette and offset.
    * Music off (φ ≡ 1) is saved as gain 0 and offset 1: the same motion in every player. */
-  saved(): Mapping | null {
+  saved(): RigDance | null {
     if (!this.mapping || !this.palette) return null;
     const saved: Mapping = { ...this.mapping, version: 3,
       gain: this.music ? this.mapping.gain ?? 1 : 0, smoothing: this.mapping.smoothing ?? 0,
       offset: this.music ? this.mapping.offset ?? 0 : 1, modes: { ...this.palette },
       look: { ...this.mapping.look, materials: RIG_LOOK.materials } };
-    const surface = this.events.surface?.() ?? null; // docs/design.md#surface-of-a-rig
-    return surface ? Object.assign(saved, { surface }) : saved;
+    // The surface genes as played (docs/design.md#surface-of-a-rig), not an opened dance's.
+    const { surface: _opened, ...bones } = saved as RigDance;
+    const surface = this.events.surface?.() ?? null;
+    return surface ? { ...bones, surface } : bones;
   }
 
   shot(element: HTMLElement): Shot | null {

@@ -1,6 +1,6 @@
 // The rig player's *surface* section (docs/design.md#surface-of-a-rig): off by default; on, the
 // skin ripples in its harmonics while the bones sway — a gallery of surface dances calibrated on
-// the song to choose from, and its gain.
+// the song to choose from (or the surface genes of the dance the player opened), and its gain.
 import { $ } from "./dom";
 import type { Mapping } from "./filter";
 import type { Rig } from "./rig-bundle";
@@ -15,11 +15,15 @@ export interface RigSurfaceEvents {
   guard(what: string, task: () => Promise<void>): Promise<unknown>;
   /** the surface's share of the player's motion (null: off) */
   share(): number | null;
+  /** the surface dances calibrated on the song, or null when off (the dance gallery's genes) */
+  dances(dances: Mapping[] | null): void;
 }
 
 export class RigSurfaceView {
   private surface: RigSurface | null = null;
   private dances: Mapping[] = [];
+  /** the menu: the surface dances, then the genes of dances the player opened */
+  private menu: Mapping[] = [];
   private song = "";
   private current: SurfacePlay | null = null;
 
@@ -44,6 +48,8 @@ export class RigSurfaceView {
   reset(): void {
     this.surface = null;
     this.current = null;
+    this.dances = this.menu = []; // calibrated on the skin's harmonics: on again, anew
+    this.events.dances(null);
     $<HTMLInputElement>("rig-surface").checked = false;
     this.enable(false);
     $("rig-surface-share").textContent = "";
@@ -60,6 +66,7 @@ export class RigSurfaceView {
       this.current = null;
       this.enable(false);
       this.events.play(null);
+      this.events.dances(null);
       this.showShare();
       return;
     }
@@ -67,17 +74,33 @@ export class RigSurfaceView {
     if (this.song !== this.events.songId() || !this.dances.length) {
       this.song = this.events.songId();
       this.dances = await surfaceGallery(rig.id, this.song);
+      this.menu = [...this.dances];
       const select = $<HTMLSelectElement>("rig-surface-dance");
       select.replaceChildren(...this.dances.map((_, i) => new Option(`dance ${i + 1}`, String(i))));
     }
     this.enable(true);
     this.choose();
+    this.events.dances(this.dances);
+  }
+
+  /** The player opened a dance: while on, the skin ripples by its surface genes (a bred one
+   * joins the menu). */
+  playGenes(genes: Mapping | null): void {
+    if (!this.current || !genes) return;
+    let index = this.menu.indexOf(genes);
+    if (index < 0) {
+      index = this.menu.push(genes) - 1;
+      $<HTMLSelectElement>("rig-surface-dance").add(new Option(
+        `a dance's own ${index - this.dances.length + 1}`, String(index)));
+    }
+    $<HTMLSelectElement>("rig-surface-dance").value = String(index);
+    this.choose();
   }
 
   private choose(): void {
-    if (!this.surface || !this.dances.length) return;
+    if (!this.surface || !this.menu.length) return;
     const index = Number($<HTMLSelectElement>("rig-surface-dance").value) || 0;
-    this.current = new SurfacePlay(this.surface, this.dances[index],
+    this.current = new SurfacePlay(this.surface, this.menu[index],
       Number($<HTMLInputElement>("rig-surface-gain").value));
     this.events.play(this.current);
     this.showShare();

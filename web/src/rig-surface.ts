@@ -12,6 +12,9 @@ import type { Motion } from "./motion";
 import type { Rig } from "./rig-bundle";
 import { normalising, rigBasis } from "./rig-bundle";
 
+/** A rig's dance: its mapping, with its surface genes (the mapping its skin ripples by) or not. */
+export type RigDance = Mapping & { surface?: Mapping | null };
+
 /** The skin's harmonics as the server packs them (`server.surface_routes.surface_bundle`). */
 export interface RigSurface {
   n: number;

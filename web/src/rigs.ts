@@ -6,7 +6,7 @@ import * as api from "./api";
 import { $, messageOf } from "./dom";
 import { loadAppearance } from "./look";
 import type { Appearance } from "./look";
-import type { Mapping } from "./filter";
+import type { Mapping, Prepared } from "./filter";
 import { RigFigure } from "./bones";
 import { RigMotion, bodyMatrices, modalWeights } from "./modal-skin";
 import type { Motion } from "./motion";
@@ -14,8 +14,8 @@ import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
 import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
-import { surfaceBasis, surfaceShare } from "./rig-surface";
-import type { SurfacePlay } from "./rig-surface";
+import { SurfacePlay, surfaceBasis, surfaceShare } from "./rig-surface";
+import type { RigDance } from "./rig-surface";
 import { RigSurfaceView } from "./rig-surface-view";
 import type { Clock } from "./transport";
 import { Viewer } from "./viewer";
@@ -41,6 +41,8 @@ export class RigStage {
   figure: RigFigure | null = null;
   active = false;
   view: View = "gallery";
+  /** each dance tile's surface genes as played (`surfaceOf`) */
+  private tileSurfaces = new WeakMap<Prepared, SurfacePlay>();
   /** the rig gallery's default mapping (calibrated on the song): what combined modes play */
   private defaultMapping: Mapping | null = null;
 
@@ -58,17 +60,17 @@ export class RigStage {
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
       songId: () => events.songId(),
       combine: (modes) => this.combine(modes),
-      open: (mapping, source) => { this.player.show(mapping, source); this.setView("player"); },
+      open: (mapping, source) => this.openDance(mapping, source),
       timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1 });
     this.player = new RigPlayerView({ requestDraw, guard: events.guard,
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
       reset: () => this.reset(), surface: () => this.surface.genes });
-    this.motion.surfaceFor = () => this.player.prepared;
+    this.motion.surfaceOf = (prepared) => this.surfaceOf(prepared);
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
       guard: events.guard, play: (surface) => this.playSurface(surface),
-      share: () => this.surfaceShare() });
+      share: () => this.surfaceShare(), dances: (dances) => this.gallery.setSurfaces(dances) });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
@@ -133,6 +135,30 @@ export class RigStage {
     const player = this.player.shot($("rig-player-area"));
     return { view: this.view, tiles: this.view === "gallery" ? this.gallery.shots() : [], player,
       explorer: { harmonic: -1, scale: 1 } };
+  }
+
+  /** Play a dance in the player: its bones' mapping, and its surface genes while the surface
+   * is on. */
+  openDance(mapping: RigDance, source: string): void {
+    this.player.show(mapping, source);
+    this.surface.playGenes(mapping.surface ?? null);
+    this.setView("player");
+  }
+
+  /** What ripples the skin of the player (the surface section's choice) or of a dance tile
+   * (its surface genes, at the section's gain); null: nothing, or the surface is off. */
+  private surfaceOf(prepared: Prepared): SurfacePlay | null {
+    const played = this.motion.surface;
+    if (!played || prepared === this.player.prepared) return played;
+    const genes = this.gallery.surfaceGenes(prepared);
+    if (!genes) return null;
+    let play = this.tileSurfaces.get(prepared);
+    if (play?.mapping !== genes || play.surface !== played.surface) {
+      play = new SurfacePlay(played.surface, genes);
+      this.tileSurfaces.set(prepared, play);
+    }
+    play.gain = played.gain;
+    return play;
   }
 
   /** Combine the selected modes in the player: the song-calibrated default mapping playing
