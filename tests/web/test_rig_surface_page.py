@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import urllib.request
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -30,6 +31,8 @@ pytestmark = pytest.mark.web
 TIMES = (0.4, 1.3, 2.9)
 SWITCH = """(on) => { const box = document.getElementById('rig-surface');
   box.checked = on; box.dispatchEvent(new Event('change')); }"""
+GAIN = """(gain) => { const slider = document.getElementById('rig-surface-gain');
+  slider.value = String(gain); slider.dispatchEvent(new Event('input')); }"""
 
 
 @pytest.fixture(scope="module")
@@ -69,6 +72,16 @@ def test_the_surface_ripples_the_skin_on_the_gpu_as_python_does(page, live_serve
     shown = page.evaluate("document.getElementById('rig-surface-share').textContent")
     assert shown.endswith("% of the motion") and 0 < share < 1, shown
     assert abs(int(shown.split("%")[0]) - 100 * share) <= 1, (shown, share)  # float32, rounding
+    # The gain sets the share: at 2× the surface mapping's gain, Python's share, shown anew.
+    page.evaluate(GAIN, 2)
+    page.wait_for_function(f"document.getElementById('rig-surface-share').textContent "
+                           f"!== {json.dumps(shown)}")
+    louder = SurfaceDance(rig.surface(), song, replace(ripple.mapping,
+                                                       gain=2 * ripple.mapping.gain))
+    doubled = surface_share(still, still + louder.displacements(moments), rig.skeleton.vertices)
+    shown = page.evaluate("document.getElementById('rig-surface-share').textContent")
+    assert doubled > share and abs(int(shown.split("%")[0]) - 100 * doubled) <= 1, (shown, doubled)
+    page.evaluate(GAIN, 1)
     page.evaluate(SWITCH, False)
     page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
     back = np.array(page.evaluate(f"window.eigendance.rig.readPositions('player', {TIMES[1]})"))
@@ -167,6 +180,13 @@ def test_rig_dances_breed_with_their_surface_genes_as_python_does(page, live_ser
     assert saved["surface"]["amplification"] == children[crossed]["surface"]["amplification"]
     shown = np.array(page.evaluate(f"{hooks}.cpuPositions('player', {TIMES[1]})"))
     np.testing.assert_allclose(shown.reshape(-1, 3), bones[1] + ripple[1], atol=1e-4 * diagonal)
+    # The share shown follows the dance opened (measured again once the player changes).
+    moments = (np.arange(16) + 0.5) * song.duration / 16
+    still = rig.skin.positions(rig_coefficients(rig.model, song, child, moments))
+    moved = still + SurfaceDance(rig.surface(), song, child.surface).displacements(moments)
+    share = 100 * surface_share(still, moved, rig.skeleton.vertices)
+    page.wait_for_function(f"Math.abs(parseInt(document.getElementById('rig-surface-share')"
+                           f".textContent) - {share}) <= 1")
     page.evaluate(SWITCH, False)
     page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
     assert page.evaluate(f"{hooks}.playerMapping()").get("surface") is None

@@ -27,6 +27,8 @@ export interface RigPlayerEvents {
   reset(): Promise<void>;
   /** the surface's mapping as played (saved as the mapping's `surface` genes), or null */
   surface?(): Mapping | null;
+  /** the dance played changed (its palette, gain, offset, music; the surface's share follows) */
+  changed?(): void;
 }
 
 const DEGREES = Math.PI / 180;
@@ -224,6 +226,7 @@ export class RigPlayerView {
   update(): void {
     if (this.rig && this.mapping && this.palette) {
       this.prepared = prepareRig(this.rig, { ...this.mapping, modes: this.palette }, this.music);
+      this.events.changed?.();
     }
     this.events.requestDraw();
   }

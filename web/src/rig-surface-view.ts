@@ -7,6 +7,9 @@ import type { Rig } from "./rig-bundle";
 import { SurfacePlay, rigSurface, surfaceGallery } from "./rig-surface";
 import type { RigSurface } from "./rig-surface";
 
+/** The share is measured this long after the last change (ms). */
+const SHARE_DELAY_MS = 150;
+
 export interface RigSurfaceEvents {
   rig(): Rig | null;
   songId(): string;
@@ -26,6 +29,7 @@ export class RigSurfaceView {
   private menu: Mapping[] = [];
   private song = "";
   private current: SurfacePlay | null = null;
+  private pending: ReturnType<typeof setTimeout> | undefined;
 
   constructor(private readonly events: RigSurfaceEvents) {
     const toggle = $<HTMLInputElement>("rig-surface");
@@ -37,7 +41,7 @@ export class RigSurfaceView {
     gain.addEventListener("input", () => {
       $("rig-surface-gain-out").textContent = `${Number(gain.value).toFixed(2)}×`;
       if (this.current) this.current.gain = Number(gain.value);
-      this.showShare();
+      this.refreshShare();
     });
   }
 
@@ -104,6 +108,13 @@ export class RigSurfaceView {
       Number($<HTMLInputElement>("rig-surface-gain").value));
     this.events.play(this.current);
     this.showShare();
+  }
+
+  /** The share again once the gain or the player's dance stops changing (a slider's drag). */
+  refreshShare(): void {
+    if (!this.current) return;
+    clearTimeout(this.pending);
+    this.pending = setTimeout(() => this.showShare(), SHARE_DELAY_MS);
   }
 
   /** The surface's share of the motion beside its gain (`modal.surface.surface_share`). */

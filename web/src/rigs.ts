@@ -66,7 +66,8 @@ export class RigStage {
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
-      reset: () => this.reset(), surface: () => this.surface.genes });
+      reset: () => this.reset(), surface: () => this.surface.genes,
+      changed: () => this.surface?.refreshShare() });
     this.motion.surfaceOf = (prepared) => this.surfaceOf(prepared);
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
       guard: events.guard, play: (surface) => this.playSurface(surface),
