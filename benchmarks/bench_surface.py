@@ -12,7 +12,7 @@ harmonics while its bones sway. For every shared rig, on a real song:
    `render` (the video, 640×360, frames + encoding), with and without the surface, in the same
    run;
 5. with --page: the page's rig player (headless Chromium, `browser_surface.py`): ms per frame
-   with the surface off and on.
+   with the surface off and on, in modal skinning and in the LBS view.
 
     EIGENDANCE_SHARED_DATA=/work/shared/data python benchmarks/bench_surface.py
         [--song kevin_macleod_vibe_ace.ogg] [--frames 120] [--seconds 8] [--no-render] [--page]

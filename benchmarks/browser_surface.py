@@ -4,7 +4,8 @@
 `eigendance serve` gets the built-in cat, the demo music and the rigged files; the page
 (1024×768) opens each rig in its player and times frames drawn by the `?test` hook
 `rig.timeFrames` (the positions pass and drawing, waited for on the GPU), surface off and on
-(the skin's first surface dance) in turn, twice: the best of the two turns of each.
+(the skin's first surface dance) in turn, twice: the best of the two turns of each; each in
+modal skinning and in the LBS view ("off lbs", "on lbs": the surface as morph targets).
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ SWITCH = """(on) => { const box = document.getElementById('rig-surface');
 
 
 def player_ms(rig_files, frames=20, port=8798) -> dict:
-    """{rig name: {"off": ms, "on": ms}} and the renderer under "renderer"."""
+    """{rig name: {"off": ms, "on": ms, "off lbs": ms, "on lbs": ms}} and the renderer under
+    "renderer"."""
     cat, song = demo_paths()
     server = subprocess.Popen(
         [sys.executable, "-m", "eigendance.cli", "serve", cat, song, *rig_files, "-k", "8",
@@ -59,9 +61,13 @@ def player_ms(rig_files, frames=20, port=8798) -> dict:
                     page.wait_for_function(
                         f"{'!' if on else ''}document.getElementById('rig-surface-dance')"
                         ".disabled", timeout=600_000)
-                    frame = page.evaluate(f"window.eigendance.rig.timeFrames({frames})")["frame"]
-                    key = "on" if on else "off"
-                    spent[key] = round(min(spent.get(key, frame), frame), 2)
+                    for skinning in ("modal", "lbs"):  # the LBS view: morph targets
+                        page.evaluate(f"window.eigendance.rig.setSkinning('{skinning}')")
+                        frame = page.evaluate(
+                            f"window.eigendance.rig.timeFrames({frames})")["frame"]
+                        key = ("on" if on else "off") + (" lbs" if skinning == "lbs" else "")
+                        spent[key] = round(min(spent.get(key, frame), frame), 2)
+                page.evaluate("window.eigendance.rig.setSkinning('modal')")
                 results[rig["name"]] = spent
             browser.close()
     finally:
