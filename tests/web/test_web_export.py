@@ -21,6 +21,8 @@ from starlette.testclient import TestClient
 from web_helpers import write_icosphere, write_song
 
 from eigendance.harmonic.motion import positions_at
+from eigendance.modal.rig import Rig
+from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.app import create_app
@@ -140,6 +142,28 @@ def test_a_rig_exports_its_clip_too(client):
     assert gltf.skins and gltf.extras["eigendance"]["start"] == pytest.approx(0.5)
     times = read_accessor(gltf, gltf.animations[0].samplers[0].input)
     assert times.max() == pytest.approx(1.0)
+
+
+def test_a_rig_with_surface_genes_exports_its_ripple_as_morph_targets(client, files):
+    """The page exports what its player plays: a rig mapping's surface genes ripple the skin
+    (docs/design.md#surface-of-a-rig), the glb's morph targets under the skin, one per driven
+    harmonic, with the genes in its extras."""
+    rig = Rig.from_skeleton(sample_rig("loop4"))
+    song = Spectrogram.from_file(files["song"])
+    genes = initial_gallery(rig.surface().basis, song, 4)[0]
+    bones = {"format": "eigendance.mapping", "version": 2, "bands": 64,
+             "transfer": [0.5] * 64, "amplification": [0.05], "offset": 1.0}
+    whole = {**bones, "version": 3, "surface": genes.to_json()}  # as the page saves it
+    _, data = export(client, rig=client.ids["loop4"], song=client.ids["song"], mapping=whole,
+                     format="glb", start=0.5, duration=1.0, fps=10)
+    gltf = pygltflib.GLTF2.load_from_bytes(data)
+    driven = len(genes.driven(rig.surface().k))  # the harmonics its bands reach
+    assert gltf.skins and len(gltf.meshes[0].primitives[0].targets) == driven > 0
+    played = gltf.extras["eigendance"]["surface"]["mapping"]
+    np.testing.assert_allclose(played["amplification"], genes.amplification)
+    _, plain = export(client, rig=client.ids["loop4"], song=client.ids["song"], mapping=bones,
+                      format="glb", start=0.5, duration=1.0, fps=10)
+    assert not pygltflib.GLTF2.load_from_bytes(plain).meshes[0].primitives[0].targets
 
 
 @pytest.mark.parametrize(("fields", "status", "words"), [

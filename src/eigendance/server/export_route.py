@@ -24,6 +24,7 @@ from starlette.responses import FileResponse, JSONResponse
 from eigendance import checks
 from eigendance.errors import EigendanceError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.modal.surface import SurfaceDance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
@@ -186,10 +187,12 @@ async def start_export(request: Request, body: dict, item, song) -> JSONResponse
 
     def clip():
         mapping = mapping_from(body["mapping"], "mapping")
-        if "rig" in body:
+        if "rig" in body:  # its skin ripples by the mapping's surface genes, if any
             rig = item.rig
+            surface = None if mapping.surface is None else SurfaceDance(
+                rig.surface(), song.spectrogram, mapping.surface)
             whole = rig_dance(rig, song.spectrogram, rig.mapping(song.spectrogram, mapping),
-                              "modal", audio, stem)
+                              "modal", audio, stem, surface=surface)
         else:
             whole = HarmonicDance(item.basis, song.spectrogram, mapping, audio, stem)
         part = whole.window(start, duration)
