@@ -24,12 +24,12 @@ from starlette.responses import FileResponse, JSONResponse
 from eigendance import checks
 from eigendance.errors import EigendanceError, one_line
 from eigendance.export.dance import HarmonicDance, rig_dance
-from eigendance.modal.surface import SurfaceDance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
 from eigendance.export.video import parse_size, render_video
 from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.inputs.mapping import check_mapping_size, mapping_from
+from eigendance.modal.surface import SurfaceDance
 from eigendance.server.items import Job, new_id
 from eigendance.server.library import Library
 from eigendance.server.lookup import item_of, library_of, ready_basis, song_of
