@@ -5,7 +5,6 @@ built once."""
 from __future__ import annotations
 
 import json
-import pickle
 import shutil
 
 import numpy as np
@@ -108,7 +107,7 @@ def test_one_basis_for_several_mappings_is_the_k_they_record():
         shared_k([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
 
 
-def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):
+def test_the_problem_is_built_once_and_answers_each_k(monkeypatch, tmp_path):
     sphere = trimesh.creation.icosphere(2)
     mesh = Mesh.from_arrays(sphere.vertices, sphere.faces)
     problem = HarmonicProblem(mesh, cache=False)
@@ -117,16 +116,23 @@ def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):
     operators = problem.operators()
     assert problem.operators() is operators  # L and M assembled once
     assert len(problem.contacts) == 0  # one piece: no contact
-    again = pickle.loads(pickle.dumps(problem)).basis(9)  # as the server's worker gets it
+    problem.save(tmp_path / "parsed.npz")  # as the server's solve worker gets it
+    loaded = HarmonicProblem.load(tmp_path / "parsed.npz")
+    again = loaded.basis(9)
     np.testing.assert_allclose(np.abs(again.eigenvectors), np.abs(first.eigenvectors),
                                atol=1e-8)
-    # the construction "auto" chooses is decided once per k (the server plans with it)
+    assert (loaded.key(9), loaded.laplacian, loaded.cache) == (problem.key(9), "cotan", False)
+    # the construction "auto" chooses is decided once per k (the server plans with it), and
+    # the saved problem keeps the decision (the solve's worker does not decide again)
     calls = []
     monkeypatch.setattr("eigendance.harmonic.basis.choose_construction",
-                        lambda *args: calls.append(args) or "exact")
+                        lambda *args: calls.append(args) or "reduced")
     fresh = HarmonicProblem(mesh, cache=False)
-    assert fresh.construction_for(9) == fresh.construction_for(9) == "exact"
+    assert fresh.construction_for(9) == fresh.construction_for(9) == "reduced"
+    fresh.save(tmp_path / "fresh.npz")
+    assert HarmonicProblem.load(tmp_path / "fresh.npz").construction_for(9) == "reduced"
     assert len(calls) == 1
+    monkeypatch.undo()
     assert HarmonicBasis.from_mesh(mesh, 9, cache=False).record == BasisRecord(9)
     with pytest.raises(InputError, match="unknown construction 'fast'"):
         HarmonicProblem(mesh, construction="fast")
