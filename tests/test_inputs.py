@@ -18,7 +18,7 @@ from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
 from eigendance.harmonic.construction import BasisRecord, basis_key
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.inputs.defaults import DEFAULT_K
-from eigendance.inputs.mapping import basis_choice, read_mapping, shared_k
+from eigendance.inputs.mapping import BasisChoice, basis_choice, read_mapping, shared_choice
 from eigendance.inputs.model import classify, model_kind, published_suffixes, read_model
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton_file import skeleton_document
@@ -95,16 +95,31 @@ def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
             read_mapping(path)
 
 
-def test_one_basis_for_several_mappings_is_the_k_they_record():
+def test_one_basis_for_several_mappings_is_the_one_they_record():
     made = [Mapping([0.5], [1.0], name=f"{k}.json", basis=BasisRecord(k)) for k in (24, 24)]
     old = Mapping([0.5], [1.0], name="old.json")
-    assert shared_k([*made, old]) == (24, None)
-    assert shared_k([old]) == (DEFAULT_K, None)
-    assert shared_k(made, 24) == (24, None)
-    k, note = shared_k(made, 60)
-    assert k == 60 and note.startswith("24.json was made on k = 24 harmonics; on k = 60")
+    exact = BasisChoice(24, "exact")
+    assert shared_choice([*made, old]) == (exact, [])
+    assert shared_choice([old]) == (BasisChoice(DEFAULT_K, "auto"), [])
+    assert shared_choice(made, 24) == (exact, [])
+    choice, notes = shared_choice(made, 60)
+    assert choice == BasisChoice(60, "exact") and len(notes) == 2
+    assert notes[0] == basis_choice(made[0], 60).note  # the command line's line, word for word
+    assert notes[0].startswith("24.json was made on k = 24 harmonics (exact); on k = 60 "
+                               "harmonics (exact)")
     with pytest.raises(InputError, match=r"different k \(24, 40\); set k"):
-        shared_k([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
+        shared_choice([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
+    # the construction recorded is followed too, and asked for another it is said
+    reduced = [Mapping([0.5], [1.0], name="r.json", basis=BasisRecord(24, "reduced", 96))]
+    assert shared_choice(reduced) == (BasisChoice(24, "reduced", 96), [])
+    choice, notes = shared_choice(reduced, construction="exact")
+    assert choice == BasisChoice(24, "exact") and notes == [
+        "r.json was made on k = 24 harmonics (reduced, 96 samples); on k = 24 harmonics "
+        "(exact) the same bands drive other harmonics: the dance differs from the one it was "
+        "made on"]
+    with pytest.raises(InputError, match=r"different constructions \(exact, reduced\); set "
+                                         "construction"):
+        shared_choice([*made, *reduced])
 
 
 def test_the_problem_is_built_once_and_answers_each_k(monkeypatch, tmp_path):
