@@ -14,7 +14,7 @@ from scipy.signal import find_peaks
 
 from eigendance.cli import main
 from eigendance.errors import EigendanceError
-from eigendance.export.dance import rig_dance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.modal.motion import rig_coefficients, twists
 from eigendance.modal.palette import lock_ratios, locked_phases
 from eigendance.modal.rig import Rig

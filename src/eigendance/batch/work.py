@@ -23,9 +23,10 @@ from threadpoolctl import threadpool_limits
 from eigendance.batch.plan import FORMATS
 from eigendance.batch.record import file_entry
 from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.dance import HarmonicDance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
+from eigendance.export.rig_dance import rig_dance
 from eigendance.export.video import render_video
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.motion import write_animation
