@@ -93,7 +93,7 @@ def harmonic_dance_of(path: str, song: str):
 def rig_dance_of(path: str, song: str):
     import numpy as np
 
-    from eigendance.export.dance import rig_dance
+    from eigendance.export.rig_dance import rig_dance
     from eigendance.modal.rig import Rig
     from eigendance.modal.sample_rigs import load_rig
     from eigendance.music.spectrogram import Spectrogram

@@ -46,8 +46,8 @@ def per_frame(function, frames: int, repeat: int = 3) -> float:
 
 
 def measure(name, song, song_path, frames, seconds, render):
-    from eigendance.export.dance import rig_dance
     from eigendance.export.renderer import Look
+    from eigendance.export.rig_dance import rig_dance
     from eigendance.export.video import render_video
     from eigendance.harmonic.contacts import part_drift
     from eigendance.modal.rig import Rig

@@ -38,7 +38,8 @@ from playwright.sync_api import sync_playwright
 
 from big_meshes import detailed_obj
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.music.mapping import Mapping, filters
+from eigendance.music.filter import filters
+from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.serve import demo_paths
 from shared_data import shared_path

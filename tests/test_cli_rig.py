@@ -11,7 +11,8 @@ from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import parse_modes, rig_coefficients
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 

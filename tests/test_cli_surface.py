@@ -5,7 +5,7 @@ import numpy as np
 import pygltflib
 
 from eigendance.cli import main
-from eigendance.export.dance import rig_dance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.modal.surface import SurfaceDance

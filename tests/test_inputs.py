@@ -5,7 +5,6 @@ built once."""
 from __future__ import annotations
 
 import json
-import pickle
 import shutil
 
 import numpy as np
@@ -19,7 +18,7 @@ from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
 from eigendance.harmonic.construction import BasisRecord, basis_key
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.inputs.defaults import DEFAULT_K
-from eigendance.inputs.mapping import basis_choice, read_mapping, shared_k
+from eigendance.inputs.mapping import BasisChoice, basis_choice, read_mapping, shared_choice
 from eigendance.inputs.model import classify, model_kind, published_suffixes, read_model
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton_file import skeleton_document
@@ -96,19 +95,34 @@ def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
             read_mapping(path)
 
 
-def test_one_basis_for_several_mappings_is_the_k_they_record():
+def test_one_basis_for_several_mappings_is_the_one_they_record():
     made = [Mapping([0.5], [1.0], name=f"{k}.json", basis=BasisRecord(k)) for k in (24, 24)]
     old = Mapping([0.5], [1.0], name="old.json")
-    assert shared_k([*made, old]) == (24, None)
-    assert shared_k([old]) == (DEFAULT_K, None)
-    assert shared_k(made, 24) == (24, None)
-    k, note = shared_k(made, 60)
-    assert k == 60 and note.startswith("24.json was made on k = 24 harmonics; on k = 60")
+    exact = BasisChoice(24, "exact")
+    assert shared_choice([*made, old]) == (exact, [])
+    assert shared_choice([old]) == (BasisChoice(DEFAULT_K, "auto"), [])
+    assert shared_choice(made, 24) == (exact, [])
+    choice, notes = shared_choice(made, 60)
+    assert choice == BasisChoice(60, "exact") and len(notes) == 2
+    assert notes[0] == basis_choice(made[0], 60).note  # the command line's line, word for word
+    assert notes[0].startswith("24.json was made on k = 24 harmonics (exact); on k = 60 "
+                               "harmonics (exact)")
     with pytest.raises(InputError, match=r"different k \(24, 40\); set k"):
-        shared_k([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
+        shared_choice([*made, Mapping([0.5], [1.0], basis=BasisRecord(40))])
+    # the construction recorded is followed too, and asked for another it is said
+    reduced = [Mapping([0.5], [1.0], name="r.json", basis=BasisRecord(24, "reduced", 96))]
+    assert shared_choice(reduced) == (BasisChoice(24, "reduced", 96), [])
+    choice, notes = shared_choice(reduced, construction="exact")
+    assert choice == BasisChoice(24, "exact") and notes == [
+        "r.json was made on k = 24 harmonics (reduced, 96 samples); on k = 24 harmonics "
+        "(exact) the same bands drive other harmonics: the dance differs from the one it was "
+        "made on"]
+    with pytest.raises(InputError, match=r"different constructions \(exact, reduced\); set "
+                                         "construction"):
+        shared_choice([*made, *reduced])
 
 
-def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):
+def test_the_problem_is_built_once_and_answers_each_k(monkeypatch, tmp_path):
     sphere = trimesh.creation.icosphere(2)
     mesh = Mesh.from_arrays(sphere.vertices, sphere.faces)
     problem = HarmonicProblem(mesh, cache=False)
@@ -117,16 +131,23 @@ def test_the_problem_is_built_once_and_answers_each_k(monkeypatch):
     operators = problem.operators()
     assert problem.operators() is operators  # L and M assembled once
     assert len(problem.contacts) == 0  # one piece: no contact
-    again = pickle.loads(pickle.dumps(problem)).basis(9)  # as the server's worker gets it
+    problem.save(tmp_path / "parsed.npz")  # as the server's solve worker gets it
+    loaded = HarmonicProblem.load(tmp_path / "parsed.npz")
+    again = loaded.basis(9)
     np.testing.assert_allclose(np.abs(again.eigenvectors), np.abs(first.eigenvectors),
                                atol=1e-8)
-    # the construction "auto" chooses is decided once per k (the server plans with it)
+    assert (loaded.key(9), loaded.laplacian, loaded.cache) == (problem.key(9), "cotan", False)
+    # the construction "auto" chooses is decided once per k (the server plans with it), and
+    # the saved problem keeps the decision (the solve's worker does not decide again)
     calls = []
     monkeypatch.setattr("eigendance.harmonic.basis.choose_construction",
-                        lambda *args: calls.append(args) or "exact")
+                        lambda *args: calls.append(args) or "reduced")
     fresh = HarmonicProblem(mesh, cache=False)
-    assert fresh.construction_for(9) == fresh.construction_for(9) == "exact"
+    assert fresh.construction_for(9) == fresh.construction_for(9) == "reduced"
+    fresh.save(tmp_path / "fresh.npz")
+    assert HarmonicProblem.load(tmp_path / "fresh.npz").construction_for(9) == "reduced"
     assert len(calls) == 1
+    monkeypatch.undo()
     assert HarmonicBasis.from_mesh(mesh, 9, cache=False).record == BasisRecord(9)
     with pytest.raises(InputError, match="unknown construction 'fast'"):
         HarmonicProblem(mesh, construction="fast")

@@ -125,3 +125,46 @@ def vector(value, label: str, length: int = 3, bound: float = math.inf) -> np.nd
     if np.abs(result).max(initial=0.0) > bound:
         raise InputError(f"{label} must lie within ±{bound:.0e}")
     return result
+
+
+def numbers(value, label: str) -> list[float]:
+    """A non-empty list of finite numbers from a document (each through `number`).
+
+    Parameters
+    ----------
+    value : the value as given (a list).
+    label : how the message names it; an item is named label[index].
+
+    Returns
+    -------
+    list of float.
+
+    Example
+    -------
+    >>> numbers([1, 2.5], "m.json: transfer")
+    [1.0, 2.5]
+    """
+    if not isinstance(value, list) or not value:
+        raise InputError(f"{label} must be a non-empty list of numbers")
+    return [number(x, f"{label}[{index}]") for index, x in enumerate(value)]
+
+
+def finite_vector(vector: np.ndarray, label: str, unit: bool = False) -> None:
+    """InputError unless `vector` is a non-empty 1-d array of finite numbers (each in [0, 1]
+    when `unit`): the arrays a value is built from in code rather than read.
+
+    Parameters
+    ----------
+    vector : the array.
+    label : how the message names it; an item is named label[index].
+    unit : each value must lie in [0, 1].
+    """
+    if vector.ndim != 1 or len(vector) == 0:
+        raise InputError(f"{label} must be a non-empty vector, got shape {vector.shape}")
+    bad = np.flatnonzero(~np.isfinite(vector))
+    if len(bad):
+        raise InputError(f"{label}[{bad[0]}] is not finite ({vector[bad[0]]})")
+    if unit:
+        bad = np.flatnonzero((vector < 0) | (vector > 1))
+        if len(bad):
+            raise InputError(f"{label}[{bad[0]}] = {vector[bad[0]]:g} is outside [0, 1]")

@@ -13,6 +13,7 @@ from eigendance.cli.main import main
 from eigendance.errors import InputError
 from eigendance.harmonic.construction import BasisRecord
 from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.inputs.mapping import basis_choice
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
 from eigendance.music.mapping import Mapping
 
@@ -22,6 +23,7 @@ GOOD = {"models": ["sphere.obj", "loop4"], "songs": ["*.wav"], "outputs": ["glb"
 BAD = [  # (what changes, the key the message must name)
     ({"outputz": ["glb"]}, "outputz"),
     ({"outputs": ["gif"]}, "outputs"),
+    ({"construction": "fast"}, "construction"),
     ({"outputs": []}, "outputs"),
     ({"outputs": "@42"}, "outputs"),
     ({"models": ["*.stl"]}, "models"),
@@ -121,6 +123,30 @@ def test_k_is_the_one_the_mappings_were_made_on_unless_the_plan_says(inputs):
                                          r"\(24, 40\)"):
         read_plan(write_plan(str(inputs), **both))
     assert read_plan(write_plan(str(inputs), **both, k=60)).k == 60
+
+
+def test_the_construction_is_the_one_the_mappings_were_made_on_and_a_change_is_said(inputs,
+                                                                                   capsys):
+    """As k, the construction a mapping records is the batch's unless the plan says otherwise;
+    then the batch says how the dance differs in the command line's words (`basis_choice`,
+    printed as `say_note` prints it), before any work."""
+    made = Mapping([0.5], [1.0], name="r.json", basis=BasisRecord(24, "reduced", 96))
+    made.save(inputs / "r.json")
+    Mapping([0.5], [1.0], basis=BasisRecord(24)).save(inputs / "e.json")
+    settings = {key: value for key, value in GOOD.items() if key != "gallery"}
+    plan = read_plan(write_plan(str(inputs), **settings, mappings=["r.json"]))
+    assert (plan.k, plan.construction, plan.samples, plan.notes) == (24, "reduced", 96, [])
+    with pytest.raises(InputError, match=r"mappings were made on bases of different "
+                                         r"constructions \(exact, reduced\); set construction"):
+        read_plan(write_plan(str(inputs), **settings, mappings=["r.json", "e.json"]))
+    for asked, note in (({"construction": "exact"}, basis_choice(made, None, "exact").note),
+                        ({"k": 60}, basis_choice(made, 60).note)):
+        path = write_plan(str(inputs), **settings, mappings=["r.json"], **asked)
+        plan = read_plan(path)
+        assert plan.notes == [note] and note.startswith("r.json was made on k = 24 harmonics "
+                                                        "(reduced, 96 samples); on ")
+        assert main(["batch", path, "--dry-run"]) == 0
+        assert capsys.readouterr().err.splitlines()[0] == f"{path}: note: {note}"
 
 
 def test_names_are_safe_and_collisions_are_told_apart():

@@ -10,6 +10,7 @@ from batch_helpers import write_plan
 from eigendance.batch import work
 from eigendance.batch.plan import read_plan
 from eigendance.batch.run import run_plan
+from eigendance.harmonic.construction import BasisRecord
 from eigendance.music import spectrogram as spectrogram_module
 from eigendance.music.mapping import Mapping
 
@@ -138,3 +139,20 @@ def test_each_song_is_analysed_once_per_band_count_and_its_rhythm_once(inputs, m
     for name in ("onset_strength", "onsets", "beats"):
         np.testing.assert_array_equal(getattr(shared.rhythm, name), getattr(alone.rhythm, name))
     assert shared.rhythm.tempo == alone.rhythm.tempo
+
+
+def test_a_mesh_is_solved_on_the_basis_its_mappings_were_made_on(inputs, monkeypatch):
+    """The k and the construction a mapping records (a reduced basis of 8 harmonics on 40
+    samples here, which the rule would not choose for 162 vertices) are what the model is
+    prepared with; the plan's `construction` overrides it."""
+    monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(inputs / "cache"))
+    Mapping(np.linspace(0, 1, 16), np.linspace(-1, 1, 8),
+            basis=BasisRecord(8, "reduced", 40)).save(inputs / "made.json")
+    settings = {"models": ["sphere.obj"], "songs": ["a.wav"], "mappings": ["made.json"],
+                "outputs": ["npz"], "fps": 10}
+    engine, _ = run(write_plan(str(inputs), **settings, out="out"))
+    (arguments,) = called(engine, "prepare_model")
+    assert arguments[2:] == (8, "reduced", 40)
+    assert work.prepare_model(*arguments).construction == "reduced"
+    engine, _ = run(write_plan(str(inputs), **settings, out="out2", construction="exact"))
+    assert called(engine, "prepare_model")[0][2:] == (8, "exact", None)

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from export_helpers import LONG_SONG, SONG, rig
 
-from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.dance import HarmonicDance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh, load_mesh
 from eigendance.modal.surface import SurfaceDance

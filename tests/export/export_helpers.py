@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from eigendance.export.dance import rig_dance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.modal.motion import band_mapping
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig

@@ -20,8 +20,8 @@ from test_gltf import load
 
 from eigendance.cli import main
 from eigendance.errors import InputError
-from eigendance.export.dance import rig_dance
 from eigendance.export.files import export_dance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.files import load_npz
 from eigendance.harmonic.motion import positions_at
 from eigendance.modal.model import ModalModel

@@ -25,7 +25,8 @@ from eigendance.modal.sample_rigs import load_rig, sample_rig
 from eigendance.music.breeding import breed
 from eigendance.music.dancer import full_scale_motion
 from eigendance.music.gallery import initial_gallery
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 

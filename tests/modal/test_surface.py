@@ -138,7 +138,7 @@ def test_a_rig_dance_carries_and_breeds_its_surface_genes(tmp_path):
 def test_the_videos_frames_carry_the_ripple_with_the_moved_skins_normals(gun, song):
     """What `render` draws (`RigDance.frames`, modal skinning): the positions of
     `Rig.positions(c, "modal", surface=d)` and unit normals of the moved skin."""
-    from eigendance.export.dance import rig_dance
+    from eigendance.export.rig_dance import rig_dance
     from eigendance.geometry import vertex_normals
 
     ripple = surface_dance(gun, song, 2)

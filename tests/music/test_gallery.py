@@ -16,6 +16,7 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.breeding import Mulberry32, breed, cross
 from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.demo_music import demo_track
+from eigendance.music.filter import harmonic_indices
 from eigendance.music.gallery import (
     MAX_GALLERY,
     MIN_GALLERY,
@@ -27,7 +28,7 @@ from eigendance.music.gallery import (
     motion_content,
     strongest_item,
 )
-from eigendance.music.mapping import Mapping, harmonic_indices
+from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 from helpers import bumpy_sphere, fixture_path, required, sphere
 

@@ -14,13 +14,14 @@ from scipy.signal import find_peaks
 
 from eigendance.cli import main
 from eigendance.errors import EigendanceError
-from eigendance.export.dance import rig_dance
+from eigendance.export.rig_dance import rig_dance
 from eigendance.modal.motion import rig_coefficients, twists
 from eigendance.modal.palette import lock_ratios, locked_phases
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.envelope import Envelope, Pulse, shape_values
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 

@@ -13,7 +13,8 @@ from starlette.testclient import TestClient
 
 from eigendance.cli.main import main
 from eigendance.errors import InputError
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.presets.resample import (
     fit_mapping,
     relative_frequencies,

@@ -1,6 +1,7 @@
 """The server's third round of hardening (issue 34): a failed solve can be retried by the same
 upload, a bad zip or a full disk is one line of 4xx/507 JSON, a zip's directory is judged from
-its end record, analyses have a deadline, and songs are decoded in a worker process."""
+its end record, analyses have a deadline, and songs are decoded in a worker process; and a
+mesh's parse crosses a process boundary once (issue 29)."""
 
 from __future__ import annotations
 
@@ -21,6 +22,8 @@ from eigendance.server import analysis, archive
 from eigendance.server import workers as workers_module
 from eigendance.server.app import create_app
 from eigendance.server.library import Library
+from eigendance.server.memory import footprint
+from helpers import fixture_path
 
 LOCAL = "http://127.0.0.1:8765"
 
@@ -258,3 +261,42 @@ def test_a_songs_length_is_read_without_decoding(tmp_path):
     assert analysis.song_seconds(path, "tune.wav") == pytest.approx(2.5, abs=1e-3)
     assert analysis.song_seconds(str(tmp_path / "none.ogg"), "none.ogg") == 0.0
     assert analysis.song_bytes(60.0, {}) > 6001 * 64 * 8
+
+
+# --- a mesh's parse crosses a process boundary once (issue 29) --------------------------------
+
+@pytest.mark.parametrize("model", ["ball.obj", "kenney_cakeBirthday.glb"])
+def test_a_meshs_parse_never_passes_through_the_server(client, library, tmp_path, monkeypatch,
+                                                       model):
+    """What goes to and comes back from each worker process (`workers.run`), counted as the
+    bytes of the arrays, bytes and strings it holds (`footprint`; a few hundred for names): the
+    reading worker answers only the mesh's look and its counts (`ReadMesh`; the 642 vertices
+    and 1280 triangles of the ball are 46 kB), the solve's worker is given a file name, and
+    only the solved basis
+    comes back, without a second copy of the look (the item's is given to it). Before, the
+    `HarmonicProblem` came back from the reading worker and went on to the solve's."""
+    path = write_icosphere(tmp_path / model, 3) if model.endswith(".obj") else \
+        fixture_path("textured", model)
+    crossings, run = [], workers_module.run
+
+    def noted(function, *arguments, **options):
+        result = run(function, *arguments, **options)
+        crossings.append((function.__name__, footprint(arguments), result))
+        return result
+
+    monkeypatch.setattr(workers_module, "run", noted)
+    with open(path, "rb") as file:
+        answer = client.post(f"/api/upload?name={model}", content=file.read())
+    assert answer.status_code == 201, answer.text
+    assert job_end(client, answer.json()["job"]["id"])["state"] == "done"
+    item = library.meshes[answer.json()["item"]["id"]]
+    assert [name for name, _, _ in crossings] == ["read_file", "solve_basis"]
+    assert all(sent < 2048 for _, sent, _ in crossings)
+    (kind, read), (basis, bundle) = [result for _, _, result in crossings]
+    assert kind == "mesh" and read.vertices == item.vertices == basis.n
+    assert footprint(read) - footprint(item.appearance) < 2048  # the look; no vertex
+    if model.endswith(".glb"):
+        assert item.appearance is not None and footprint(item.appearance) > 0
+    assert basis.appearance is item.appearance and item.basis is basis
+    assert item.held() == footprint(basis, bundle)  # the look charged once
+    assert not [name for name in os.listdir(library.folder) if name.startswith("parsed-")]

@@ -27,7 +27,8 @@ from eigendance.modal.sample_rigs import open_chain
 from eigendance.music.demo_music import demo_track
 from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.gallery import initial_gallery
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.music.onset import BeatFeatures
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle

@@ -117,6 +117,8 @@ def output_key(plan: Plan, job: Job, format: str, digests: dict[str, str]) -> st
                 "duration": plan.duration, "kind": job.model.kind}
     if job.model.kind == "mesh":
         settings["k"] = plan.k
+        if plan.construction != "auto":  # the rule's choice follows from the model and k
+            settings["basis"] = [plan.construction, plan.samples]
     elif plan.surface is not None:  # a rig's rippling skin (docs/design.md#surface-of-a-rig)
         settings["surface"] = plan.surface if isinstance(plan.surface, str) else \
             plan.surface.to_json()

@@ -27,8 +27,9 @@ from eigendance.files import (
     read_toml,
     suffix_of,
 )
+from eigendance.harmonic.construction import CONSTRUCTIONS
 from eigendance.inputs.defaults import DEFAULT_FPS, DEFAULT_K
-from eigendance.inputs.mapping import read_mapping, shared_k
+from eigendance.inputs.mapping import read_mapping, shared_choice
 from eigendance.inputs.model import model_kind
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.music.gallery import MAX_GALLERY, MIN_GALLERY
@@ -41,7 +42,7 @@ HARMONICS = (1, 20000)
 FPS = (0, 240)
 SECONDS = (0, 24 * 3600)
 KEYS = ("models", "songs", "outputs", "gallery", "mappings", "out", "size", "fps", "k",
-        "start", "duration", "cache", "surface")
+        "construction", "start", "duration", "cache", "surface")
 
 EXAMPLE = """\
 # eigendance batch plan (TOML; paths relative to this file; docs/design.md#batch)
@@ -55,6 +56,8 @@ size = "1280x720"                 # video size (optional)
 fps = 30                          # frames per second (optional, default 30)
 k = 150                           # harmonics of a mesh (optional; default: the k the
                                   # mappings were made on, else 150)
+# construction = "exact"          # a mesh's basis, "exact" or "reduced" (optional; default:
+                                  # the one the mappings were made on, else the rule)
 start = 30.0                      # the clip's start in each song, s (optional, default 0)
 duration = 15.0                   # the clip's length, s (optional, default: to the end)
 # cache = "/shared/eigendance-cache"  # the content cache (optional; a cluster: shared storage)
@@ -148,9 +151,12 @@ class Plan:
     Parameters
     ----------
     path : the plan file; out : the output folder; models, songs, items : the inputs;
-    outputs : formats; size : (width, height) px; fps; k; start, duration : s (duration None:
-    to the song's end); cache : the content cache's folder, or None (the default);
-    surface : the rigs' surface mapping (docs/design.md#surface-of-a-rig), "auto", or None.
+    outputs : formats; size : (width, height) px; fps; k, construction, samples : a mesh's
+    basis (`settle_basis`); start, duration : s (duration None: to the song's end); cache :
+    the content cache's folder, or None (the default); surface : the rigs' surface mapping
+    (docs/design.md#surface-of-a-rig), "auto", or None; asked : the plan's `k` and
+    `construction` (None where it has none); notes : one line for each mapping made on another
+    basis than the plan's (`settle_basis`).
     """
 
     path: str
@@ -166,6 +172,30 @@ class Plan:
     duration: float | None = None
     cache: str | None = None
     surface: Mapping | str | None = None
+    construction: str = "auto"
+    samples: int | None = None
+    asked: tuple = (None, None)
+    notes: list[str] = field(default_factory=list)
+
+    def settle_basis(self) -> list[str]:
+        """Set the meshes' basis (k, construction, samples) from what the plan asks and what its
+        items' mappings record (`inputs.mapping.shared_choice`): the basis they were made on
+        unless the plan says otherwise, as on the command line.
+
+        Returns
+        -------
+        `notes`: the command line's line (`inputs.mapping.basis_choice`) for each mapping made
+        on another basis.
+
+        Raises
+        ------
+        InputError
+            When the plan asks for no k (construction) and the mappings record different ones.
+        """
+        choice, self.notes = shared_choice([item.mapping for item in self.items
+                                            if item.mapping is not None], *self.asked)
+        self.k, self.construction, self.samples = choice.k, choice.construction, choice.samples
+        return self.notes
 
     def jobs(self) -> list[Job]:
         """Every (model, song, item), song by song (a song's inputs are needed together).
@@ -217,7 +247,11 @@ class _Reader:
         if "size" in self.document:
             plan.size = self.size()
         plan.fps = self.number("fps", DEFAULT_FPS, *FPS, above=True)
-        plan.k = self.number("k", self.recorded_k(items), *HARMONICS, integer=True)
+        plan.asked = (self.number("k", None, *HARMONICS, integer=True), self.construction())
+        try:
+            plan.settle_basis()
+        except InputError as error:
+            self.fail("mappings", f"{error}".removeprefix("the mappings "))
         plan.start = self.number("start", 0.0, *SECONDS)
         plan.duration = self.number("duration", None, *SECONDS, above=True)
         plan.cache = self.folder_of("cache", required=False)
@@ -236,14 +270,12 @@ class _Reader:
         except InputError as error:
             self.fail("surface", f"{file}: {error}")
 
-    def recorded_k(self, items) -> int | None:
-        """The k the mappings record (`inputs.mapping.shared_k`): the default of `k`."""
-        if "k" in self.document:
-            return None
-        try:
-            return shared_k([item.mapping for item in items if item.mapping is not None])[0]
-        except InputError as error:
-            self.fail("mappings", f"{error}".removeprefix("the mappings "))
+    def construction(self) -> str | None:
+        value = self.document.get("construction")
+        if value is not None and value not in CONSTRUCTIONS[1:]:
+            self.fail("construction", f"must be \"exact\" or \"reduced\", not "
+                                      f"{checks.shown(value)}")
+        return value
 
     def number(self, key, default, low, high, integer=False, above=False):
         if key not in self.document:

@@ -290,8 +290,8 @@ class Scheduler:
         bands = job.item.mapping.bands if job.item.mapping is not None else DEFAULT_BANDS
         model = Input(("model", job.model.path))
         song = Input(("song", job.song.path, bands))
-        self.prepare(model, "prepare_model", (job.model.path, job.model.kind, plan.k),
-                     each.index, [])
+        self.prepare(model, "prepare_model", (job.model.path, job.model.kind, plan.k,
+                                               plan.construction, plan.samples), each.index, [])
         first = self.songs.setdefault(job.song.path, song)  # its rhythm, for other bands
         self.prepare(song, "prepare_song", (job.song.path, found[job.song.path], bands) +
                      ((first,) if first != song else ()), each.index,

@@ -23,9 +23,10 @@ from threadpoolctl import threadpool_limits
 from eigendance.batch.plan import FORMATS
 from eigendance.batch.record import file_entry
 from eigendance.errors import EigendanceError, InputError, one_line
-from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.dance import HarmonicDance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
+from eigendance.export.rig_dance import rig_dance
 from eigendance.export.video import render_video
 from eigendance.harmonic.cache import DiskCache
 from eigendance.harmonic.motion import write_animation
@@ -113,7 +114,8 @@ def memory() -> dict:
     return values
 
 
-def prepare_model(path: str, kind: str, k: int):
+def prepare_model(path: str, kind: str, k: int, construction: str = "auto",
+                  samples: int | None = None):
     """A model's basis (a mesh, through the content cache) or rig (modal analysis and skin).
 
     Parameters
@@ -121,15 +123,17 @@ def prepare_model(path: str, kind: str, k: int):
     path : the model file, or a built-in rig's name.
     kind : "mesh" or "rig".
     k : harmonics of a mesh.
+    construction, samples : a mesh's basis, "auto" (the rule), "exact" or "reduced", and a
+        reduced one's samples (None: the default count).
 
     Returns
     -------
     HarmonicBasis or Rig (float64, as the exports use it).
     """
-    model = read_model(path, kind=kind)
     if kind == "mesh":
+        model = read_model(path, kind=kind, construction=construction, samples=samples)
         return model.problem.basis(k)
-    rig = Rig(model.skeleton, np.float64)
+    rig = Rig(read_model(path, kind=kind).skeleton, np.float64)
     if rig.model.n_modes == 0:
         raise InputError(f"{rig.skeleton.name}: the rig has no vibration mode (no elastic "
                          "joint); nothing to move")

@@ -12,7 +12,7 @@ from tqdm import tqdm
 from eigendance.batch.engines import LocalEngine, RayEngine
 from eigendance.batch.plan import EXAMPLE, read_plan
 from eigendance.batch.run import run_plan
-from eigendance.cli.options import number, progress_bar
+from eigendance.cli.options import number, progress_bar, say_note
 from eigendance.cli.presets import add_preset_options, preset_items
 from eigendance.errors import InputError, InternalError
 from eigendance.harmonic.cache import cache_folder
@@ -225,7 +225,12 @@ def run_batch(args) -> None:
     args : the parsed command line.
     """
     plan = read_plan(args.plan)
-    plan.items = preset_items(args) or plan.items
+    presets = preset_items(args)
+    if presets:
+        plan.items = presets
+        plan.settle_basis()
+    for note in plan.notes:  # a mapping made on another basis: as the command line says it
+        say_note(plan.path, note)
     console = Console(args.verbose)
     try:
         outcome = run_plan(plan, engine_factory(args, plan), console, args.force, args.dry_run)

@@ -26,11 +26,12 @@ from eigendance.cli.options import (
 from eigendance.cli.presets import add_preset_options, fitted, mapping_option
 from eigendance.cli.surface import add_surface_options, surface_of
 from eigendance.errors import InputError
-from eigendance.export.dance import Dance, HarmonicDance, rig_dance
+from eigendance.export.dance import Dance, HarmonicDance
 from eigendance.export.files import FORMATS as EXPORT_FORMATS
 from eigendance.export.files import companion_paths, export_dance, format_of
 from eigendance.export.gltf import glb_size
 from eigendance.export.renderer import Look
+from eigendance.export.rig_dance import rig_dance
 from eigendance.export.video import parse_size, render_video
 from eigendance.files import suffix_of
 from eigendance.inputs.mapping import read_mapping

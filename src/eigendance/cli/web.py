@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import sys
 
-from eigendance.cli.options import HARMONICS, PORT, add_construction, number
+from eigendance.cli.options import HARMONICS, PORT, add_construction, number, say_note
 from eigendance.cli.presets import add_presets_folder, presets_folder
 from eigendance.inputs.defaults import DEFAULT_K
-from eigendance.inputs.mapping import read_mapping, shared_k
+from eigendance.inputs.mapping import read_mapping, shared_choice
 from eigendance.inputs.model import classify
 from eigendance.server.app import create_app
 from eigendance.server.guard import exposure_warning
@@ -111,14 +111,14 @@ def serve(args, paths, announce: str, setlist=None) -> None:
     port = listening.getsockname()[1]
     files = paths()
     mappings = [read_mapping(path) for path in files if classify(path)[0] == "mapping"]
-    k, note = shared_k(mappings, args.k)  # the basis the mappings were made on
-    if note:
-        print(f"eigendance: note: {note}", file=sys.stderr)
+    choice, notes = shared_choice(mappings, args.k, args.construction)  # as they were made
+    for note in notes:
+        say_note("eigendance", note)
     if warning := exposure_warning(args.host):
         print(warning, file=sys.stderr)
-    with library_session(k=k, max_upload_bytes=args.max_upload_mb << 20,
+    with library_session(k=choice.k, max_upload_bytes=args.max_upload_mb << 20,
                          memory_budget=args.max_memory_mb << 20,
-                         construction=args.construction or "auto") as library:
+                         construction=choice.construction) as library:
         terminal_progress(library)
         for path in files:
             library.add_path(path)

@@ -19,11 +19,12 @@ import os
 import numpy as np
 
 from eigendance.errors import InputError
-from eigendance.export.dance import Dance, RigDance
+from eigendance.export.dance import Dance
 from eigendance.export.gltf import glb_size, write_glb
 from eigendance.export.look_files import mtl_text, obj_text, texture_files, write_textures
 from eigendance.export.output import Outputs
 from eigendance.export.pointcache import pc2_size, write_pc2
+from eigendance.export.rig_dance import RigDance
 from eigendance.export.song import cut_song
 from eigendance.export.usd import write_usd
 from eigendance.files import suffix_of

@@ -43,8 +43,9 @@ from scipy.spatial.transform import Rotation
 
 from eigendance.assets.appearance import srgb_to_linear
 from eigendance.errors import InputError
-from eigendance.export.dance import Dance, HarmonicDance, RigDance
+from eigendance.export.dance import Dance, HarmonicDance
 from eigendance.export.gltf_look import drawn_attributes, write_look
+from eigendance.export.rig_dance import RigDance
 from eigendance.harmonic.interpolation import shares
 
 # The models' clay colour on the page (web/src/deform.ts CLAY), as sRGB bytes.

@@ -8,12 +8,15 @@ A `HarmonicProblem` is the eigenproblem of one mesh, built once, as potpourri3d'
 it owns the Laplacian's kind (`laplacian.laplacian_for` unless asked), where the mesh's pieces
 touch (`contacts`), L and M (assembled once, when first needed), the construction of each basis
 (exact or reduced, decided once per k: `construction_for`) and the disk cache's key (`key`), and
-answers `basis(k)`. `HarmonicBasis.from_mesh` is its one-shot wrapper; the server builds one per
-mesh item and sends it to the worker process that solves (docs/design.md#server).
+answers `basis(k)`. `HarmonicBasis.from_mesh` is its one-shot wrapper. `save` writes the parse
+once (the cleaned mesh and the decisions, not its look) and `load` reads it back without
+parsing or checking the mesh again: the server's reading worker saves it, its solve's worker
+loads it, and the mesh never passes through the server (docs/design.md#server).
 """
 
 from __future__ import annotations
 
+import json
 import os
 import time
 from dataclasses import dataclass
@@ -31,6 +34,7 @@ from eigendance.harmonic.construction import (
     basis_key,
     choose_construction,
     eigenpairs_fit,
+    is_cached,
 )
 from eigendance.harmonic.contacts import Contacts, contacts
 from eigendance.harmonic.deform import Deformer
@@ -49,7 +53,10 @@ from eigendance.harmonic.reduced import (
     solve_bytes,
 )
 from eigendance.limits import check_memory, memory_budget
-from eigendance.writes import atomic_save_npz
+from eigendance.writes import atomic_save_npz, atomic_write
+
+# The arrays of a saved problem (`HarmonicProblem.save`): the cleaned mesh's.
+MESH_ARRAYS = ("vertices", "faces", "center", "scale", "vertex_map")
 
 
 @dataclass
@@ -330,7 +337,6 @@ class HarmonicBasis:
         return basis
 
 
-
 class HarmonicProblem:
     """The eigenproblem of a mesh's manifold harmonics, built once (see the module docstring).
 
@@ -383,6 +389,49 @@ class HarmonicProblem:
         self._contacts: Contacts | None = None
         self._operators = None
         self._chosen: dict[int, str] = {}
+
+    def save(self, path: str | os.PathLike) -> None:
+        """Write the parse once, for another process to `load`: the cleaned mesh's arrays
+        (MESH_ARRAYS), its name and clean-up report, the Laplacian and every construction
+        decided so far; not its look (`Mesh.appearance`: the reader keeps it). Written
+        atomically, without fsync (a file of the server's temporary folder, read once).
+
+        Parameters
+        ----------
+        path : the .npz to write.
+        """
+        mesh = self.mesh
+        meta = {"name": mesh.name, "report": mesh.report, "laplacian": self.laplacian,
+                "construction": self.construction, "samples": self.samples,
+                "solver": self.solver, "cache": self.cache, "chosen": self._chosen}
+        arrays = {name: np.asarray(getattr(mesh, name)) for name in MESH_ARRAYS}
+        arrays["meta"] = np.array(json.dumps(meta, default=int))
+        atomic_write(path, lambda file: np.savez(file, **arrays), sync=False, alone=True)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike) -> HarmonicProblem:
+        """A problem as `save` wrote it, neither parsed nor checked again (its mesh has no
+        look).
+
+        Parameters
+        ----------
+        path : a file written by `save`.
+
+        Returns
+        -------
+        HarmonicProblem.
+        """
+        with np.load(path, allow_pickle=False) as data:
+            arrays = {name: data[name] for name in data.files}
+        meta = json.loads(str(arrays.pop("meta")))
+        arrays["scale"] = float(arrays["scale"])
+        problem = cls.__new__(cls)
+        problem.mesh = Mesh(**arrays, report=meta["report"], name=meta["name"])
+        problem.laplacian, problem.construction = meta["laplacian"], meta["construction"]
+        problem.samples, problem.solver = meta["samples"], meta["solver"]
+        problem.cache, problem._contacts, problem._operators = meta["cache"], None, None
+        problem._chosen = {int(k): chosen for k, chosen in meta["chosen"].items()}
+        return problem
 
     @property
     def contacts(self) -> Contacts:
@@ -464,7 +513,7 @@ class HarmonicProblem:
         -------
         bool.
         """
-        return os.path.isfile(basis_cache().path(self.key(k)))
+        return is_cached(self.key(k))
 
     def basis(self, k: int, progress=None):
         """The first k harmonics (`HarmonicBasis`), through the disk cache.

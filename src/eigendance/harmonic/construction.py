@@ -10,6 +10,7 @@ its eigenpairs here.
 from __future__ import annotations
 
 import hashlib
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -184,6 +185,20 @@ def basis_cache() -> DiskCache:
     DiskCache.
     """
     return DiskCache("bases")
+
+
+def is_cached(key: str) -> bool:
+    """Whether the disk cache of eigen-solves holds an entry for `key` (checked when read).
+
+    Parameters
+    ----------
+    key : a solve's key (`basis_key`, `reduced.reduced_key`).
+
+    Returns
+    -------
+    bool.
+    """
+    return os.path.isfile(basis_cache().path(key))
 
 
 def basis_key(mesh: Mesh, k: int, laplacian: str, solver: str = "bands") -> str:

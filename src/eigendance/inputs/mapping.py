@@ -5,7 +5,9 @@ A mapping records the basis it was made on (`BasisRecord`: k, construction, samp
 page's saved mappings and `eigendance gallery`'s do). Every command that takes a mapping solves
 that basis unless told otherwise (`basis_choice`), and then says in one line how the dance will
 differ. A mapping without the record (from before it, or a rig's) takes the default k
-(`defaults.DEFAULT_K`, the page's k then too) and the construction rule.
+(`defaults.DEFAULT_K`, the page's k then too) and the construction rule. Where one basis
+serves several mappings (`serve`, a batch's model) it is the one they record
+(`shared_choice`), and each mapping made on another says so in the same line.
 """
 
 from __future__ import annotations
@@ -178,35 +180,48 @@ def record_note(mapping: Mapping | None, record: BasisRecord) -> str | None:
             f"{record.describe()}, and the dance differs from the one it was made on")
 
 
-def shared_k(mappings, k: int | None = None) -> tuple[int, str | None]:
-    """The one k several mappings dance on where one basis serves them all (a library, a
-    batch's model): the k asked for, else the one k they record, else `DEFAULT_K`.
+def shared_choice(mappings, k: int | None = None, construction: str | None = None
+                  ) -> tuple[BasisChoice, list[str]]:
+    """The one basis several mappings dance on where one basis serves them all (a library, a
+    batch's model): each mapping's `basis_choice` with what is asked, which must agree — the
+    k and construction asked for, else the ones they record, else `DEFAULT_K` and the rule.
 
     Parameters
     ----------
     mappings : the mappings.
     k : the k asked for (-k, a plan's `k`), or None.
+    construction : the construction asked for (--exact / --reduced, a plan's
+        `construction`), or None.
 
     Returns
     -------
-    (k, note): note one line when the k asked for is not the one a mapping records, else None.
+    (BasisChoice without its note, notes): one line (`basis_choice`'s) for each mapping made
+    on another basis than the one chosen.
 
     Raises
     ------
     InputError
-        When no k is asked for and the mappings record different ones.
+        When no k (construction) is asked for and the mappings record different ones.
+
+    Example
+    -------
+    >>> made = [Mapping([0.5], [1.0], name="a.json", basis=BasisRecord(24, "exact")),
+    ...         Mapping([0.5], [1.0], name="old.json")]
+    >>> shared_choice(made)
+    (BasisChoice(k=24, construction='exact', samples=None, note=None), [])
+    >>> shared_choice(made, construction="reduced")[1][0].split("; ")[0]
+    'a.json was made on k = 24 harmonics (exact)'
     """
-    recorded = {mapping.basis.k: mapping.name for mapping in mappings
-                if mapping.basis is not None}
-    if k is None:
-        if len(recorded) > 1:
-            raise InputError(f"the mappings were made on bases of different k "
-                             f"({', '.join(map(str, sorted(recorded)))}); set k",
-                             remedy={"k": max(recorded)})
-        return (next(iter(recorded)) if recorded else DEFAULT_K), None
-    other = {made: name for made, name in recorded.items() if made != k}
-    if not other:
-        return k, None
-    made, name = min(other.items())
-    return k, (f"{name} was made on k = {made} harmonics; on k = {k} the same bands drive other "
-               "harmonics: the dance differs from the one it was made on")
+    recorded = [mapping for mapping in mappings if mapping.basis is not None]
+    for asked, what, field in ((k, "k", "k"), (construction, "constructions", "construction")):
+        found = sorted({str(getattr(mapping.basis, field)) for mapping in recorded})
+        if asked is None and len(found) > 1:
+            raise InputError(f"the mappings were made on bases of different {what} "
+                             f"({', '.join(found)}); set {field}",
+                             remedy={"k": max(mapping.basis.k for mapping in recorded)}
+                             if field == "k" else None)
+    choices = [basis_choice(mapping, k, construction) for mapping in recorded] or \
+        [basis_choice(None, k, construction)]
+    first = choices[0]
+    notes = [choice.note for choice in choices if choice.note]
+    return BasisChoice(first.k, first.construction, first.samples), notes

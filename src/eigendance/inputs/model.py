@@ -5,8 +5,9 @@ One rule says what a file is, by its content (`classify`): a skeleton JSON (its 
 "eigendance.skeleton") is a rig and any other JSON a mapping; a glTF with a skin is a rig (as
 the page shows it), any other model file a mesh; a built-in rig's name is that rig; a .npz is a
 basis file. `read_model` reads a model once into the value the work takes — a mesh's
-`HarmonicProblem` (the one object a server sends to its worker), a rig's `Skeleton` or a
-basis — and `published_suffixes` is what the page is told to accept (`GET /api/config`).
+`HarmonicProblem` (which the server's reading worker saves for its solve's), a rig's
+`Skeleton` or a basis — and `published_suffixes` is what the page is told to accept
+(`GET /api/config`).
 """
 
 from __future__ import annotations

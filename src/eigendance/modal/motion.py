@@ -32,7 +32,8 @@ from eigendance.modal.palette import (
 )
 from eigendance.modal.rotations import rotation_exp
 from eigendance.music.envelope import Envelope
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.writes import atomic_save_npz
 

@@ -1,7 +1,7 @@
 """A rig's palette and the default rule that makes any rig dance (docs/design.md#modal-motion).
 
 The palette says which vibration modes move, how much, with which phase and at which time scale
-(the mapping file's `modes`, `eigendance.music.mapping.ModeSettings`). Every field it leaves
+(the mapping file's `modes`, `eigendance.music.mode_settings.ModeSettings`). Every field it leaves
 empty is filled by the default rule, chosen so that at a song's loud moments (φ ≈ 1) the bodies
 move at 0.5–4 Hz and the most bent joint turns by 5°–45°:
 
@@ -33,7 +33,7 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.modal.model import ModalModel
-from eigendance.music.mapping import ModeSettings
+from eigendance.music.mode_settings import ModeSettings
 
 DEFAULT_MODES = 8  # modes a default palette selects at most
 MODE_SPREAD = 4.0  # …whose frequency is at most this times the lowest one

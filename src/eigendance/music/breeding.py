@@ -15,8 +15,9 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.music.dancer import frame_motion, motion_gram, song_times
 from eigendance.music.envelope import Envelope, Pulse
+from eigendance.music.filter import resample_amplification
 from eigendance.music.gallery import PEAK_MOTION
-from eigendance.music.mapping import Mapping, resample_amplification
+from eigendance.music.mapping import Mapping
 
 
 class Mulberry32:

@@ -16,7 +16,8 @@ from typing import Protocol
 
 import numpy as np
 
-from eigendance.music.mapping import Mapping, filters
+from eigendance.music.filter import filters
+from eigendance.music.mapping import Mapping
 
 CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
 MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy

@@ -20,7 +20,7 @@ Pulse: the song's beats (or onsets) kick the targets of a range. At time t, with
 event at or before t, p(t) = exp(−(t − e)/decay) (0 before the first event, and for a song
 without rhythm or beats); target ν of k is in the range [low, high] when
 low ≤ (ν + ½)/k ≤ high. The filter adds `amount`·p(t) to the band sum of every target in the
-range (`eigendance.music.mapping.filters`).
+range (`eigendance.music.filter.filters`).
 """
 
 from __future__ import annotations

@@ -29,11 +29,13 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from eigendance.checks import number, shown
+from eigendance.checks import finite_vector, number, numbers, shown
 from eigendance.errors import InputError
 from eigendance.files import read_json
 from eigendance.harmonic.construction import BasisRecord
 from eigendance.music.envelope import Envelope, Pulse, shape_values
+from eigendance.music.filter import filters, harmonic_indices, resample_amplification
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.writes import atomic_write
 
 FORMAT = "eigendance.mapping"
@@ -41,90 +43,9 @@ VERSION = 3  # written; versions 1 (transfer, amplification, seed) and 2 are sti
 READABLE_VERSIONS = (1, 2, 3)
 MAX_SECTIONS = 64  # the most gain factors a section gene holds
 MAX_SECTION_GAIN = 10.0
-TEMPO_MODES = ("beat", "free")  # a rig's palette: locked to the song's beats, or free-running
 
 
 SHADINGS = ("smooth", "flat", "wireframe")
-
-
-@dataclass
-class ModeSettings:
-    """How a rig's vibration modes move besides the filter: the palette (design.md#modal-motion).
-
-    Every field may be None: the default rule of `eigendance.modal.motion` then decides.
-    selected: indices of the modes that move; amplitudes: per selected mode, its largest body
-    rotation at φ = 1, radians; phases: per selected mode, γ in radians; time_scale: s;
-    tempo: "beat" (locked to the song's beats, docs/design.md#tempo-lock) or "free" (the
-    thesis's free-running sinusoids); None: "beat" when the song has beats.
-
-    Parameters
-    ----------
-    selected, amplitudes, phases, time_scale, tempo : as above.
-    """
-
-    selected: np.ndarray | None = None
-    amplitudes: np.ndarray | None = None
-    phases: np.ndarray | None = None
-    time_scale: float | None = None
-    tempo: str | None = None
-
-    def to_json(self) -> dict:
-        """The `modes` field of a mapping document.
-
-        Returns
-        -------
-        dict; null for the fields left to the default rule.
-        """
-        return {"selected": _listed(self.selected, int),
-                "amplitudes": _listed(self.amplitudes), "phases": _listed(self.phases),
-                "time_scale": None if self.time_scale is None else float(self.time_scale),
-                "tempo": self.tempo}
-
-    @classmethod
-    def from_json(cls, data, name: str) -> ModeSettings:
-        """The `modes` field of a mapping document, checked.
-
-        Parameters
-        ----------
-        data : the field (a dict).
-        name : how messages call the mapping.
-
-        Returns
-        -------
-        ModeSettings; InputError naming the field.
-        """
-        if not isinstance(data, dict):
-            raise InputError(f"{name}: modes must be an object or null")
-        selected = data.get("selected")
-        if selected is not None:
-            if not isinstance(selected, list) or not selected or not all(
-                    isinstance(i, int) and not isinstance(i, bool) and 0 <= i < 1 << 20
-                    for i in selected):
-                raise InputError(f"{name}: modes.selected must be a non-empty list of mode "
-                                 "indices or null")
-            if len(set(selected)) != len(selected):
-                raise InputError(f"{name}: modes.selected lists a mode twice")
-        vectors = {}
-        for key in ("amplitudes", "phases"):
-            value = data.get(key)
-            vectors[key] = None if value is None else \
-                np.array(_number_list(value, f"modes.{key}", name), dtype=np.float64)
-            if vectors[key] is not None:
-                _check_vector(vectors[key], f"modes.{key}", name)
-                if selected is not None and len(vectors[key]) != len(selected):
-                    raise InputError(f"{name}: modes.{key} has {len(vectors[key])} values for "
-                                     f"{len(selected)} selected modes")
-        if vectors["amplitudes"] is not None and np.any(vectors["amplitudes"] < 0):
-            raise InputError(f"{name}: modes.amplitudes must be ≥ 0")
-        time_scale = _number(data.get("time_scale"), "modes.time_scale", name, optional=True)
-        if time_scale is not None and not time_scale > 0:
-            raise InputError(f"{name}: modes.time_scale must be positive")
-        tempo = data.get("tempo")
-        if tempo is not None and tempo not in TEMPO_MODES:
-            raise InputError(f"{name}: modes.tempo must be one of {', '.join(TEMPO_MODES)} or "
-                             f"null, got {shown(tempo)}")
-        return cls(None if selected is None else np.array(selected, dtype=np.int64),
-                   vectors["amplitudes"], vectors["phases"], time_scale, tempo)
 
 
 @dataclass
@@ -185,8 +106,8 @@ class Mapping:
     def __post_init__(self):
         self.transfer = np.asarray(self.transfer, dtype=np.float64)
         self.amplification = np.asarray(self.amplification, dtype=np.float64)
-        _check_vector(self.transfer, "transfer", self.name, unit=True)
-        _check_vector(self.amplification, "amplification", self.name)
+        finite_vector(self.transfer, f"{self.name}: transfer", unit=True)
+        finite_vector(self.amplification, f"{self.name}: amplification")
         for key, low, high in (("gain", 0.0, 1e6), ("smoothing", 0.0, 60.0),
                                ("offset", -1e6, 1e6), ("deformed_normal_weight", 0.0, 1.0)):
             setattr(self, key, number(getattr(self, key), f"{self.name}: {key}", low, high))
@@ -441,10 +362,10 @@ class Mapping:
         bands = data.get("bands")
         if not isinstance(bands, int) or isinstance(bands, bool) or not 1 <= bands <= 1 << 16:
             raise InputError(f"{name}: bands must be a positive integer, got {shown(bands)}")
-        transfer = _number_list(data.get("transfer"), "transfer", name)
+        transfer = numbers(data.get("transfer"), f"{name}: transfer")
         if len(transfer) != bands:
             raise InputError(f"{name}: transfer has {len(transfer)} values; bands says {bands}")
-        amplification = _number_list(data.get("amplification"), "amplification", name)
+        amplification = numbers(data.get("amplification"), f"{name}: amplification")
         seed = data.get("seed")
         if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)
                                  or not 0 <= seed < 1 << 64):
@@ -454,15 +375,15 @@ class Mapping:
         if version >= 2:
             for key in ("gain", "smoothing", "offset"):
                 if key in data:
-                    settings[key] = _number(data[key], key, name)
+                    settings[key] = number(data[key], f"{name}: {key}")
             if data.get("modes") is not None:
                 settings["modes"] = ModeSettings.from_json(data["modes"], name)
             look = data.get("look", {})
             if not isinstance(look, dict):
                 raise InputError(f"{name}: look must be an object")
             if "deformed_normal_weight" in look:
-                settings["deformed_normal_weight"] = _number(
-                    look["deformed_normal_weight"], "look.deformed_normal_weight", name)
+                settings["deformed_normal_weight"] = number(
+                    look["deformed_normal_weight"], f"{name}: look.deformed_normal_weight")
             if "shading" in look:
                 settings["shading"] = look["shading"]
             if "materials" in look:
@@ -508,130 +429,12 @@ class Mapping:
         return cls.from_json(read_json(path), os.path.basename(os.fspath(path)))
 
 
-def _listed(array, kind=float) -> list | None:
-    return None if array is None else [kind(x) for x in array]
-
-
-def _number(value, key: str, name: str, optional: bool = False) -> float | None:
-    return None if value is None and optional else number(value, f"{name}: {key}")
-
-
-def _number_list(value, field_name: str, name: str) -> list:
-    if not isinstance(value, list) or not value:
-        raise InputError(f"{name}: {field_name} must be a non-empty list of numbers")
-    return [number(x, f"{name}: {field_name}[{index}]") for index, x in enumerate(value)]
-
-
 def _section_gene(values, name: str) -> tuple:
     """The section gene checked: 1 … MAX_SECTIONS numbers in [0, MAX_SECTION_GAIN]."""
     if isinstance(values, tuple | np.ndarray):
         values = [float(x) for x in values]
-    values = _number_list(values, "sections", name)
+    values = numbers(values, f"{name}: sections")
     if len(values) > MAX_SECTIONS or not all(0 <= x <= MAX_SECTION_GAIN for x in values):
         raise InputError(f"{name}: sections must be 1 to {MAX_SECTIONS} gain factors in "
                          f"[0, {MAX_SECTION_GAIN:g}]")
     return tuple(float(x) for x in values)
-
-
-def _check_vector(vector: np.ndarray, field_name: str, name: str, unit: bool = False) -> None:
-    if vector.ndim != 1 or len(vector) == 0:
-        raise InputError(f"{name}: {field_name} must be a non-empty vector, "
-                         f"got shape {vector.shape}")
-    bad = np.flatnonzero(~np.isfinite(vector))
-    if len(bad):
-        raise InputError(f"{name}: {field_name}[{bad[0]}] is not finite ({vector[bad[0]]})")
-    if unit:
-        bad = np.flatnonzero((vector < 0) | (vector > 1))
-        if len(bad):
-            raise InputError(f"{name}: {field_name}[{bad[0]}] = {vector[bad[0]]:g} is "
-                             "outside [0, 1]")
-
-
-# ---------------------------------------------------------------------------------------------
-# Filter
-
-
-def harmonic_indices(transfer, k: int) -> np.ndarray:
-    """ν(ξ) = min(k − 1, ⌊t(ξ)·k⌋), int64, for transfers of any shape.
-
-    Parameters
-    ----------
-    transfer : values in [0, 1], any shape.
-    k : the targets.
-
-    Returns
-    -------
-    int64 of the transfer's shape.
-    """
-    transfer = np.asarray(transfer, dtype=np.float64)
-    return np.minimum(k - 1, np.floor(transfer * k)).astype(np.int64)
-
-
-def resample_amplification(amplification, k: int) -> np.ndarray:
-    """a_k(ν) = a(min(K − 1, ⌊(ν + ½)·K/k⌋)) along the last axis (identity when K = k).
-
-    Parameters
-    ----------
-    amplification : (…, K).
-    k : the targets.
-
-    Returns
-    -------
-    (…, k).
-    """
-    amplification = np.asarray(amplification, dtype=np.float64)
-    K = amplification.shape[-1]
-    if K == k:
-        return amplification
-    index = np.minimum(K - 1, np.floor((np.arange(k) + 0.5) * K / k)).astype(np.int64)
-    return amplification[..., index]
-
-
-def filters(mappings, values, k: int, offset: float = 1.0, kicks=None) -> np.ndarray:
-    """φ = a·(Σ g̃ + kick) + offset for S mappings and band values (…, B) in one call →
-    (S, …, k). kicks: (S, …) amount·p(t) of each mapping's pulse, added on its range (None: 0).
-
-    The scatter-add Σ_{ξ: ν(ξ)=ν} g̃(ξ) (= g̃ @ P_s with the one-hot (B, k) matrix P_s of
-    mapping s) is one np.bincount over (mapping, frame, harmonic) for all mappings and frames:
-    no BLAS call (whose thread start-up dominated for small batches) and O(S·F·B) work.
-
-    Parameters
-    ----------
-    mappings : S mappings with the same bands.
-    values : (…, B).
-    k : the targets.
-    offset : b.
-    kicks : (S, …) or broadcastable, amount·p(t) of each mapping's pulse; None: no pulse.
-
-    Returns
-    -------
-    (S, …, k).
-    """
-    values = np.asarray(values, dtype=np.float64)
-    mappings = list(mappings)
-    bands = values.shape[-1]
-    for mapping in mappings:
-        if mapping.bands != bands:
-            raise InputError(f"{mapping.name}: the mapping has {mapping.bands} bands; the "
-                             f"spectrogram has {bands}")
-    if not mappings:
-        return np.zeros((0, *values.shape[:-1], k))
-    count = len(mappings)
-    indices = harmonic_indices(np.stack([m.transfer for m in mappings]), k)  # (S, B)
-    amplification = np.stack([m.amplification_for(k) for m in mappings])  # (S, k)
-    flat = values.reshape(-1, bands)  # (F, B)
-    frames = len(flat)
-    # Flat target index of (s, f, ν(s, ξ)) in an (S, F, k) array, for every (s, f, ξ).
-    rows = (np.arange(count)[:, None] * frames + np.arange(frames)[None, :]) * k  # (S, F)
-    target = rows[:, :, None] + indices[:, None, :]  # (S, F, B)
-    sums = np.bincount(target.ravel(), weights=np.broadcast_to(flat, target.shape).ravel(),
-                       minlength=count * frames * k).reshape(count, frames, k)
-    if kicks is not None:
-        routed = np.stack([m.pulse.routed(k) for m in mappings])  # (S, k)
-        kicks = np.broadcast_to(np.asarray(kicks, dtype=np.float64),
-                                (count, *values.shape[:-1])).reshape(count, frames)
-        sums += kicks[:, :, None] * routed[:, None, :]
-    phi = amplification[:, None, :] * sums + offset
-    return phi.reshape(len(mappings), *values.shape[:-1], k)
-
-

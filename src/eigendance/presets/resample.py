@@ -17,7 +17,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from eigendance.music.mapping import Mapping, ModeSettings, resample_amplification
+from eigendance.music.filter import resample_amplification
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 
 
 def relative_frequencies(eigenvalues) -> np.ndarray:

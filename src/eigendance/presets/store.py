@@ -21,7 +21,8 @@ import platformdirs
 
 from eigendance.errors import InputError
 from eigendance.files import read_json
-from eigendance.music.mapping import Mapping, ModeSettings
+from eigendance.music.mapping import Mapping
+from eigendance.music.mode_settings import ModeSettings
 from eigendance.writes import atomic_write
 
 FORMAT = "eigendance.preset"

@@ -2,8 +2,12 @@
 (`server.workers.run`, docs/design.md#server).
 
 Each function takes and returns picklable values only: what a file holds, read once by the
-inputs layer (`inputs.model`: a mesh's `HarmonicProblem`, a skeleton), or what the page is sent
-(a rig's analysis, a basis, with their bundles). Reading a mesh or a rig's glTF, a rig's
+inputs layer (`inputs.model`: a skeleton, a mapping's document), or what the page is sent (a
+rig's analysis, a basis, with their bundles). A mesh's parse never comes back: the reading
+worker saves its `HarmonicProblem` into the library's folder (`HarmonicProblem.save`) and
+answers what the server plans the item with (`ReadMesh`: counts, k, construction, cache key and
+the look); the solve's worker loads it from there (`solve_basis`). The mesh so crosses a
+process boundary once, and only the solved basis comes back. Reading a mesh or a rig's glTF, a rig's
 modal analysis, a basis's solve and their bundles are mostly pure
 Python or hold the interpreter's lock in C; in a worker process they never make the event loop
 wait. A song is decoded (`read_song`) in a worker process too, after its length is read from
@@ -14,6 +18,8 @@ kernels are compiled once, by the fork server (`music.compiled`), not by every w
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 import soundfile
@@ -32,22 +38,50 @@ from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import basis_bundle, rig_bundle, spectrogram_bundle
 
 
-def read_file(path: str, name: str, construction: str = "auto",
+@dataclass
+class ReadMesh:
+    """A mesh read in a worker process (`read_file`), as the server plans its item; the parse
+    itself is in the file `parsed` (`HarmonicProblem.save`), for the solve's worker.
+
+    Parameters
+    ----------
+    name : the mesh's name.
+    vertices : its vertex count after clean-up.
+    k : the harmonics of its basis (the asked k, within 2 and the vertex count − 2).
+    construction : "exact" or "reduced", decided for k (`HarmonicProblem.construction_for`).
+    key : the disk cache's key of the basis (`HarmonicProblem.key`).
+    appearance : its look (`assets.Appearance`), or None.
+    parsed : the saved problem.
+    """
+
+    name: str
+    vertices: int
+    k: int
+    construction: str
+    key: str
+    appearance: object
+    parsed: str
+
+
+def read_file(path: str, name: str, parsed: str, k: int, construction: str = "auto",
               as_mesh: bool = False) -> tuple[str, object]:
     """A library file classified by its content and read once (`inputs.model`): a mapping's
-    document, a rig's skeleton, or a mesh's `HarmonicProblem` (what the solve's worker gets).
-    A glTF whose skin cannot be read is read as a mesh.
+    document, a rig's skeleton, or a mesh, whose `HarmonicProblem` is saved to `parsed` (its
+    construction for k decided) and summarised (`ReadMesh`). A glTF whose skin cannot be read
+    is read as a mesh.
 
     Parameters
     ----------
     path : the file.
     name : how the page calls it (its suffix is the file's).
+    parsed : where a mesh's problem is saved (a new file of the library's folder).
+    k : the harmonics asked for a mesh's basis.
     construction : "auto", "exact" or "reduced": the mesh's basis.
     as_mesh : read a skinned glTF as a mesh (its skin could not be analysed).
 
     Returns
     -------
-    ("mapping", document), ("rig", Skeleton) or ("mesh", HarmonicProblem).
+    ("mapping", document), ("rig", Skeleton) or ("mesh", ReadMesh).
 
     Raises
     ------
@@ -63,7 +97,13 @@ def read_file(path: str, name: str, construction: str = "auto",
         except InputError:
             if suffix_of(name) not in GLTF_SUFFIXES:
                 raise
-    return "mesh", read_model(path, name, "mesh", construction=construction).problem
+    problem = read_model(path, name, "mesh", construction=construction).problem
+    mesh = problem.mesh
+    k = max(2, min(k, mesh.n - 2))
+    chosen = problem.construction_for(k)
+    problem.save(parsed)
+    return "mesh", ReadMesh(mesh.name, mesh.n, k, chosen, problem.key(k), mesh.appearance,
+                            parsed)
 
 
 def read_rig(source: str, name: str, built_in: bool = False) -> Skeleton:
@@ -187,19 +227,20 @@ def song_bytes(seconds: float, options: dict) -> int:
     return frames * options.get("bands", BANDS) * 9 + (64 << 10)
 
 
-def solve_basis(problem: HarmonicProblem, k: int, progress=None) -> tuple[HarmonicBasis, bytes]:
-    """A mesh's basis (`HarmonicProblem.basis`, with its disk cache) and its bundle.
+def solve_basis(parsed: str, k: int, progress=None) -> tuple[HarmonicBasis, bytes]:
+    """A mesh's basis (`HarmonicProblem.basis`, with its disk cache) and its bundle, from the
+    problem the reading worker saved (`read_file`).
 
     Parameters
     ----------
-    problem : the mesh's problem (its mesh's name names the bundle; its construction for k is
-        the one the item was planned with).
+    parsed : the saved problem (its construction for k the one the item was planned with).
     k : harmonics.
     progress : None, or a callable given the harmonics done.
 
     Returns
     -------
-    (basis, bundle bytes).
+    (basis, bundle bytes): the basis without its mesh's look (the server's item has it).
     """
+    problem = HarmonicProblem.load(parsed)
     basis = problem.basis(k, progress)
     return basis, basis_bundle(basis, problem.mesh.name)

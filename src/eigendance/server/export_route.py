@@ -23,9 +23,10 @@ from starlette.responses import FileResponse, JSONResponse
 
 from eigendance import checks
 from eigendance.errors import EigendanceError, one_line
-from eigendance.export.dance import HarmonicDance, rig_dance
+from eigendance.export.dance import HarmonicDance
 from eigendance.export.files import export_dance
 from eigendance.export.renderer import Look
+from eigendance.export.rig_dance import rig_dance
 from eigendance.export.video import parse_size, render_video
 from eigendance.inputs.defaults import DEFAULT_FPS
 from eigendance.inputs.mapping import check_mapping_size, mapping_from

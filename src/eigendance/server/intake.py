@@ -11,9 +11,10 @@ names from the network never become paths. A .zip is a model in several files
 (`server.archive`): unpacked once into the folder ``upload-<digest>/`` and read from there.
 Each file is classified by its content and read once through the inputs layer
 (`server.analysis.read_file` in one of the server's worker processes: `run`, songs included),
-each within a deadline proportional to its size (`analysed`); a mesh comes back as its
-`HarmonicProblem`, the one object its solve's worker gets, and a song's spectrogram is charged
-to the memory budget from its length before it is decoded.
+each within a deadline proportional to its size (`analysed`); a mesh's parse stays out of the
+server (`analysis.ReadMesh`: its `HarmonicProblem` saved in the library's folder for its
+solve's worker, removed once the solve ends), and a song's spectrogram is charged to the memory
+budget from its length before it is decoded.
 """
 
 from __future__ import annotations
@@ -25,7 +26,6 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError
 from eigendance.files import check_readable, file_digest, kind_of, suffix_of
-from eigendance.harmonic.basis import HarmonicProblem
 from eigendance.inputs.mapping import mapping_from
 from eigendance.inputs.model import GLTF_SUFFIXES
 from eigendance.modal.skeleton import Skeleton
@@ -192,29 +192,36 @@ class Intake:
         it is new): read once in a worker process within the file's deadline (`analysed`)."""
         if kind == "audio":
             return self.add_song(path, name, key), True
-        kind, value = self.analysed(analysis.read_file, path, name, self.construction)
-        if kind == "mapping":
-            return self.add_mapping(value, name, origin)
-        if kind == "mesh":
-            return self.add_mesh(value, path, k, key), True
+        parsed = os.path.join(self.shelf.folder, f"parsed-{new_id()}.npz")  # a mesh's problem
         try:
-            return self.add_rig(value, path, origin, key), True
-        except InputError:
-            if suffix_of(name) not in GLTF_SUFFIXES:
-                raise
-        # a skin that cannot be analysed: the glTF dances as a mesh
-        _, problem = self.analysed(analysis.read_file, path, name, self.construction, True)
-        return self.add_mesh(problem, path, k, key), True
-    def add_mesh(self, problem: HarmonicProblem, path: str, k: int | None = None,
+            kind, value = self.analysed(analysis.read_file, path, name, parsed, k or self.k,
+                                        self.construction)
+            if kind == "mapping":
+                return self.add_mapping(value, name, origin)
+            if kind == "mesh":
+                return self.add_mesh(value, path, key), True
+            try:
+                return self.add_rig(value, path, origin, key), True
+            except InputError:
+                if suffix_of(name) not in GLTF_SUFFIXES:
+                    raise
+            # a skin that cannot be analysed: the glTF dances as a mesh
+            _, mesh = self.analysed(analysis.read_file, path, name, parsed, k or self.k,
+                                    self.construction, True)
+            return self.add_mesh(mesh, path, key), True
+        except BaseException:
+            self.shelf.discard(parsed)  # no solve queued: nobody else removes it
+            raise
+
+    def add_mesh(self, mesh: analysis.ReadMesh, path: str,
                  content: tuple | None = None) -> MeshItem:
         """A mesh item, charged its planned basis, and its basis job queued.
 
         Parameters
         ----------
-        problem : the mesh's `HarmonicProblem` (`analysis.read_file`); its mesh's name is the
-            item's.
+        mesh : the mesh as read (`analysis.read_file`): its name, vertex count, k and
+            construction are the item's; its saved problem goes to the solve's worker.
         path : the mesh file.
-        k : harmonics (default the library's; at most the vertex count − 2).
         content : its content key.
 
         Returns
@@ -226,16 +233,13 @@ class Intake:
         InputError
             When its basis cannot fit the library's memory.
         """
-        mesh = problem.mesh
-        k = max(2, min(k or self.k, mesh.n - 2))
-        item = MeshItem(new_id(), mesh.name, path, k, mesh.n, content=content,
-                        construction=problem.construction_for(k), appearance=mesh.appearance)
-        item.job = Job(new_id(), "basis", k, mesh.name)
-        self.shelf.admit(item, self.shelf.meshes, f"{mesh.name}: a basis of {k} harmonics of "
-                                      f"{mesh.n} vertices")
-        self.solver.put(item, problem)
+        item = MeshItem(new_id(), mesh.name, path, mesh.k, mesh.vertices, content=content,
+                        construction=mesh.construction, appearance=mesh.appearance)
+        item.job = Job(new_id(), "basis", mesh.k, mesh.name)
+        self.shelf.admit(item, self.shelf.meshes, f"{mesh.name}: a basis of {mesh.k} "
+                                                  f"harmonics of {mesh.vertices} vertices")
+        self.solver.put(item, mesh)
         return item
-
     def add_song(self, path: str, name: str, content: tuple | None = None) -> SongItem:
         """A song item: the audio decoded into its spectrogram and bundle.
 

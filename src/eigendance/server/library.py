@@ -56,7 +56,7 @@ class Library:
         os.makedirs(folder, exist_ok=True)
         self.folder, self.k, self.max_upload_bytes = folder, k, max_upload_bytes
         self.shelf = Shelf(folder, Budget(memory_budget))
-        self.solver = BasisSolver(self.shelf.recharge, self.shelf.public)
+        self.solver = BasisSolver(self.shelf.recharge, self.shelf.public, self.shelf.discard)
         self.shelf.removed = self.solver.forget
         self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
                              UNPACKED_FACTOR * max_upload_bytes, self.run)

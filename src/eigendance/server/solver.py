@@ -2,8 +2,11 @@
 by one daemon thread (docs/design.md#server).
 
 Each mesh item's basis is computed by its mesh's `HarmonicProblem` (and its disk cache) with its
-bundle, in a worker process that gets that one object (`analysis.solve_basis`: the Laplacian's
-assembly and the eigen-solver hold the interpreter's lock for seconds); the thread relays its
+bundle, in a worker process that loads the problem its reading worker saved
+(`analysis.solve_basis`: the Laplacian's assembly and the eigen-solver hold the interpreter's
+lock for seconds); the saved problem is removed once its solve ends, or is dropped. The basis
+comes back without the mesh's look, which the item has (`MeshItem.appearance`, given to the
+basis here: held once). The thread relays its
 progress to the item's `Job`, for the page (server-sent events) and for `progress_listeners`
 (the terminal). `stop` ends the solve in progress at once (its process is killed, and its band
 workers with it) and drops the queued ones; `close` also ends the thread.
@@ -11,13 +14,14 @@ workers with it) and drops the queued ones; `close` also ends the thread.
 
 from __future__ import annotations
 
+import os
 import queue
 import threading
 import time
 from collections.abc import Callable
 
 from eigendance.errors import EigendanceError, InternalError, one_line
-from eigendance.harmonic.basis import HarmonicProblem
+from eigendance.harmonic.construction import is_cached
 from eigendance.server import analysis, workers
 from eigendance.server.items import Job, MeshItem
 
@@ -34,10 +38,12 @@ class BasisSolver:
     ----------
     solved : called with a mesh item once its basis and bundle are set (to charge them).
     public : a message → the message as the page may see it (`Library.public`).
+    discard : removes a saved problem once its solve ends (`Shelf.discard`).
     """
 
-    def __init__(self, solved: Callable[[MeshItem], None], public: Callable[[str], str]):
-        self.solved, self.public = solved, public
+    def __init__(self, solved: Callable[[MeshItem], None], public: Callable[[str], str],
+                 discard: Callable[[str], None] = os.unlink):
+        self.solved, self.public, self.discard = solved, public, discard
         self.jobs: dict[str, Job] = {}
         self.progress_listeners: list[Callable[[Job], None]] = []  # e.g. the terminal's bars
         self.stopping = threading.Event()
@@ -47,16 +53,17 @@ class BasisSolver:
         self.worker = threading.Thread(target=self._run, name="basis", daemon=True)
         self.worker.start()
 
-    def put(self, item: MeshItem, problem: HarmonicProblem) -> None:
+    def put(self, item: MeshItem, mesh: analysis.ReadMesh) -> None:
         """Queue the basis of a mesh item.
 
         Parameters
         ----------
         item : the mesh item (its job and k).
-        problem : its mesh's `HarmonicProblem` (its construction for the item's k decided).
+        mesh : its mesh as read: its saved problem (construction for the item's k decided)
+            and cache key.
         """
         self.jobs[item.job.id] = item.job
-        self.queue.put((item, problem))
+        self.queue.put((item, mesh))
 
     def forget(self, item: MeshItem) -> None:
         """A mesh item is removed: stop its solve, fail its queued job, forget the job.
@@ -73,17 +80,18 @@ class BasisSolver:
 
     def _run(self) -> None:
         while True:
-            item, problem = self.queue.get()
+            item, mesh = self.queue.get()
             if item is None:
                 return
-            self._solve(item, problem)
+            self._solve(item, mesh)
 
-    def _solve(self, item: MeshItem, problem: HarmonicProblem) -> None:
+    def _solve(self, item: MeshItem, mesh: analysis.ReadMesh) -> None:
         job = item.job
         if item.removed or self.stopping.is_set():
+            self.discard(mesh.parsed)
             job.update(state="error", message=f"{item.name}: removed from the library")
             return
-        job.cached = problem.cached(item.k)
+        job.cached = is_cached(mesh.key)
         self.solving = item
         job.update(state="running")
         self.tell(job)
@@ -96,11 +104,13 @@ class BasisSolver:
 
         try:
             try:
-                basis, bundle = self._compute(item, problem, progress)
-            finally:
-                self.solving = None  # before the job ends: whoever waits for it sees no solve
+                basis, bundle = self._compute(item, mesh.parsed, progress)
+            finally:  # before the job ends: whoever waits for it sees no solve, no file
+                self.solving = None
+                self.discard(mesh.parsed)
             if item.removed or self.stopping.is_set():
                 raise Stopped
+            basis.appearance = item.appearance
             item.basis, item.bundle = basis, bundle
             job.update(state="done", done=job.total)
             self.solved(item)
@@ -108,14 +118,14 @@ class BasisSolver:
             job.update(state="error", message=self._failure(item, error))
         self.tell(job)
 
-    def _compute(self, item: MeshItem, problem: HarmonicProblem, progress):
+    def _compute(self, item: MeshItem, parsed: str, progress):
         """(basis, bundle) of a mesh item, computed in a worker process (`analysis.solve_basis`)
         while this thread relays its progress; the process is killed when `progress` raises
         (`Stopped`) or the solve is stopped (`stop_solve`)."""
         if self.stopping.is_set() or item.removed:
             raise Stopped
         try:
-            return workers.run(analysis.solve_basis, problem, item.k, progress=progress,
+            return workers.run(analysis.solve_basis, parsed, item.k, progress=progress,
                                started=lambda process: setattr(self, "process", process))
         except InternalError:
             if item.removed or self.stopping.is_set():
