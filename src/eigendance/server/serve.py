@@ -5,7 +5,9 @@ The library lives in a folder of the system's temporary folder, removed when the
 normally, by Ctrl-C, SIGTERM or SIGHUP. A server killed outright (SIGKILL) cannot remove it;
 the next server removes such folders (those whose lock nobody holds any more). The first
 Ctrl-C or SIGTERM stops the solve in progress at once (`Library.stop`) and ends the server
-within a second, open connections (server-sent events) included.
+within a second, open connections (server-sent events) included; its fork server and resource
+tracker end before it does (`processes.stop_fork_server`, at its exit). Exit status 130, 143 or
+129: 128 + the signal, the shell's convention.
 """
 
 from __future__ import annotations
