@@ -47,7 +47,9 @@ PR_SET_PDEATHSIG = 1
 # 94 MB resident, but 5 MB proportional (shared libraries, mostly), and 0.15 s when it starts;
 # without it each batch worker imported it itself (0.15 s, 22 MB of its own). `music.compiled`
 # compiles librosa's numba kernels once in the fork server (2–15 s when it starts), so that each
-# worker that analyses a song (the server's, a batch's) does not.
+# worker that analyses a song (the server's, a batch's) does not. With both, the server's fork
+# server holds 346 MB resident, 180 MB proportional (77 and 46 MB without them:
+# benchmarks/bench_server_memory.py).
 PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis",
            "eigendance.batch.work", "eigendance.music.compiled")
 # How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
