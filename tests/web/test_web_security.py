@@ -541,12 +541,17 @@ def ends_with_its_helpers(process, sent) -> str:
     """Signal a started server; it exits within a generous bound, and its fork server, resource
     tracker and workers have ended before it did (none outlives it: a supervisor waiting for
     the process group, or a pipe's reader, is not kept waiting); its stderr."""
-    helpers = descendants(process.pid)
-    assert any("multiprocessing.forkserver" in command_line(pid) for pid in helpers), helpers
-    process.send_signal(sent)
-    process.wait(timeout=10)
-    left = {pid: command_line(pid) for pid in alive(helpers)}  # at once: nothing may be left
-    _, errors = process.communicate(timeout=10)
+    try:
+        helpers = descendants(process.pid)
+        assert any("multiprocessing.forkserver" in command_line(pid) for pid in helpers), helpers
+        process.send_signal(sent)
+        process.wait(timeout=10)
+        left = {pid: command_line(pid) for pid in alive(helpers)}  # at once: nothing may be left
+        _, errors = process.communicate(timeout=10)
+    finally:
+        if process.poll() is None:  # a failed check leaves no server running
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
     assert left == {}, f"outlived the server: {left}"
     return errors
 
