@@ -12,9 +12,8 @@ import sys
 
 from playwright.sync_api import sync_playwright
 
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync"]
+from browser_server import CHROMIUM_ARGS
+
 FRAMES, ROUNDS = 10, 3  # frames per timing; timings per look, alternating (the best is kept)
 
 

@@ -10,6 +10,7 @@ import time
 import pytest
 
 from eigendance import processes
+from helpers import default_signals
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork, killpg")
 
@@ -70,3 +71,33 @@ def test_kill_takes_the_group_and_is_no_error_once_ended():
     process.close()
     processes.kill(process, group=True)  # closed
     processes.kill(context.Process(target=time.sleep))  # never started
+
+
+STOP_AND_START_AGAIN = """
+import os
+import multiprocessing.forkserver as forkserver
+from eigendance import processes
+
+def started_and_joined():
+    process = processes.context().Process(target=os.getpid)
+    process.start()
+    process.join()
+    return process.exitcode, forkserver._forkserver._forkserver_pid
+
+code, first = started_and_joined()
+processes.stop_fork_server()  # killed and reaped: gone, not a zombie
+gone = not os.path.exists(f"/proc/{first}")
+again, second = started_and_joined()  # a later worker starts a new fork server
+print(code, again, gone, first, second)
+"""
+
+
+def test_the_fork_server_ends_with_its_caller_and_a_stopped_one_starts_again():
+    """stop_fork_server kills and reaps it, a later worker starts a new one, and the caller's
+    exit ends the new one and the resource tracker before the caller has exited."""
+    ran = subprocess.run([sys.executable, "-c", STOP_AND_START_AGAIN], capture_output=True,
+                         text=True, timeout=120, preexec_fn=default_signals)
+    code, again, gone, first, second = ran.stdout.split()
+    assert (code, again, gone) == ("0", "0", "True"), ran.stderr
+    assert first != second
+    assert not os.path.exists(f"/proc/{second}")  # it was the caller's child: reaped

@@ -16,10 +16,18 @@ are killed here:
   leaves no encoder writing on (docs/design.md#errors).
 - how they are killed (`kill`, `kill_pool`): at once (SIGKILL), their process group too where
   they lead one, and a process that has ended meanwhile is no error.
+- how the helpers end with the process (at its exit, however it ends: a return, Ctrl-C,
+  SIGTERM turned into an exception): the fork server is killed at once and reaped
+  (`stop_fork_server`; its workers die with it), then the resource tracker is reaped once it
+  has cleaned up after them (`reap_resource_tracker`), so that nothing of ours outlives the
+  process (a fork server left to end alone tore its interpreter down for 0.9–3.6 s after the
+  server it served had exited).
 """
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import ctypes
 import multiprocessing
 import multiprocessing.forkserver
@@ -29,7 +37,7 @@ import sys
 import threading
 import time
 from concurrent.futures import ProcessPoolExecutor
-from multiprocessing import resource_tracker
+from multiprocessing import resource_tracker, util
 
 POLL_SECONDS = 0.5
 PR_SET_PDEATHSIG = 1
@@ -39,11 +47,19 @@ PR_SET_PDEATHSIG = 1
 # 94 MB resident, but 5 MB proportional (shared libraries, mostly), and 0.15 s when it starts;
 # without it each batch worker imported it itself (0.15 s, 22 MB of its own). `music.compiled`
 # compiles librosa's numba kernels once in the fork server (2–15 s when it starts), so that each
-# worker that analyses a song (the server's, a batch's) does not.
+# worker that analyses a song (the server's, a batch's) does not. With both, the server's fork
+# server holds 346 MB resident, 180 MB proportional (77 and 46 MB without them:
+# benchmarks/bench_server_memory.py).
 PRELOAD = ("eigendance.harmonic.eigensolver", "eigendance.server.analysis",
            "eigendance.batch.work", "eigendance.music.compiled")
 # How the resource tracker's leak warning starts (a `-W` filter: regex on the message start).
 TRACKER_WARNING = "ignore:resource_tracker:UserWarning"
+# How long the process's exit waits for the resource tracker to end (`reap_resource_tracker`):
+# it ends once the workers sharing it are gone, at once after the fork server's kill.
+TRACKER_SECONDS = 2.0
+# multiprocessing's exit priority of `reap_resource_tracker`: after every other finalizer (a
+# queue's semaphores tell the tracker they are gone, which would start a new one once closed).
+LAST = -100
 # Resolved here, in the parent: the child of a fork runs only this C call before exec (a
 # preexec_fn that imported or took a lock could deadlock in a threaded parent such as the server).
 _prctl = ctypes.CDLL(None, use_errno=True).prctl if sys.platform.startswith("linux") else None
@@ -89,6 +105,7 @@ def context(how: str = "fresh"):
         return multiprocessing.get_context("spawn")
     forkserver = multiprocessing.get_context("forkserver")
     forkserver.set_forkserver_preload(list(PRELOAD))
+    _end_with_process()
     return forkserver
 
 
@@ -97,6 +114,77 @@ def warm() -> None:
     first worker does not wait for it; nothing without a fork server."""
     if context().get_start_method() == "forkserver":
         multiprocessing.forkserver.ensure_running()
+
+
+_ENDING: list = []  # the processes (pids) whose exit ends their helpers: registered once
+
+
+def _end_with_process() -> None:
+    """Register `stop_fork_server` and `reap_resource_tracker` to run at this process's exit,
+    once per process."""
+    if os.getpid() in _ENDING:
+        return
+    _ENDING.append(os.getpid())
+    # First at exit (atexit runs the last registered first, before multiprocessing's own exit
+    # function joins the children), and the tracker's part after every finalizer.
+    atexit.register(stop_fork_server)
+    util.Finalize(None, reap_resource_tracker, exitpriority=LAST)
+
+
+def stop_fork_server() -> None:
+    """Kill this process's fork server at once (SIGKILL) and reap it; its workers die with it
+    (`start_worker`). Left to end by itself when its caller exits, it tore down its interpreter
+    (numpy, scipy, librosa, numba) for 0.9–3.6 s after a stopped server had exited. Nothing where
+    there is none or it is not this process's child (a fork of its caller)."""
+    server = multiprocessing.forkserver._forkserver
+    pid = getattr(server, "_forkserver_pid", None)
+    if pid is None:
+        return
+    try:
+        ended = os.waitpid(pid, os.WNOHANG)[0]
+    except ChildProcessError:
+        return  # not ours: a fork's copy of its caller's state
+    if not ended:
+        with contextlib.suppress(ProcessLookupError):
+            os.kill(pid, signal.SIGKILL)
+        with contextlib.suppress(ChildProcessError):
+            os.waitpid(pid, 0)
+    with contextlib.suppress(OSError, TypeError):
+        os.close(server._forkserver_alive_fd)
+    # As multiprocessing's own `_stop` leaves it (its socket file goes with its temporary
+    # folder): a later worker would start a new fork server.
+    server._forkserver_pid = server._forkserver_alive_fd = server._forkserver_address = None
+
+
+def reap_resource_tracker(seconds: float = TRACKER_SECONDS) -> bool:
+    """Let multiprocessing's resource tracker end now, and reap it: it ends when every process
+    sharing it has (unlinking what they left), at once after `stop_fork_server`.
+
+    Parameters
+    ----------
+    seconds : how long to wait for it; a tracker still busy is left to end alone.
+
+    Returns
+    -------
+    bool, whether none of ours is left (none ran, or it ended).
+    """
+    tracker = resource_tracker._resource_tracker
+    pid, fd = getattr(tracker, "_pid", None), getattr(tracker, "_fd", None)
+    if pid is None or fd is None:
+        return True
+    tracker._fd = tracker._pid = None
+    with contextlib.suppress(OSError):
+        os.close(fd)  # its end of file: the tracker cleans up and exits
+    deadline = time.monotonic() + seconds
+    while True:
+        try:
+            if os.waitpid(pid, os.WNOHANG) != (0, 0):
+                return True
+        except ChildProcessError:
+            return True
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.01)
 
 
 def quiet_resource_tracker() -> None:

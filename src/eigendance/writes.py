@@ -228,6 +228,30 @@ def sweep_locked_folders(prefix: str, parent: str | None = None,
     return removed
 
 
+@contextlib.contextmanager
+def swept_locked_folder(prefix: str, parent: str | None = None):
+    """A `locked_folder` for as long as the block runs, removed however the block ends; the
+    folders that killed processes left under the same prefix are swept first
+    (`sweep_locked_folders`): a server's library, a converter's glb.
+
+    Parameters
+    ----------
+    prefix : the start of the folder's name (e.g. "eigendance-convert-").
+    parent : where to make it (default: the system's temporary folder).
+
+    Yields
+    ------
+    str, the folder.
+    """
+    sweep_locked_folders(prefix, parent)
+    folder, lock = locked_folder(prefix, parent)
+    try:
+        yield folder
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+        os.close(lock)
+
+
 # The renames a command defers until all its outputs are written (`all_or_nothing`), or None
 # outside one.
 _pending: contextvars.ContextVar[Renames | None] = contextvars.ContextVar("pending",

@@ -6,7 +6,12 @@ accessor bounds and hand-made spoiled copies of the real fixtures."""
 from __future__ import annotations
 
 import json
+import os
 import shutil
+import subprocess
+import sys
+import tempfile
+import time
 import warnings
 
 import numpy as np
@@ -15,12 +20,13 @@ import pytest
 import trimesh
 from scipy.spatial import cKDTree
 
+from eigendance.assets import other_formats
 from eigendance.assets.appearance import WELD_TOLERANCE
 from eigendance.assets.gltf import GltfFile
 from eigendance.assets.reader import read_model
 from eigendance.errors import InputError, ModelWarning
 from eigendance.harmonic.mesh import load_mesh
-from helpers import fixture_path
+from helpers import fixture_path, start
 
 CAKE = fixture_path("textured", "kenney_cakeBirthday.glb")
 SPEEDER = fixture_path("textured", "craft_speederD.gltf")
@@ -167,6 +173,50 @@ def test_a_format_we_cannot_read_says_how_to_convert(tmp_path):
     (tmp_path / "Stag.fbx").write_bytes(b"Kaydara FBX Binary  \x00")
     message = one_line_error(lambda: load_mesh(tmp_path / "Stag.fbx"))
     assert "File › Export › glTF 2.0" in message
+
+
+# A conversion that never ends: its folder's name printed, then Blender "works" for a minute.
+CONVERTING = """
+import os, sys, time
+from eigendance.assets import other_formats
+other_formats.blender_available = lambda: True
+def export(path, glb, *rest):
+    print(os.path.dirname(glb), flush=True)
+    time.sleep(60)
+other_formats._blender_export = export
+with other_formats.converted(sys.argv[1], "Stag.fbx"):
+    pass
+"""
+
+
+def test_the_folders_of_killed_conversions_are_swept_by_the_next(tmp_path, monkeypatch):
+    """A conversion killed outright (SIGKILL) leaves its temporary folder; the next conversion
+    removes it (older than writes.FRESH_SECONDS), and leaves a running one's alone."""
+    fbx, temporary = tmp_path / "Stag.fbx", tmp_path / "tmp"
+    fbx.write_bytes(b"Kaydara FBX Binary  \x00")
+    temporary.mkdir()
+    running = [start([sys.executable, "-c", CONVERTING, str(fbx)], stdout=subprocess.PIPE,
+                     text=True, env=dict(os.environ, TMPDIR=str(temporary))) for _ in range(2)]
+    try:
+        killed, alive = [process.stdout.readline().strip() for process in running]
+        running[0].kill()
+        running[0].wait()
+        hour_ago = time.time() - 3600
+        for folder in (killed, alive):
+            assert os.path.isdir(folder) and folder.startswith(str(temporary))
+            os.utime(folder, (hour_ago, hour_ago))
+        monkeypatch.setattr(tempfile, "tempdir", str(temporary))
+        monkeypatch.setattr(other_formats, "blender_available", lambda: True)
+        monkeypatch.setattr(other_formats, "_blender_export",
+                            lambda path, glb, *rest: open(glb, "wb").close())
+        with other_formats.converted(str(fbx), "Stag.fbx") as glb:
+            assert os.path.isfile(glb)
+        assert not os.path.exists(killed) and os.path.isdir(alive)
+        assert os.listdir(temporary) == [os.path.basename(alive)]
+    finally:
+        for process in running:
+            process.kill()
+            process.wait()
 
 
 def test_every_shared_kind_of_file_reads_with_positions_that_match_trimesh():

@@ -4,6 +4,8 @@ mapping v3 against hand-derived numbers; the rig dance locked to the beats."""
 
 import math
 import os
+from dataclasses import replace
+from types import SimpleNamespace
 
 import librosa
 import mir_eval
@@ -22,6 +24,7 @@ from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.envelope import Envelope, Pulse, shape_values
 from eigendance.music.mapping import Mapping
 from eigendance.music.mode_settings import ModeSettings
+from eigendance.music.rhythm import Rhythm
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 
@@ -279,17 +282,36 @@ def test_envelope_auto_range_threshold_and_follower_by_hand():
 
 
 def test_pulse_kicks_on_beats_and_decays():
-    class Beats:
-        beats = np.array([1.0, 2.0, 3.0, 4.0])
-        onsets = np.array([0.5])
-        has_beats = True
-
+    beats = Rhythm(np.zeros(500), np.array([0.5]), np.array([1.0, 2.0, 3.0, 4.0]), 60.0, 100.0)
     pulse = Pulse(amount=2.0, decay=0.25, low=0.5, high=1.0)
-    np.testing.assert_allclose(pulse.signal(Beats, [0.9, 1.0, 1.25, 2.5, 9.0]),
+    np.testing.assert_allclose(pulse.signal(beats, [0.9, 1.0, 1.25, 2.5, 9.0]),
                                [0, 1, math.exp(-1), math.exp(-2), math.exp(-20)])
     np.testing.assert_array_equal(pulse.routed(4), [0, 0, 1, 1])  # centres ⅛, ⅜, ⅝, ⅞
     onsets = Pulse(amount=1.0, decay=0.25, source="onsets")
-    assert onsets.signal(Beats, [0.5])[0] == 1.0
+    assert onsets.signal(beats, [0.5])[0] == 1.0
+
+
+def test_a_beat_pulse_kicks_a_bars_first_beat_a_quarter_harder():
+    """As the rig's tempo lock accents it (analysis.json's downbeat_accent, 0.25): a kick on a
+    downbeat is 1.25 times the others'; onsets, and a song without bars, are not accented."""
+    beats = 0.25 + 0.5 * np.arange(12)  # 120 BPM
+    downbeats = beats[1::4]  # bars of four from the second beat: 0.75, 2.75, 4.75 s
+    song = SimpleNamespace(rhythm=Rhythm(np.zeros(700), downbeats, beats, 120.0, 100.0,
+                                         downbeats))
+    assert song.rhythm.meter == 4
+    mapping = Mapping([0.5], [1.0], pulse=Pulse(amount=2.0, decay=0.25, source="beats"))
+    # 1/8 s after the downbeat at 0.75 s, after the beat at 1.25 s; on the downbeat at 2.75 s,
+    # then a beat later (3.25 s, no downbeat), half a beat after the one at 4.25 s.
+    times = [0.875, 1.375, 2.75, 3.25, 4.5]
+    np.testing.assert_allclose(mapping.kicks(song, times),
+                               [2 * 1.25 * math.exp(-0.5), 2 * math.exp(-0.5), 2 * 1.25, 2.0,
+                                2 * math.exp(-1)], rtol=1e-12)
+    no_bars = SimpleNamespace(rhythm=replace(song.rhythm, downbeats=np.zeros(0)))
+    np.testing.assert_allclose(mapping.kicks(no_bars, [0.875, 2.75]),
+                               [2 * math.exp(-0.5), 2.0], rtol=1e-12)
+    onsets = replace(mapping, pulse=Pulse(amount=2.0, decay=0.25, source="onsets"))
+    np.testing.assert_allclose(onsets.kicks(song, [0.875, 2.75]), [2 * math.exp(-0.5), 2.0],
+                               rtol=1e-12)  # the onsets fall on the downbeats: no accent
 
 
 def test_mapping_version_3_round_trip_and_checks(tmp_path):

@@ -9,13 +9,11 @@ Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 from __future__ import annotations
 
 import base64
-import json
 import math
-import urllib.request
 
 import numpy as np
 import pytest
-from web_helpers import open_app
+from web_helpers import pinned_gpu_app, rig_ids_at
 
 from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
@@ -30,17 +28,13 @@ TIMES = (0.4, 1.3, 2.9)
 
 @pytest.fixture(scope="module")
 def page(browser, live_server):
-    page = open_app(browser, live_server["url"], "?test&path=gpu", 760, 520)
-    page.evaluate("window.eigendance.live()")  # the hooks pin times; nothing plays
-    yield page
-    assert not page.errors, page.errors
-    page.close()
+    with pinned_gpu_app(browser, live_server["url"]) as page:
+        yield page
 
 
 @pytest.fixture(scope="module")
 def rig_ids(live_server):
-    with urllib.request.urlopen(live_server["url"] + "api/library") as answer:
-        return {rig["name"]: rig["id"] for rig in json.load(answer)["rigs"]}
+    return rig_ids_at(live_server["url"])
 
 
 @pytest.fixture(scope="module")

@@ -15,7 +15,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from web_helpers import open_app
+from web_helpers import pinned_gpu_app, rig_ids_at
 
 from eigendance.cli import main
 from eigendance.modal.motion import rig_coefficients
@@ -37,16 +37,12 @@ GAIN = """(gain) => { const slider = document.getElementById('rig-surface-gain')
 
 @pytest.fixture(scope="module")
 def page(browser, live_server):
-    page = open_app(browser, live_server["url"], "?test&path=gpu", 760, 520)
-    page.evaluate("window.eigendance.live()")  # the hooks pin times; nothing plays
-    yield page
-    assert not page.errors, page.errors
-    page.close()
+    with pinned_gpu_app(browser, live_server["url"]) as page:
+        yield page
 
 
 def test_the_surface_ripples_the_skin_on_the_gpu_as_python_does(page, live_server, web_files):
-    with urllib.request.urlopen(live_server["url"] + "api/library") as answer:
-        hand = next(r["id"] for r in json.load(answer)["rigs"] if r["name"] == "hand")
+    hand = rig_ids_at(live_server["url"])["hand"]
     assert page.evaluate(f"window.eigendance.rig.open('{hand}')") is None
     assert page.evaluate("document.getElementById('rig-surface').checked") is False  # off
     diagonal = page.evaluate("window.eigendance.rig.info()")["diagonal"]

@@ -512,16 +512,17 @@ def test_worker_processes_hand_back_results_and_errors_whole_and_die_when_stoppe
 
 # --- the end of the server --------------------------------------------------------------------
 
-def start_server(tmp_path, *files, k=8):
-    """`eigendance serve` with its temporary folder in tmp_path/tmp; (process, that folder)."""
+def start_server(tmp_path, *files, k=8, command="serve"):
+    """`eigendance serve` (or `show`) with its temporary folder in tmp_path/tmp; (process, that
+    folder)."""
     temporary = tmp_path / "tmp"
     temporary.mkdir(exist_ok=True)
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(tmp_path / "cache"), TMPDIR=str(temporary))
-    process = start([sys.executable, "-m", "eigendance.cli", "serve", *map(str, files),
+    process = start([sys.executable, "-m", "eigendance.cli", command, *map(str, files),
                                 "-k", str(k), "--port", str(free_port())], env=env,
                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                     start_new_session=True)
-    assert "serving on" in process.stdout.readline()
+    assert ("serving on" if command == "serve" else "control page") in process.stdout.readline()
     return process, temporary
 
 
@@ -529,9 +530,36 @@ def library_folders(temporary) -> list[str]:
     return [name for name in os.listdir(temporary) if name.startswith(FOLDER_PREFIX)]
 
 
+def command_line(pid: int) -> str:
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as file:
+            return file.read().replace(b"\0", b" ").decode(errors="replace")
+    except OSError:
+        return ""
+
+
+def ends_with_its_helpers(process, sent) -> str:
+    """Signal a started server; it exits within a generous bound, and its fork server, resource
+    tracker and workers have ended before it did (none outlives it: a supervisor waiting for
+    the process group, or a pipe's reader, is not kept waiting); its stderr."""
+    try:
+        helpers = descendants(process.pid)
+        assert any("multiprocessing.forkserver" in command_line(pid) for pid in helpers), helpers
+        process.send_signal(sent)
+        process.wait(timeout=10)
+        left = {pid: command_line(pid) for pid in alive(helpers)}  # at once: nothing may be left
+        _, errors = process.communicate(timeout=10)
+    finally:
+        if process.poll() is None:  # a failed check leaves no server running
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+    assert left == {}, f"outlived the server: {left}"
+    return errors
+
+
 @pytest.mark.parametrize(("sent", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143),
                                               (signal.SIGHUP, 129)])
-def test_the_temporary_folder_is_removed_when_the_server_ends(tmp_path, files, sent, status):
+def test_the_server_ends_with_its_helpers_and_temporary_folder(tmp_path, files, sent, status):
     process, temporary = start_server(tmp_path, files["mesh"])
     folder = temporary / library_folders(temporary)[0]
     port = process.args[-1]
@@ -541,11 +569,21 @@ def test_the_temporary_folder_is_removed_when_the_server_ends(tmp_path, files, s
     assert answer.status_code == 201 and ".lock" in names
     assert [name for name in names if name.startswith("upload-")]
     assert folder.is_dir()
-    process.send_signal(sent)
-    _, errors = process.communicate(timeout=20)
+    errors = ends_with_its_helpers(process, sent)
     assert process.returncode == status, errors
     assert "Traceback" not in errors
     assert library_folders(temporary) == []
+    assert os.listdir(temporary) == []  # multiprocessing's folder (the fork server's socket) too
+
+
+def test_a_show_ends_with_its_helpers_at_sigterm(tmp_path, files):
+    show = tmp_path / "set.toml"
+    show.write_text(f'[[cue]]\nname = "one"\nmodel = {json.dumps(str(files["mesh"]))}\n'
+                    f'song = {json.dumps(str(files["song"]))}\n')
+    process, temporary = start_server(tmp_path, show, command="show")
+    errors = ends_with_its_helpers(process, signal.SIGTERM)
+    assert process.returncode == 143 and "Traceback" not in errors, errors
+    assert os.listdir(temporary) == []
 
 
 def test_ctrl_c_during_a_solve_ends_the_server_at_once(tmp_path):

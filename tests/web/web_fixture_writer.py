@@ -159,10 +159,13 @@ def rhythm_reference(basis):
                           modes=replace(mapping.modes, tempo=tempo))
         rig_cases.append({"mapping": mapping.to_json(), "coefficients": rig_coefficients(
             rig.model, song, mapping, times).tolist()})
+    # The beat pulse's kick 10 ms after every beat: a bar's first beat kicks harder.
+    kick_times = song.rhythm.beats + 0.01
     reference = {"times": RHYTHM_TIMES, "frames_step": 37, "beats": song.rhythm.beats.tolist(),
                  "phase": song.rhythm.beat_phase(times).tolist(), "tempo": song.rhythm.tempo,
                  "accent": song.rhythm.downbeat_accent(times).tolist(),
-                 "cases": cases, "rig_cases": rig_cases}
+                 "cases": cases, "rig_cases": rig_cases, "kick_times": kick_times.tolist(),
+                 "kicks": mappings[0].kicks(song, kick_times).tolist()}
     return {"rhythm.json": json.dumps(reference, indent=0).encode(),
             "rhythm.bin": spectrogram_bundle(song, "clicks-6s")}
 

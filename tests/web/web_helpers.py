@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import contextlib
 import io
+import json
 import os
 import socket
 import subprocess
 import sys
 import time
+import urllib.request
 import zipfile
 
 from helpers import start
@@ -96,3 +98,20 @@ def open_app(browser, url, query="?render", width=1100, height=760):
     page.errors = errors
     page.load_seconds = time.time() - started
     return page
+
+
+@contextlib.contextmanager
+def pinned_gpu_app(browser, url):
+    """The app at ?test&path=gpu (760×520) with the hooks' times pinned (`live()`: nothing
+    plays), for a test module's page; no page error when the module is done."""
+    page = open_app(browser, url, "?test&path=gpu", 760, 520)
+    page.evaluate("window.eigendance.live()")
+    yield page
+    assert not page.errors, page.errors
+    page.close()
+
+
+def rig_ids_at(url) -> dict:
+    """{rig name: id} of the library of the server at url."""
+    with urllib.request.urlopen(url + "api/library") as answer:
+        return {rig["name"]: rig["id"] for rig in json.load(answer)["rigs"]}

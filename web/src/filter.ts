@@ -1,5 +1,6 @@
 // The filter of docs/design.md#mapping, evaluated per frame in the browser; the same numbers as the Python
 // reference (eigendance.music.mapping / eigendance.harmonic.motion).
+import ANALYSIS from "../../src/eigendance/music/analysis.json";
 import type { Basis, Spectrum } from "./bundle";
 import { deformReducedCPU } from "./reduced";
 import { envelopeOf, shapeValues } from "./envelope";
@@ -174,15 +175,30 @@ export function hasBeats(spectrum: Spectrum): boolean {
   return spectrum.beats.length >= 4 && spectrum.tempo > 0;
 }
 
-/** amount·p(t), p(t) = exp(−(t − e)/decay) after the last event e ≤ t, else 0. */
-export function kickAt(pulse: Pulse, events: ArrayLike<number>, t: number): number {
+/** w(e), how strong each event's kick is: the bar's accent at a beat (`beatLock`'s: 1 +
+ * DOWNBEAT_ACCENT on a bar's first beat, else 1, as the rig's tempo lock accents it), 1 at an
+ * onset (eigendance.music.envelope.Pulse.accents). `events` are `pulseEvents`'. */
+export function pulseAccents(spectrum: Spectrum, pulse: Pulse,
+                             events: Float32Array): Float32Array {
+  const accents = new Float32Array(events.length).fill(1);
+  if (pulse.source !== "onsets" && hasBeats(spectrum)) {
+    for (let i = 0; i < events.length; i++) accents[i] = beatLock(spectrum, events[i]).accent;
+  }
+  return accents;
+}
+
+/** amount·p(t), p(t) = w(e)·exp(−(t − e)/decay) after the last event e ≤ t (w: `accents`,
+ * `pulseAccents`; 1 without), else 0. */
+export function kickAt(pulse: Pulse, events: ArrayLike<number>, t: number,
+                       accents?: ArrayLike<number>): number {
   if (!(pulse.amount > 0) || events.length === 0 || t < events[0]) return 0;
   let low = 0, high = events.length - 1; // the last event ≤ t
   while (low < high) {
     const middle = (low + high + 1) >> 1;
     if (events[middle] <= t) low = middle; else high = middle - 1;
   }
-  return pulse.amount * Math.exp(-Math.max(0, t - events[low]) / pulse.decay);
+  const weight = accents ? accents[low] : 1;
+  return pulse.amount * weight * Math.exp(-Math.max(0, t - events[low]) / pulse.decay);
 }
 
 /** B(t): beats counted continuously, B(b_i) = i, linear between beats and extrapolated with
@@ -199,9 +215,10 @@ export function beatPhase(beats: ArrayLike<number>, t: number): number {
   return low + (t - beats[low]) / (beats[low + 1] - beats[low]);
 }
 
-/** How much further the tempo-locked sway reaches on a bar's first beat
- * (eigendance.music.rhythm.DOWNBEAT_ACCENT). */
-export const DOWNBEAT_ACCENT = 0.25;
+/** How much stronger a bar's first beat is: the tempo-locked sway reaches this much further,
+ * a pulse's kick on it is this much stronger (analysis.json, which
+ * eigendance.music.rhythm.DOWNBEAT_ACCENT reads too). */
+export const DOWNBEAT_ACCENT: number = ANALYSIS.rhythm.downbeat_accent;
 
 /** The tempo lock at time t: B(t), the tempo and the bar's accent 1 + A·cos²(πx/2) for
  * |x| < 1 (else 1), x = B(t) − B(d) for the downbeat d nearest in beats; 1 without bars

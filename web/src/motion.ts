@@ -4,8 +4,8 @@
 // tile or the player shows is what its saved mapping gives `eigendance animate`.
 import type { Basis, Spectrum } from "./bundle";
 import {
-  filterValues, kickAt, prepare, pulseEvents, sectionGain, shapeValues, shaderWeights, smoothed,
-  spectrumAt,
+  filterValues, kickAt, prepare, pulseAccents, pulseEvents, sectionGain, shapeValues,
+  shaderWeights, smoothed, spectrumAt,
 } from "./filter";
 import type { Envelope, Mapping, Prepared } from "./filter";
 import { StreamShaper } from "./live-shaping";
@@ -19,6 +19,8 @@ interface Heard {
   values: Float32Array;
   buffer: Float32Array;
   events: Float32Array;
+  /** each event's kick strength (a bar's first beat is accented: `pulseAccents`) */
+  accents: Float32Array;
   /** a live take's: the shaping carried on frame by frame, and the revision heard */
   shaper?: StreamShaper;
   revision?: number;
@@ -36,7 +38,7 @@ export class Motion {
   /** reused every frame: the raw band values at the time being drawn */
   private buffer = new Float32Array(0);
   /** per prepared mapping (one lookup a frame): the values it hears, its band-values buffer
-   * and the events its pulse kicks on */
+   * and the events its pulse kicks on, with their strengths */
   private heard = new WeakMap<Prepared, Heard>();
   private loudest: { spectrum: Spectrum; count: number; times: number[] } | null = null;
 
@@ -72,7 +74,8 @@ export class Motion {
   /** amount·p(t) of a mapping's pulse on the song's beats or onsets (0 without). */
   kick(prepared: Prepared, t: number): number {
     if (!(prepared.pulse.amount > 0) || !this.spectrum) return 0;
-    return kickAt(prepared.pulse, this.heardBy(prepared).events, t);
+    const heard = this.heardBy(prepared);
+    return kickAt(prepared.pulse, heard.events, t, heard.accents);
   }
 
   private heardBy(prepared: Prepared): Heard {
@@ -80,8 +83,10 @@ export class Motion {
     let heard = this.heard.get(prepared);
     if (!heard || heard.spectrum !== spectrum) {
       const live = isLive(spectrum);
+      const events = pulseEvents(spectrum, prepared.pulse);
       heard = { spectrum, values: live ? spectrum.values : this.valuesFor(prepared),
-        buffer: new Float32Array(spectrum.bands), events: pulseEvents(spectrum, prepared.pulse) };
+        buffer: new Float32Array(spectrum.bands), events,
+        accents: pulseAccents(spectrum, prepared.pulse, events) };
       if (live && (prepared.smoothing > 0 || !prepared.envelope.identity)) {
         heard.shaper = new StreamShaper(spectrum.bands, spectrum.rate, prepared.smoothing,
           prepared.envelope);
@@ -94,6 +99,7 @@ export class Motion {
       heard.values = heard.shaper ? heard.shaper.extend(spectrum.values, spectrum.frames)
         : spectrum.values;
       heard.events = pulseEvents(spectrum, prepared.pulse);
+      heard.accents = pulseAccents(spectrum, prepared.pulse, heard.events);
     }
     return heard;
   }

@@ -7,7 +7,8 @@ import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
 import {
-  beatLock, beatPhase, filterValues, kickAt, prepare, pulseEvents, shapeValues, smoothed, spectrumAt,
+  beatLock, beatPhase, DOWNBEAT_ACCENT, filterValues, kickAt, prepare, pulseAccents, pulseEvents,
+  shapeValues, smoothed, spectrumAt,
 } from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { prepareRig, rigCoefficients, modeDrive } from "../src/modal-skin";
@@ -68,14 +69,31 @@ describe("version-3 mappings (envelope, auto-range, pulse)", () => {
 
     it(`plays φ with the pulse like Mapping.play (case ${index})`, () => {
       const events = pulseEvents(song, prepared.pulse);
+      const accents = pulseAccents(song, prepared.pulse, events);
       reference.times.forEach((t: number, i: number) => {
         const values = spectrumAt(song, t, undefined, shaped);
         const phi = filterValues(prepared, values, prepared.gain, undefined,
-          kickAt(prepared.pulse, events, t));
+          kickAt(prepared.pulse, events, t, accents));
         const scale = Math.max(1, ...c.phi[i].map(Math.abs));
         expect(worst(phi, c.phi[i]) / scale).toBeLessThanOrEqual(2e-5); // float32 event times
       });
     });
+  });
+});
+
+describe("the beat pulse on the bars", () => {
+  it("kicks a bar's first beat 1 + DOWNBEAT_ACCENT times harder, like Pulse.signal", () => {
+    const prepared = prepare(reference.cases[0].mapping, reference.cases[0].phi[0].length);
+    expect(prepared.pulse.source).toBe("beats");
+    const events = pulseEvents(song, prepared.pulse);
+    const accents = pulseAccents(song, prepared.pulse, events);
+    const kicks = reference.kick_times.map((t: number) =>
+      kickAt(prepared.pulse, events, t, accents));
+    expect(worst(kicks, reference.kicks) / Math.max(...reference.kicks))
+      .toBeLessThanOrEqual(1e-5); // float32 beat times
+    // 10 ms after every beat: the bars' first beats kick 1.25 times the others
+    expect(DOWNBEAT_ACCENT).toBe(0.25);
+    expect(Math.max(...kicks) / Math.min(...kicks)).toBeCloseTo(1.25, 4);
   });
 });
 
@@ -86,10 +104,11 @@ describe("rig motion locked to the beats", () => {
       const shaped = shapeValues(smoothed(song, prepared.smoothing), song.frames, song.bands,
         song.rate, prepared.envelope);
       const events = pulseEvents(song, prepared.pulse);
+      const accents = pulseAccents(song, prepared.pulse, events);
       const locked = prepared.tempo !== "free" && hasBeats(song);
       reference.times.forEach((t: number, i: number) => {
         const phi = modeDrive(prepared, spectrumAt(song, t, undefined, shaped),
-          kickAt(prepared.pulse, events, t));
+          kickAt(prepared.pulse, events, t, accents));
         const beat = locked ? beatLock(song, t) : undefined;
         const coefficients = rigCoefficients(rig, prepared, phi, t, undefined, beat);
         expect(worst(coefficients, c.coefficients[i])).toBeLessThanOrEqual(2e-5);

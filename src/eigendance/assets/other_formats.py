@@ -12,7 +12,6 @@ import contextlib
 import importlib.util
 import os
 import re
-import tempfile
 
 import numpy as np
 
@@ -21,10 +20,14 @@ from eigendance.assets.materials import Images, check_image_header, trimesh_mate
 from eigendance.assets.model import Model, combine
 from eigendance.assets.primitives import Piece
 from eigendance.errors import InputError, one_line
+from eigendance.writes import swept_locked_folder
 
 # Formats Blender imports and we do not: converted through bpy when it can be imported.
 CONVERTIBLE = {".fbx": "import_scene.fbx", ".blend": None, ".dae": "wm.collada_import",
                ".3ds": "import_scene.max3ds"}
+# The converter's temporary folders: each holds its lock while Blender converts; the next
+# conversion sweeps those that killed processes left (`writes.swept_locked_folder`).
+CONVERT_PREFIX = "eigendance-convert-"
 # An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
 # last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
 OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n]|$)", re.M)
@@ -186,7 +189,8 @@ def converted(path: str, name: str, problems: list | None = None):
 
     Yields
     ------
-    str, the temporary .glb (removed afterwards).
+    str, the temporary .glb, in a locked folder of its own (removed afterwards; the folders of
+    killed conversions are removed at the next: `writes.swept_locked_folder`).
     """
     suffix = os.path.splitext(path)[1].lower()
     how = "open it in Blender" if suffix == ".blend" else \
@@ -195,7 +199,7 @@ def converted(path: str, name: str, problems: list | None = None):
         raise InputError(f"{name}: {suffix} files cannot be read; convert it to glTF ({how}, "
                          "then File › Export › glTF 2.0 (.glb)), or install the blender extra "
                          "(pip install 'eigendance[blender]')", status=415)
-    with tempfile.TemporaryDirectory(prefix="eigendance-convert-") as folder:
+    with swept_locked_folder(CONVERT_PREFIX) as folder:
         glb = os.path.join(folder, "converted.glb")
         _blender_export(path, glb, CONVERTIBLE[suffix], name,
                         problems if problems is not None else [])

@@ -17,8 +17,10 @@ mappings of versions 1 and 2 play as before. Between frames the shaped values ar
 linearly (`Spectrogram.at`).
 
 Pulse: the song's beats (or onsets) kick the targets of a range. At time t, with e the last
-event at or before t, p(t) = exp(−(t − e)/decay) (0 before the first event, and for a song
-without rhythm or beats); target ν of k is in the range [low, high] when
+event at or before t, p(t) = w(e)·exp(−(t − e)/decay) (0 before the first event, and for a song
+without rhythm or beats), where w(e) is the bar's accent at a beat (`Rhythm.downbeat_accent`:
+1 + DOWNBEAT_ACCENT on a bar's first beat, 1 on the others and for a song without bars, as the
+rig's tempo lock accents it) and 1 at an onset; target ν of k is in the range [low, high] when
 low ≤ (ν + ½)/k ≤ high. The filter adds `amount`·p(t) to the band sum of every target in the
 range (`eigendance.music.filter.filters`).
 """
@@ -285,8 +287,26 @@ class Pulse:
             return rhythm.beats if rhythm.has_beats else np.zeros(0)
         return rhythm.onsets
 
+    def accents(self, rhythm, events) -> np.ndarray:
+        """w(e): how strong each event's kick is, the bar's accent at a beat
+        (`Rhythm.downbeat_accent`: 1 + DOWNBEAT_ACCENT on a bar's first beat, else 1), 1 at an
+        onset.
+
+        Parameters
+        ----------
+        rhythm : the song's `Rhythm` (the events are its).
+        events : (E,) s, `events`.
+
+        Returns
+        -------
+        (E,) ≥ 1.
+        """
+        if self.source != "beats" or not len(events):
+            return np.ones(len(events))
+        return rhythm.downbeat_accent(events)
+
     def signal(self, rhythm, times) -> np.ndarray:
-        """p(t) = exp(−(t − e)/decay) after the last event e ≤ t, else 0.
+        """p(t) = w(e)·exp(−(t − e)/decay) after the last event e ≤ t (`accents`), else 0.
 
         Parameters
         ----------
@@ -295,7 +315,7 @@ class Pulse:
 
         Returns
         -------
-        (…,) in [0, 1].
+        (…,) in [0, 1 + DOWNBEAT_ACCENT].
         """
         times = np.asarray(times, dtype=np.float64)
         events = self.events(rhythm)
@@ -303,7 +323,8 @@ class Pulse:
             return np.zeros(times.shape)
         last = np.searchsorted(events, times, side="right") - 1
         since = times - events[np.maximum(last, 0)]
-        return np.where(last >= 0, np.exp(-np.maximum(since, 0.0) / self.decay), 0.0)
+        weight = self.accents(rhythm, events)[np.maximum(last, 0)]
+        return np.where(last >= 0, weight * np.exp(-np.maximum(since, 0.0) / self.decay), 0.0)
 
     def to_json(self) -> dict:
         """The `pulse` field of a mapping document (version 3).

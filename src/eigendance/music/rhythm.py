@@ -48,7 +48,9 @@ LAG = float(ANALYSIS["onset"]["lag"])  # s: the flux compares a frame with the o
 CHUNK_SECONDS = 60.0  # the tempogram is computed over chunks this long
 AC_SIZE = float(ANALYSIS["onset"]["tempo_window"])  # s: librosa.feature.tempo's ac_size
 MIN_BEATS = 4  # fewer beats than this: no beat (the dance plays on loudness alone)
-DOWNBEAT_ACCENT = 0.25  # the tempo-locked sway reaches this much further on a bar's first beat
+# How much stronger a bar's first beat is: the tempo-locked sway reaches this much further, and a
+# pulse's kick on it is this much stronger (`Rhythm.downbeat_accent`).
+DOWNBEAT_ACCENT = float(ANALYSIS["rhythm"]["downbeat_accent"])
 QUIET = 1e-3  # an envelope whose 99th percentile is below this is silence
 
 

@@ -5,7 +5,9 @@ The library lives in a folder of the system's temporary folder, removed when the
 normally, by Ctrl-C, SIGTERM or SIGHUP. A server killed outright (SIGKILL) cannot remove it;
 the next server removes such folders (those whose lock nobody holds any more). The first
 Ctrl-C or SIGTERM stops the solve in progress at once (`Library.stop`) and ends the server
-within a second, open connections (server-sent events) included.
+within a second, open connections (server-sent events) included; its fork server and resource
+tracker end before it does (`processes.stop_fork_server`, at its exit). Exit status 130, 143 or
+129: 128 + the signal, the shell's convention.
 """
 
 from __future__ import annotations
@@ -37,7 +39,7 @@ from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 from eigendance.server.workers import warm
-from eigendance.writes import LOCK_NAME, locked_folder, sweep_locked_folders
+from eigendance.writes import LOCK_NAME, sweep_locked_folders, swept_locked_folder
 
 DEFAULT_PORT = 8765
 FOLDER_PREFIX = "eigendance-library-"
@@ -233,19 +235,14 @@ def library_session(**options) -> Iterator[Library]:
     ------
     Library.
     """
-    sweep_library_folders()
-    folder, lock = locked_folder(FOLDER_PREFIX)
-    try:
-        with _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
-            library = Library(folder, **options)
-            warm()  # the worker processes' fork server loads while the server starts
-            try:
-                yield library
-            finally:
-                library.close()
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-        os.close(lock)
+    with swept_locked_folder(FOLDER_PREFIX) as folder, \
+            _handling({signal.SIGTERM: _leave, signal.SIGHUP: _leave}):
+        library = Library(folder, **options)
+        warm()  # the worker processes' fork server loads while the server starts
+        try:
+            yield library
+        finally:
+            library.close()
 
 
 def sweep_library_folders(parent: str | None = None) -> int:
