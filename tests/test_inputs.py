@@ -126,6 +126,7 @@ def test_a_reduced_basis_recorded_in_a_mapping_is_solved_again_the_same(tmp_path
     np.testing.assert_allclose(again.eigenvalues, made.eigenvalues, rtol=1e-8, atol=1e-10)
     # animate with the mapping alone dances as on the basis it was made on (saved: the page's)
     made.save(tmp_path / "made.npz")
+    assert HarmonicBasis.load(tmp_path / "made.npz").record == record  # the file keeps both
     for source, output in ((tmp_path / "made.npz", "page.npz"), (mesh, "cli.npz")):
         assert main(["animate", str(source), SONG, "--mapping", str(path), "--duration", "3",
                      "--fps", "10", "-o", str(tmp_path / output)]) == 0

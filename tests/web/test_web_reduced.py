@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 from test_look_page import MODEL as LOOK_MODEL
 from test_look_page import page_picture
+from test_web_mapping_basis import assert_player_shows
 from web_helpers import CAT, E2E_K, open_app, running_server
 
 from eigendance.cli import main
@@ -120,14 +121,7 @@ def test_a_mapping_saved_on_a_reduced_basis_dances_the_same_under_animate(
     assert main(["animate", CAT, web_files["song"], "--mapping", str(path),
                  "-o", str(output)]) == 0
     assert "note" not in capsys.readouterr().err  # the mapping's own basis, solved the same
-    animation = load_animation(output)
-    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
-    for frame in (4, 37, 150):
-        t = float(animation["times"][frame])
-        shown = np.array(reduced_page.evaluate(f"window.eigendance.readPositions('player', {t})"))
-        error = np.abs(basis.to_original(shown.reshape(-1, 3))
-                       - animation["positions"][frame]).max() / diagonal
-        assert error < 1e-4, f"frame {frame} (t = {t:.2f} s): {error:.2e} of the diagonal"
+    assert_player_shows(reduced_page, load_animation(output), basis)
     reduced_page.evaluate("window.eigendance.setView('gallery')")
 
 
