@@ -115,7 +115,8 @@ def test_reduced_and_exact_are_chosen_and_said(tmp_path, capsys, monkeypatch):
                  "-o", str(paths["reduced"])]) == 0
     reduced = HarmonicBasis.load(paths["reduced"])
     assert reduced.reduced is not None and 140 <= reduced.reduced.count <= 160
-    assert f"(reduced, {reduced.reduced.count} samples)" in capsys.readouterr().out
+    assert f"(reduced, 150 samples asked, {reduced.reduced.count} placed)" in \
+        capsys.readouterr().out
     exact = HarmonicBasis.load(paths["exact"])
     assert exact.reduced is None
     assert np.all(reduced.eigenvalues[1:] >= exact.eigenvalues[1:] * (1 - 1e-9))

@@ -11,19 +11,29 @@ import numpy as np
 import pytest
 import trimesh
 
+from eigendance.cli import main
 from eigendance.errors import InputError
 from eigendance.export.video import parse_size
 from eigendance.files import AUDIO_SUFFIXES, COMPANION_SUFFIXES, MESH_SUFFIXES
 from eigendance.harmonic.basis import HarmonicBasis, HarmonicProblem
 from eigendance.harmonic.construction import BasisRecord, basis_key
 from eigendance.harmonic.mesh import Mesh, load_mesh
+from eigendance.harmonic.motion import load_animation
 from eigendance.inputs.defaults import DEFAULT_K
-from eigendance.inputs.mapping import BasisChoice, basis_choice, read_mapping, shared_choice
+from eigendance.inputs.mapping import (
+    BasisChoice,
+    basis_choice,
+    read_mapping,
+    record_note,
+    shared_choice,
+)
 from eigendance.inputs.model import classify, model_kind, published_suffixes, read_model
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.modal.skeleton_file import skeleton_document
 from eigendance.music.mapping import Mapping
 from helpers import fixture_path
+
+SONG = fixture_path("audio", "kevin_macleod_vibe_ace_20s-24s.ogg")
 
 
 def test_one_rule_says_what_a_file_is_by_its_content(tmp_path):
@@ -74,13 +84,13 @@ def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
     mapping = read_mapping(path)
     assert mapping.basis == BasisRecord(24, "reduced", 3000)
     assert json.loads(path.read_text())["basis"] == {"k": 24, "construction": "reduced",
-                                                    "samples": 3000}
+                                                    "samples": 3000, "placed": None}
     assert basis_choice(mapping) == basis_choice(mapping, 24, "reduced")
     assert (basis_choice(mapping).k, basis_choice(mapping).samples) == (24, 3000)
     other = basis_choice(mapping, construction="exact")
     assert (other.k, other.construction, other.samples) == (24, "exact", None)
     assert other.note.startswith("made.json was made on k = 24 harmonics (reduced, 3000 "
-                                 "samples); on k = 24 harmonics (exact)")
+                                 "samples asked); on k = 24 harmonics (exact)")
     # a mapping from before the record: the default k, the construction rule, nothing to say
     old = {key: value for key, value in mapping.to_json().items() if key != "basis"}
     path.write_text(json.dumps(old))
@@ -93,6 +103,44 @@ def test_a_mapping_records_its_basis_and_the_commands_solve_it(tmp_path):
         path.write_text(json.dumps({**old, "basis": bad}))
         with pytest.raises(InputError, match=message):
             read_mapping(path)
+
+
+def test_a_reduced_basis_recorded_in_a_mapping_is_solved_again_the_same(tmp_path, monkeypatch,
+                                                                        capsys):
+    """The grid places about the samples asked (2000 on a 2562-vertex sphere: a few dozen more
+    or fewer), so the record keeps the count asked, which places the same samples again."""
+    monkeypatch.setenv("EIGENDANCE_CACHE_DIR", str(tmp_path / "cache"))
+    mesh = tmp_path / "sphere.obj"
+    trimesh.creation.icosphere(4).export(mesh)
+    made = HarmonicBasis.from_mesh(mesh, 20, construction="reduced", cache=False)
+    record = made.record
+    assert (record.construction, record.samples, record.placed) == (
+        "reduced", 2000, len(made.reduced.samples))  # 2000: MIN_SAMPLES, k·SAMPLES_PER_HARMONIC
+    assert record.placed != record.samples  # the case at stake: asked ≠ placed
+    path = tmp_path / "made.json"
+    Mapping(np.linspace(0.1, 0.9, 20), np.ones(20), basis=record).save(path)
+    choice = basis_choice(read_mapping(path))
+    again = HarmonicProblem(mesh, construction=choice.construction, samples=choice.samples,
+                            cache=False).basis(choice.k)
+    assert np.array_equal(again.reduced.samples, made.reduced.samples)
+    np.testing.assert_allclose(again.eigenvalues, made.eigenvalues, rtol=1e-8, atol=1e-10)
+    # animate with the mapping alone dances as on the basis it was made on (saved: the page's)
+    made.save(tmp_path / "made.npz")
+    assert HarmonicBasis.load(tmp_path / "made.npz").record == record  # the file keeps both
+    for source, output in ((tmp_path / "made.npz", "page.npz"), (mesh, "cli.npz")):
+        assert main(["animate", str(source), SONG, "--mapping", str(path), "--duration", "3",
+                     "--fps", "10", "-o", str(tmp_path / output)]) == 0
+    assert "note" not in capsys.readouterr().err
+    page, cli = (load_animation(tmp_path / name)["positions"] for name in ("page.npz", "cli.npz"))
+    diagonal = np.linalg.norm(np.ptp(page[0], axis=0))
+    assert np.abs(cli - page).max() < 1e-4 * diagonal
+    # an older record kept the samples placed: read as the default asked, those placed checked
+    older = BasisRecord.from_json({"k": 20, "construction": "reduced", "samples": record.placed})
+    assert older == BasisRecord(20, "reduced", None, record.placed)
+    assert record_note(Mapping([0.5], [1.0], basis=older), made.record) is None
+    other = BasisRecord(20, "reduced", 2000, record.placed + 1)
+    assert f"{record.placed + 1} placed" in record_note(Mapping([0.5], [1.0], basis=other),
+                                                        made.record)
 
 
 def test_one_basis_for_several_mappings_is_the_one_they_record():
@@ -114,7 +162,7 @@ def test_one_basis_for_several_mappings_is_the_one_they_record():
     assert shared_choice(reduced) == (BasisChoice(24, "reduced", 96), [])
     choice, notes = shared_choice(reduced, construction="exact")
     assert choice == BasisChoice(24, "exact") and notes == [
-        "r.json was made on k = 24 harmonics (reduced, 96 samples); on k = 24 harmonics "
+        "r.json was made on k = 24 harmonics (reduced, 96 samples asked); on k = 24 harmonics "
         "(exact) the same bands drive other harmonics: the dance differs from the one it was "
         "made on"]
     with pytest.raises(InputError, match=r"different constructions \(exact, reduced\); set "

@@ -144,7 +144,7 @@ def test_the_construction_is_the_one_the_mappings_were_made_on_and_a_change_is_s
         path = write_plan(str(inputs), **settings, mappings=["r.json"], **asked)
         plan = read_plan(path)
         assert plan.notes == [note] and note.startswith("r.json was made on k = 24 harmonics "
-                                                        "(reduced, 96 samples); on ")
+                                                        "(reduced, 96 samples asked); on ")
         assert main(["batch", path, "--dry-run"]) == 0
         assert capsys.readouterr().err.splitlines()[0] == f"{path}: note: {note}"
 

@@ -18,6 +18,18 @@ from eigendance.music.mapping import Mapping
 pytestmark = pytest.mark.web
 
 
+def assert_player_shows(page, animation, basis, frames=(4, 37, 150)):
+    """The page's player shows the animation's positions at its frames' times, within 1e-4 of
+    the model's diagonal (`basis`: the page's, for the normalisation and the size)."""
+    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
+    for frame in frames:
+        t = float(animation["times"][frame])
+        shown = np.array(page.evaluate(f"window.eigendance.readPositions('player', {t})"))
+        error = np.abs(basis.to_original(shown.reshape(-1, 3))
+                       - animation["positions"][frame]).max() / diagonal
+        assert error < 1e-4, f"frame {frame} (t = {t:.2f} s): {error:.2e} of the diagonal"
+
+
 def test_a_mapping_saved_in_the_page_dances_the_same_under_animate(browser, live_server,
                                                                    web_files, tmp_path,
                                                                    monkeypatch, capsys):
@@ -35,15 +47,8 @@ def test_a_mapping_saved_in_the_page_dances_the_same_under_animate(browser, live
     assert main(["animate", CAT, web_files["song"], "--mapping", str(path),
                  "-o", str(output)]) == 0
     assert "note" not in capsys.readouterr().err  # the mapping's own basis: nothing to say
-    animation = load_animation(output)
     basis = HarmonicBasis.from_mesh(CAT, E2E_K)  # the page's (the shared cache's), for the size
-    diagonal = np.linalg.norm(np.ptp(basis.to_original(basis.vertices), axis=0))
-    for frame in (4, 37, 150):
-        t = float(animation["times"][frame])
-        shown = np.array(page.evaluate(f"window.eigendance.readPositions('player', {t})"))
-        error = np.abs(basis.to_original(shown.reshape(-1, 3))
-                       - animation["positions"][frame]).max() / diagonal
-        assert error < 1e-4, f"frame {frame} (t = {t:.2f} s): {error:.2e} of the diagonal"
+    assert_player_shows(page, load_animation(output), basis)
 
     # told otherwise, it says in one line how the dance will differ
     assert main(["animate", CAT, web_files["song"], "--mapping", str(path), "-k", "30",

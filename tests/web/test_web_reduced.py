@@ -16,10 +16,13 @@ import numpy as np
 import pytest
 from test_look_page import MODEL as LOOK_MODEL
 from test_look_page import page_picture
+from test_web_mapping_basis import assert_player_shows
 from web_helpers import CAT, E2E_K, open_app, running_server
 
+from eigendance.cli import main
 from eigendance.harmonic.basis import HarmonicBasis
-from eigendance.harmonic.motion import positions_at
+from eigendance.harmonic.construction import BasisRecord
+from eigendance.harmonic.motion import load_animation, positions_at
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.binary import unpack
@@ -51,7 +54,8 @@ def test_the_bundle_holds_the_interpolation_not_the_harmonics(reduced_server, re
     with urllib.request.urlopen(reduced_server["url"] + f"api/meshes/{mesh['id']}/basis.bin") \
             as answer:
         meta, arrays = unpack(answer.read())
-    n, m = meta["n"], meta["samples"]
+    n, m = meta["n"], meta["placed"]
+    assert meta["samples"] == SAMPLES  # asked; the grid places m, within 5% of it
     assert "harmonics" not in arrays and abs(m - SAMPLES) <= 0.05 * SAMPLES
     assert arrays["coarse"].shape == (m, 4 * ((E2E_K + 3) // 4))
     assert arrays["weights"].dtype == np.float16 and arrays["weights"].shape == (n, 8)
@@ -96,6 +100,28 @@ def test_the_player_and_breeding_work_on_a_reduced_basis(reduced_page, web_files
     shown = np.array(reduced_page.evaluate("window.eigendance.readPositions('player', 2.0)"))
     expected = positions_at(basis, spectrogram, child, 2.0)
     assert np.abs(basis.to_original(shown.reshape(-1, 3)) - expected).max() / diagonal < 1e-4
+    reduced_page.evaluate("window.eigendance.setView('gallery')")
+
+
+def test_a_mapping_saved_on_a_reduced_basis_dances_the_same_under_animate(
+        reduced_page, web_files, tmp_path, monkeypatch, capsys):
+    """The page's record keeps the samples asked (the grid places about as many, and the count
+    asked places the same ones again), so `animate` with the mapping alone solves the page's
+    basis and dances as the page showed it (issue 29)."""
+    monkeypatch.setenv("EIGENDANCE_CACHE_DIR", web_files["cache"])
+    reduced_page.evaluate("window.eigendance.open(1)")
+    with reduced_page.expect_download() as download:
+        reduced_page.click("#save-mapping")
+    path = tmp_path / "from-page.json"
+    download.value.save_as(path)
+    basis = HarmonicBasis.from_mesh(CAT, E2E_K, construction="reduced")  # the server's, cached
+    assert Mapping.load(path).basis == BasisRecord(E2E_K, "reduced", SAMPLES,
+                                                   basis.reduced.count)
+    output = tmp_path / "dance.npz"
+    assert main(["animate", CAT, web_files["song"], "--mapping", str(path),
+                 "-o", str(output)]) == 0
+    assert "note" not in capsys.readouterr().err  # the mapping's own basis, solved the same
+    assert_player_shows(reduced_page, load_animation(output), basis)
     reduced_page.evaluate("window.eigendance.setView('gallery')")
 
 

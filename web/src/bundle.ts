@@ -75,6 +75,8 @@ export interface Basis {
 export interface Interpolation {
   /** samples m: the rows of `harmonics` */
   m: number;
+  /** the samples asked of the sampler, which placed these m (null where the server did not say) */
+  asked: number | null;
   /** n*8, ≥ 0, each vertex's summing to 1 (multiples of 2⁻¹¹: exact in float16) */
   weights: Float32Array;
   indices: Uint16Array | Uint32Array; // n*8 sample rows
@@ -96,7 +98,7 @@ export function basisFromBundle(bundle: Bundle): Basis {
     eigenvalues: a.eigenvalues.data as Float32Array,
     coefficients: a.coefficients.data as Float32Array,
     harmonics: harmonics.data as Float32Array,
-    reduced: a.coarse ? { m: a.coarse.shape[0], weights: a.weights.data as Float32Array,
+    reduced: a.coarse ? { m: a.coarse.shape[0], asked: bundle.meta.samples ?? null, weights: a.weights.data as Float32Array,
       indices: a.indices.data as Uint16Array | Uint32Array } : undefined,
   };
 }

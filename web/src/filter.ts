@@ -51,18 +51,18 @@ export interface Mapping {
 export interface BasisRecord {
   k: number;
   construction: "exact" | "reduced";
-  /** the samples m of a reduced basis; null for an exact one */
+  /** a reduced basis's samples asked of the sampler (they fix the ones placed), m placed */
   samples: number | null;
+  placed?: number | null;
 }
 
-/** The mapping as saved from a mesh's basis: with the record of that basis (k, exact or
- * reduced, samples), so that the command line dances it on the same harmonics. */
+/** The mapping with the record of the basis it was made on, for the command line to solve. */
 export function withBasis(mapping: Mapping,
-    basis: { k: number; reduced?: { m: number } } | null): Mapping {
+    basis: { k: number; reduced?: { m: number; asked: number | null } } | null): Mapping {
   if (!basis) return mapping;
-  const record: BasisRecord = basis.reduced
-    ? { k: basis.k, construction: "reduced", samples: basis.reduced.m }
-    : { k: basis.k, construction: "exact", samples: null };
+  const record: BasisRecord = basis.reduced ? { k: basis.k, construction: "reduced",
+    samples: basis.reduced.asked, placed: basis.reduced.m }
+    : { k: basis.k, construction: "exact", samples: null, placed: null };
   return { ...mapping, basis: record };
 }
 

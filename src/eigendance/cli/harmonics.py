@@ -64,7 +64,8 @@ def add_basis(parser):
     parser.add_argument("--no-cache", action="store_true", help="solve even if cached")
     add_construction(parser)
     parser.add_argument("--samples", type=number(2, 10**7, integer=True), default=None,
-                        help="samples of a reduced basis (default 21·k, at least 2000)")
+                        help="samples a reduced basis asks for (the grid places about as many; "
+                        "default 21·k, at least 2000)")
     add_output(parser, "basis file to write (.npz)")
 
 
@@ -89,8 +90,7 @@ def run_basis(args) -> None:
     with bar:
         basis = problem.basis(args.k, progress=update)
     basis.save(args.output)
-    how = "exact" if basis.reduced is None else f"reduced, {basis.reduced.count} samples"
-    print(f"{args.output}: n = {basis.n} vertices, k = {basis.k} harmonics ({how}), "
+    print(f"{args.output}: n = {basis.n} vertices, {basis.record.describe()}, "
           f"largest eigenvalue {basis.eigenvalues[-1]:.6g}, "
           f"{time.perf_counter() - start:.1f} s")
 

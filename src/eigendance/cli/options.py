@@ -218,7 +218,10 @@ def basis_for(path: str, mapping=None, k: int | None = None, construction: str |
                          samples=choice.samples).problem
     bar, update = progress_bar(choice.k, "eigenpairs")
     with bar:
-        return problem.basis(choice.k, progress=update)
+        basis = problem.basis(choice.k, progress=update)
+    if choice.note is None:  # the mapping's own basis: say if it did not come out the same
+        say_note(output, record_note(mapping, basis.record))
+    return basis
 
 
 def gallery_size(text: str) -> int:

@@ -118,8 +118,9 @@ class HarmonicBasis:
     @property
     def record(self) -> BasisRecord:
         """What a mapping made on this basis records of it (`BasisRecord`)."""
-        return BasisRecord(self.k, self.construction,
-                           None if self.reduced is None else self.reduced.count)
+        if self.reduced is None:
+            return BasisRecord(self.k, "exact")
+        return BasisRecord(self.k, "reduced", self.reduced.asked, self.reduced.count)
 
     @property
     def vectors(self):
@@ -536,7 +537,7 @@ class HarmonicProblem:
         """
         if self.construction_for(k) == "reduced":
             arrays, seconds = self._reduced(k, progress)
-            reduced, eigenvectors = reduced_from_arrays(arrays), None
+            reduced, eigenvectors = reduced_from_arrays(arrays, self.sample_count(k)), None
         else:
             arrays, seconds = self._exact(k, progress)
             reduced, eigenvectors = None, arrays["eigenvectors"]

@@ -11,7 +11,12 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.files import checked_array, load_npz
 from eigendance.harmonic.laplacian import LAPLACIANS
-from eigendance.harmonic.reduced import REDUCED_KEYS, check_reduced, reduced_from_arrays
+from eigendance.harmonic.reduced import (
+    ASKED_KEY,
+    REDUCED_KEYS,
+    check_reduced,
+    reduced_from_arrays,
+)
 
 FORMAT_KEYS = ("vertices", "faces", "center", "scale", "mass", "eigenvalues", "eigenvectors",
                "coefficients", "residual", "laplacian")
@@ -75,6 +80,10 @@ def _load_vectors(data: dict, path: str, n: int, k: int):
                                                      shape=(n, None)),
               "coarse_eigenvectors": checked_array(data, "coarse_eigenvectors", path,
                                                    shape=(None, k))}
+    if ASKED_KEY in data:  # files written before it was kept lack it
+        arrays[ASKED_KEY] = asked = checked_array(data, ASKED_KEY, path, "int", ())
+        if not asked > k:
+            raise InputError(f"{path}: {ASKED_KEY} must be above k = {k}, not {int(asked)}")
     problem = check_reduced(arrays, n, k)
     if problem:
         raise InputError(f"{path}: reduced basis: {problem}")

@@ -69,18 +69,27 @@ class BasisRecord:
     ----------
     k : harmonics.
     construction : "exact" or "reduced".
-    samples : samples m of a reduced basis (None: exact, or the default count).
+    samples : the samples a reduced basis asked the sampler for (`sampling.spread_samples`:
+        with the mesh they fix the samples placed); None: exact, or the default count.
+    placed : the samples m a reduced basis placed (about `samples`), or None; a check, not an
+        input: the same mesh and `samples` place them again.
 
     Example
     -------
     >>> record = BasisRecord.from_json({"k": 150, "construction": "exact", "samples": None})
     >>> record, record.describe()
-    (BasisRecord(k=150, construction='exact', samples=None), 'k = 150 harmonics (exact)')
+    (BasisRecord(k=150, construction='exact', samples=None, placed=None), \
+'k = 150 harmonics (exact)')
+    >>> BasisRecord(20, "reduced", 2000, 2062).describe()
+    'k = 20 harmonics (reduced, 2000 samples asked, 2062 placed)'
+    >>> BasisRecord.from_json({"k": 20, "construction": "reduced", "samples": 2062})  # older
+    BasisRecord(k=20, construction='reduced', samples=None, placed=2062)
     """
 
     k: int
     construction: str = "exact"
     samples: int | None = None
+    placed: int | None = None
 
     def describe(self) -> str:
         """The record in words, as a message says it.
@@ -89,22 +98,28 @@ class BasisRecord:
         -------
         str.
         """
-        how = self.construction if self.samples is None else \
-            f"{self.construction}, {self.samples} samples"
-        return f"k = {self.k} harmonics ({how})"
+        how = [self.construction]
+        if self.samples is not None:
+            how.append(f"{self.samples} samples asked")
+        if self.placed is not None:
+            how.append(f"{self.placed} placed")
+        return f"k = {self.k} harmonics ({', '.join(how)})"
 
     def to_json(self) -> dict:
-        """{"k", "construction", "samples"}.
+        """{"k", "construction", "samples", "placed"}.
 
         Returns
         -------
         dict.
         """
-        return {"k": self.k, "construction": self.construction, "samples": self.samples}
+        return {"k": self.k, "construction": self.construction, "samples": self.samples,
+                "placed": self.placed}
 
     @classmethod
     def from_json(cls, data, name: str = "mapping") -> BasisRecord:
-        """A record from a mapping document's "basis", checked.
+        """A record from a mapping document's "basis", checked. A reduced record without
+        "placed" is older: its "samples" were the samples placed, made from the default count
+        (all the page asked for), so it reads as that default with those samples placed.
 
         Parameters
         ----------
@@ -119,7 +134,7 @@ class BasisRecord:
         ------
         InputError
             For a field that is not an object of a positive integer k, a construction
-            "exact" or "reduced" and samples null or an integer above k.
+            "exact" or "reduced" and samples and placed null or integers above k.
         """
         if not isinstance(data, dict):
             raise InputError(f"{name}: basis must be an object {{k, construction, samples}}")
@@ -128,11 +143,15 @@ class BasisRecord:
         if construction not in CONSTRUCTIONS[1:]:
             raise InputError(f"{name}: basis.construction must be \"exact\" or \"reduced\", "
                              f"not {construction!r}")
-        samples = data.get("samples")
-        if samples is not None:
-            samples = number(samples, f"{name}: basis.samples", k, 10**7, integer=True,
-                             above=True)
-        return cls(k, construction, samples)
+        counts = {}
+        for field in ("samples", "placed"):
+            counts[field] = data.get(field)
+            if counts[field] is not None:
+                counts[field] = number(counts[field], f"{name}: basis.{field}", k, 10**7,
+                                       integer=True, above=True)
+        if construction == "reduced" and "placed" not in data:
+            counts = {"samples": None, "placed": counts["samples"]}
+        return cls(k, construction, counts["samples"], counts["placed"])
 
 
 def eigenpairs_fit(stiffness, mass: np.ndarray, k: int, arrays: dict) -> bool:

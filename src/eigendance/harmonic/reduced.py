@@ -49,6 +49,8 @@ BYTES_PER_COARSE_VALUE = 24
 # The arrays of a reduced basis in a basis file and a cache entry (docs/design.md#basis-file).
 REDUCED_KEYS = ("samples", "interpolation_indices", "interpolation_weights",
                 "coarse_eigenvectors")
+# ... and the count the sampler was asked for (absent from files written before it was kept).
+ASKED_KEY = "samples_asked"
 # A cached solve (exact or reduced) is used only if its pairs pass the solver's own test with
 # this slack (‖Lu − λMu‖ ≤ tol·max(λ,1)·‖Mu‖, and Uᵀ M U = I within tol): construction.py.
 CACHE_TOLERANCE = 10 * RESIDUAL_TOLERANCE
@@ -96,11 +98,14 @@ class ReducedHarmonics:
     samples : (m,) vertex index of each sample.
     interpolation : P (n × m).
     coarse : (m, k) U_r, with U_rᵀ M_r U_r = I.
+    asked : the samples asked of `spread_samples`, which placed these m (about as many): with
+        the mesh, the asked count gives these samples again; None where unknown (older files).
     """
 
     samples: np.ndarray
     interpolation: Interpolation
     coarse: np.ndarray
+    asked: int | None = None
     _overlap: sp.csr_matrix | None = field(default=None, repr=False, compare=False)  # PᵀP
 
     @property
@@ -216,7 +221,7 @@ def reduced_harmonics(stiffness, mass: np.ndarray, vertices: np.ndarray, faces: 
     stiffness_r, mass_r = restricted(stiffness, mass, interpolation.matrix())
     eigenvalues, coarse = solve(stiffness_r, mass_r, k, progress=progress)
     return eigenvalues, ReducedHarmonics(samples.astype(np.int64), interpolation,
-                                         np.ascontiguousarray(coarse))
+                                         np.ascontiguousarray(coarse), count)
 
 
 def reduced_key(exact_key: str, count: int) -> str:
@@ -243,20 +248,25 @@ def reduced_arrays(reduced: ReducedHarmonics) -> dict[str, np.ndarray]:
 
     Returns
     -------
-    {name: array} of REDUCED_KEYS.
+    {name: array} of REDUCED_KEYS, and ASKED_KEY where the asked count is known.
     """
-    return {"samples": reduced.samples,
-            "interpolation_indices": reduced.interpolation.indices,
-            "interpolation_weights": reduced.interpolation.weights,
-            "coarse_eigenvectors": reduced.coarse}
+    arrays = {"samples": reduced.samples,
+              "interpolation_indices": reduced.interpolation.indices,
+              "interpolation_weights": reduced.interpolation.weights,
+              "coarse_eigenvectors": reduced.coarse}
+    if reduced.asked is not None:
+        arrays[ASKED_KEY] = np.int64(reduced.asked)
+    return arrays
 
 
-def reduced_from_arrays(arrays: dict) -> ReducedHarmonics:
+def reduced_from_arrays(arrays: dict, asked: int | None = None) -> ReducedHarmonics:
     """A `ReducedHarmonics` from stored arrays.
 
     Parameters
     ----------
-    arrays : REDUCED_KEYS as `reduced_arrays` writes them, checked (`check_reduced`).
+    arrays : REDUCED_KEYS as `reduced_arrays` writes them, checked (`check_reduced`), and
+        ASKED_KEY where the file has it.
+    asked : the asked count where the arrays do not hold it (a cache entry's key names it).
 
     Returns
     -------
@@ -266,8 +276,10 @@ def reduced_from_arrays(arrays: dict) -> ReducedHarmonics:
     interpolation = Interpolation(np.asarray(arrays["interpolation_indices"], dtype=np.int32),
                                   np.asarray(arrays["interpolation_weights"], dtype=np.float64),
                                   len(samples))
+    if ASKED_KEY in arrays:
+        asked = int(arrays[ASKED_KEY])
     return ReducedHarmonics(samples, interpolation,
-                            np.asarray(arrays["coarse_eigenvectors"], dtype=np.float64))
+                            np.asarray(arrays["coarse_eigenvectors"], dtype=np.float64), asked)
 
 
 def check_reduced(arrays: dict, n: int, k: int) -> str | None:

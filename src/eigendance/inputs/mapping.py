@@ -1,12 +1,12 @@
 """Mappings: a mapping file or document, checked, and the basis it dances on
 (docs/design.md#inputs, docs/design.md#mapping-file).
 
-A mapping records the basis it was made on (`BasisRecord`: k, construction, samples; the
-page's saved mappings and `eigendance gallery`'s do). Every command that takes a mapping solves
-that basis unless told otherwise (`basis_choice`), and then says in one line how the dance will
-differ. A mapping without the record (from before it, or a rig's) takes the default k
-(`defaults.DEFAULT_K`, the page's k then too) and the construction rule. Where one basis
-serves several mappings (`serve`, a batch's model) it is the one they record
+A mapping records the basis it was made on (`BasisRecord`: k, construction, the samples asked
+and placed; the page's saved mappings and `eigendance gallery`'s do). Every command that takes
+a mapping solves that basis unless told otherwise (`basis_choice`), and then says in one line
+how the dance will differ. A mapping without the record (from before it, or a rig's) takes the
+default k (`defaults.DEFAULT_K`, the page's k then too) and the construction rule. Where one
+basis serves several mappings (`serve`, a batch's model) it is the one they record
 (`shared_choice`), and each mapping made on another says so in the same line.
 """
 
@@ -145,23 +145,18 @@ bands drive other harmonics: the dance differs from the one it was made on']
     record = None if mapping is None else mapping.basis
     if record is None:
         return BasisChoice(k or DEFAULT_K, construction or "auto")
-    asked = BasisRecord(k or record.k, construction or record.construction,
-                        record.samples if (construction or record.construction) == "reduced"
-                        and (k or record.k) == record.k else None)
-    if asked == record:
+    asked = BasisRecord(k or record.k, construction or record.construction)
+    if (asked.k, asked.construction) == (record.k, record.construction):
         return BasisChoice(record.k, record.construction, record.samples)
-    if asked.construction == "reduced" and asked.samples is None:
-        asked_words = f"k = {asked.k} harmonics (reduced)"
-    else:
-        asked_words = asked.describe()
-    note = (f"{mapping.name} was made on {record.describe()}; on {asked_words} the same bands "
-            "drive other harmonics: the dance differs from the one it was made on")
-    return BasisChoice(asked.k, asked.construction, asked.samples, note)
+    note = (f"{mapping.name} was made on {record.describe()}; on {asked.describe()} the same "
+            "bands drive other harmonics: the dance differs from the one it was made on")
+    return BasisChoice(asked.k, asked.construction, None, note)
 
 
 def record_note(mapping: Mapping | None, record: BasisRecord) -> str | None:
-    """What to say when a mapping dances on a basis given ready-made (a basis file) that is not
-    the one it records.
+    """What to say when a mapping dances on a basis (a basis file, or the one solved for it)
+    that is not the one it records: another k or construction, other samples asked, or other
+    samples placed (a field the mapping or the basis does not know is not compared).
 
     Parameters
     ----------
@@ -173,10 +168,11 @@ def record_note(mapping: Mapping | None, record: BasisRecord) -> str | None:
     One line, or None when the mapping records no basis or this one.
     """
     made = None if mapping is None else mapping.basis
-    if made is None or made == record or (made.k, made.construction, made.samples) == (
-            record.k, record.construction, record.samples if made.samples else None):
+    if made is None or ((made.k, made.construction) == (record.k, record.construction) and all(
+            None in pair or pair[0] == pair[1] for pair in
+            ((made.samples, record.samples), (made.placed, record.placed)))):
         return None
-    return (f"{mapping.name} was made on {made.describe()}; the basis given has "
+    return (f"{mapping.name} was made on {made.describe()}; the basis danced on has "
             f"{record.describe()}, and the dance differs from the one it was made on")
 
 

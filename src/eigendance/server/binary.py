@@ -8,8 +8,9 @@ spaces to a multiple of 4, then the arrays, each starting at a multiple of 4 byt
 Basis bundle (`basis_bundle`): vertices (n,3) f32 normalised, faces (m,3) u32, eigenvalues (k,)
 f32, coefficients (k,3) f32 and `harmonics` (n, 4·⌈k/4⌉) f32 (or f16 on request) — the eigenvectors
 packed four harmonics per RGBA texel (zero padded), ready for a float texture. A reduced basis
-(docs/design.md#reduced-basis; meta `construction` "reduced", `samples` m) sends instead
-`coarse` (m, 4·⌈k/4⌉) f32 (always: it is small), U_r packed the same way, and P:
+(docs/design.md#reduced-basis; meta `construction` "reduced", `samples` the count asked of the
+sampler and `placed` m, as `BasisRecord`) sends instead `coarse` (m, 4·⌈k/4⌉) f32 (always: it
+is small), U_r packed the same way, and P:
 `weights` (n, 8) f16 (exact: multiples of 2⁻¹¹) and `indices` (n, 8) u16 (u32 when m > 65536).
 Spectrogram bundle (`spectrogram_bundle`): times (T,) f32, values (T,B) f32, band_edges (B+1,)
 f32, beats (n_b,), onsets (n_o,), downbeats (n_d,) and sections (n_s,) f32 seconds (the song's
@@ -148,7 +149,7 @@ def basis_bundle(basis, name: str = "mesh", half: bool = False) -> bytes:
         arrays["harmonics"] = packed_harmonics(basis.eigenvectors)
         return pack(meta, arrays, half=("harmonics",) if half else ())
     reduced = basis.reduced
-    meta["samples"] = reduced.count
+    meta["samples"], meta["placed"] = reduced.asked, reduced.count  # as `BasisRecord`'s
     indices = reduced.interpolation.indices
     arrays.update(coarse=packed_harmonics(reduced.coarse),
                   weights=reduced.interpolation.weights.astype(np.float16),  # exact
