@@ -70,3 +70,14 @@ def test_kill_takes_the_group_and_is_no_error_once_ended():
     process.close()
     processes.kill(process, group=True)  # closed
     processes.kill(context.Process(target=time.sleep))  # never started
+
+
+def test_a_pool_tells_each_result_as_it_is_there_and_returns_them_in_order():
+    """`Pool(…)(arguments, finished)`: finished hears every result once (in two processes, in the
+    order they end; in one, in order), and the call still returns them in the arguments'
+    order."""
+    for workers in (1, 2):
+        heard = []
+        with processes.Pool(workers, abs) as run:
+            assert run([-3, 1, -2], finished=heard.append) == [3, 1, 2]
+        assert sorted(heard) == [1, 2, 3]

@@ -230,7 +230,7 @@ class Intake:
         k = max(2, min(k or self.k, mesh.n - 2))
         item = MeshItem(new_id(), mesh.name, path, k, mesh.n, content=content,
                         construction=problem.construction_for(k), appearance=mesh.appearance)
-        item.job = Job(new_id(), "basis", k, mesh.name)
+        item.job = Job(new_id(), "basis", k, mesh.name, cached=problem.cached(k))
         self.shelf.admit(item, self.shelf.meshes, f"{mesh.name}: a basis of {k} harmonics of "
                                       f"{mesh.n} vertices")
         self.solver.put(item, problem)
