@@ -31,3 +31,39 @@ def test_the_fbx_advice_is_one_line(browser, live_server, tmp_path, width):
         assert page.evaluate(LINES, "error-text") < 1.5, said
     finally:
         page.close()
+
+
+# The header's height at every change of its box or of what it says, from the first layout on.
+HEIGHTS = """() => { window.heights = []; const bar = document.getElementById('bar');
+  const note = () => window.heights.push([bar.getBoundingClientRect().height,
+    document.getElementById('status').textContent, document.getElementById('fps').textContent]);
+  new ResizeObserver(note).observe(bar);
+  new MutationObserver(note).observe(bar, {childList: true, characterData: true,
+                                           subtree: true}); }"""
+
+
+@pytest.mark.parametrize("width", [1100, 1280, 1440])
+def test_the_header_keeps_its_height_from_loading_to_playing(browser, live_server, width):
+    """Item 8: the header's height, measured at every change of its box from the page's first
+    layout through "making the gallery…", "ready", playing (the frame-rate readout shows),
+    paused, the player and back, is one height (within a pixel)."""
+    page = browser.new_page(viewport={"width": width, "height": 760})
+    page.add_init_script("localStorage.setItem('eigendance-help-seen', '1')")
+    page.add_init_script("addEventListener('DOMContentLoaded', " + HEIGHTS + ")")
+    try:
+        page.goto(live_server["url"] + "?test&size=4")
+        page.wait_for_function("document.getElementById('status').textContent.includes('ready')",
+                               timeout=60_000)
+        page.click("#play")
+        page.wait_for_function("document.getElementById('fps').textContent.includes('fps')",
+                               timeout=60_000)
+        page.click("#play")
+        page.click("#tab-player")
+        page.click("#tab-gallery")
+        page.evaluate("new Promise((done) => requestAnimationFrame(() => setTimeout(done, 300)))")
+        heights = page.evaluate("window.heights")
+        said = {(status, fps) for _, status, fps in heights}
+        assert any("ready" in status for status, _ in said), said
+        assert max(h for h, *_ in heights) - min(h for h, *_ in heights) <= 1, heights
+    finally:
+        page.close()
