@@ -119,6 +119,12 @@ function galleryHooks(app: App) {
     resolution: () => ({ scale: viewer.resolution.scale, atFloor: viewer.resolution.atFloor,
       detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
       said: viewer.resolution.describe(), pixelRatio: viewer.renderer.getPixelRatio() }),
+    /** Draw the tiles with about `fraction` of the triangles (a level of detail.ts), as a slow
+     * page does; with `?scale=` fixed, the page keeps it. */
+    setDetail(fraction: number): void {
+      viewer.resolution.detail = fraction;
+      viewer.requestDraw();
+    },
     /** The export panel's request for the window in its fields (what `export` would send). */
     exportRequest: () => app.exporter.request(),
   };
