@@ -1,6 +1,7 @@
 """The page's chrome as a newcomer finds it (issue 30 items 5 and 8), from the user's side: the
 FBX advice on one line, a header whose height does not change as the page goes from loading to
-ready to playing, a textured model at 25% of its triangles that looks as at 100%. Each test failed on the build before its fix.
+ready to playing, a textured model at 25% of its triangles that looks as at 100%. Each test
+failed on the build before its fix.
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 """
