@@ -64,6 +64,14 @@ function pixelHooks(app: App) {
     cpuPositions(tile: number | "player", t: number): number[] {
       return Array.from(deformCPU(motion.basis!, motion.weights(prepared(tile), t)));
     },
+    /** Where the camera of a tile (or the player, at its framing) stands: what it shows. */
+    framingOf(tile: number | "player") {
+      const element = tile === "player" ? document.getElementById("player-area")!
+        : gallery.views()[tile];
+      const { width, height } = element.getBoundingClientRect();
+      return viewer.framed(prepared(tile), width, height,
+        Math.min(Number(element.dataset.covered ?? 0), height / 3));
+    },
     /** Downsampled RGB pixels of each tile's view, read from the canvas. */
     tilePixels: (step = 4): number[][] => pixelsOf(viewer, gallery.views(), step),
     /** The same for the player's view. */
