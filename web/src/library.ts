@@ -114,12 +114,13 @@ export class Library {
     const say = (): void => {
       const seconds = ` · ${Math.floor((performance.now() - since) / 1000)} s`;
       // No count before the solver reports one: reading the cache or setting up says none.
+      // A cache entry found stale is solved after all: then the count shows.
+      const counting = job.done > 0 && (!job.cached || job.done < job.total);
       const what = job.state === "queued" ? "waiting for the model before it"
-        : job.cached ? "reading its harmonics from the cache"
-          : job.done ? `computing its harmonics (${job.done} of ${job.total})`
+        : counting ? `computing its harmonics (${job.done} of ${job.total})`
+          : job.cached ? "reading its harmonics from the cache"
             : "preparing its harmonics (the Laplacian, the first band)";
-      this.busy(`${name}: ${what}${seconds}`,
-        !job.cached && job.done && job.total ? job.done / job.total : null);
+      this.busy(`${name}: ${what}${seconds}`, counting ? job.done / job.total : null);
     };
     say();
     const ticking = setInterval(say, 1000);
