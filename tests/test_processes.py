@@ -101,3 +101,14 @@ def test_the_fork_server_ends_with_its_caller_and_a_stopped_one_starts_again():
     assert (code, again, gone) == ("0", "0", "True"), ran.stderr
     assert first != second
     assert not os.path.exists(f"/proc/{second}")  # it was the caller's child: reaped
+
+
+def test_a_pool_tells_each_result_as_it_is_there_and_returns_them_in_order():
+    """`Pool(…)(arguments, finished)`: finished hears every result once (in two processes, in the
+    order they end; in one, in order), and the call still returns them in the arguments'
+    order."""
+    for workers in (1, 2):
+        heard = []
+        with processes.Pool(workers, abs) as run:
+            assert run([-3, 1, -2], finished=heard.append) == [3, 1, 2]
+        assert sorted(heard) == [1, 2, 3]

@@ -36,7 +36,7 @@ import signal
 import sys
 import threading
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from multiprocessing import resource_tracker, util
 
 POLL_SECONDS = 0.5
@@ -322,19 +322,26 @@ class Pool:
     def __enter__(self):
         return self
 
-    def __call__(self, arguments: list) -> list:
+    def __call__(self, arguments: list, finished=None) -> list:
         """[function(argument) for each argument], in order.
 
         Parameters
         ----------
         arguments : the arguments.
+        finished : None, or a callable(result) told of each result as soon as it is there
+            (in the order they finish: a caller's progress between calls).
 
         Returns
         -------
         list of the results.
         """
         if len(arguments) == 1 or self.workers == 1:
-            return [self.here(each) for each in arguments]
+            results = []
+            for each in arguments:
+                results.append(self.here(each))
+                if finished is not None:
+                    finished(results[-1])
+            return results
         if self.pool is None:
             self.pool = ProcessPoolExecutor(self.workers, mp_context=context("auto"),
                                             initializer=start_worker, initargs=(os.getpid(),))
@@ -342,6 +349,9 @@ class Pool:
         # the pool's own thread may be failing them (`__exit__`), which CPython 3.11 reports
         # as an InvalidStateError traceback. Unfinished futures are left to the pool.
         futures = [self.pool.submit(self.function, each) for each in arguments]
+        if finished is not None:
+            for future in as_completed(futures):
+                finished(future.result())
         return [future.result() for future in futures]
 
     def __exit__(self, kind, *exception):

@@ -358,3 +358,15 @@ def test_children_keep_the_settings_of_their_first_drawn_parent(rng):
     children = breed([loud, calm], 12, seed=5)
     settings = {(c.gain, c.smoothing, c.offset, c.shading) for c in children}
     assert settings == {(2.0, 0.0, 1.0, "flat"), (1.0, 0.3, 0.0, "smooth")}
+
+
+def test_the_kernel_of_a_model_of_coupled_pieces_is_never_driven():
+    """The textured speeder (4 pieces coupled by contacts: one component, so exactly one
+    eigenvalue 0, computed as 3·10⁻¹² λ_max beside the contacts' stiff springs) dances from
+    harmonic 1: harmonic 0 (a translation of the whole model) was its tile #1."""
+    from eigendance.harmonic.basis import HarmonicProblem
+
+    basis = HarmonicProblem(fixture_path("textured", "craft_speederD.gltf"),
+                            cache=False).basis(40)
+    assert basis.eigenvalues[0] < 1e-9 * basis.eigenvalues[-1] < basis.eigenvalues[1]
+    assert drivable_harmonics(basis)[0] == 1

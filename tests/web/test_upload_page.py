@@ -6,6 +6,7 @@ convert it."""
 from __future__ import annotations
 
 import json
+import shutil
 import urllib.request
 
 import pytest
@@ -61,3 +62,17 @@ def test_an_fbx_shows_how_to_convert_it(page, tmp_path):
     error = page.evaluate("window.eigendance.info().error")
     assert error.startswith("Stag.fbx could not be added") and "glTF" in error
     assert "Blender" in error and "\n" not in error
+
+
+def test_a_model_in_several_files_is_ready_under_its_own_name(page, tmp_path):
+    """Found using the page (issue 30): the status named the .zip the page made of the files
+    ("craft_speederD.zip ready") while the menu named the model."""
+    shutil.copy(fixture_path("textured", "robot.obj"), tmp_path / "walker.obj")
+    shutil.copy(fixture_path("textured", "robot.mtl"), tmp_path / "robot.mtl")
+    if page.locator("#error").is_visible():  # an earlier test's
+        page.click("#error-close")
+    info = add(page, tmp_path / "walker.obj", tmp_path / "robot.mtl")
+    assert info["error"] is None, info["error"]
+    page.wait_for_function("document.getElementById('status').textContent.includes('ready')",
+                           timeout=30_000)
+    assert page.text_content("#status") == "walker.obj ready"

@@ -3,8 +3,10 @@ import { basisFromBundle, parseBundle, spectrumFromBundle } from "./bundle";
 import type { Basis, Spectrum } from "./bundle";
 import type { Mapping } from "./filter";
 
+/** A job of the server (a basis, an export): `cached` when a basis is read from the disk cache,
+ * not solved. */
 export interface Job { id: string; kind: string; state: string; done: number; total: number;
-  message: string; }
+  message: string; cached?: boolean; }
 /** A model's look as the library lists it: null for a model drawn in clay. */
 export type LookInfo = { materials: number; images: number; drawn: number } | null;
 export interface MeshInfo { id: string; name: string; k: number; vertices: number; ready: boolean;

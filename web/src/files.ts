@@ -91,7 +91,8 @@ export class FileIntake {
       events.openMapping(result.item.id,
         await api.getJSON<Mapping>(`api/mappings/${result.item.id}`), file.name);
     }
-    messages.status(`${file.name} ready`);
+    // The model's own name: files given together went as one .zip named after the model file.
+    messages.status(`${result.item?.name ?? file.name} ready`);
     events.requestDraw();
   }
 }

@@ -13,6 +13,10 @@ import type { Motion } from "./motion";
 import { drawAmplification, drawTransfer, effectiveAmplification } from "./plots";
 import type { Shot } from "./viewer";
 
+/** Pixels at the top of a tile's view under its number and its open / save buttons: the model
+ * is framed below them, so nothing of it (a label on its top) hides there. */
+const TILE_CAPTION = 24;
+
 /** One tile's elements: the view the model is drawn into, its label and its two plots. */
 interface Tile { element: HTMLElement; view: HTMLElement; label: HTMLElement;
   transfer: HTMLCanvasElement; amplification: HTMLCanvasElement; }
@@ -238,7 +242,7 @@ export class GalleryView {
         class="long">open</span><span class="short">▶</span></button>
       <button class="save" title="download this tile's mapping (JSON)"><span
         class="long">save</span><span class="short">↓</span></button></div>
-      <div class="view"></div>
+      <div class="view" data-covered="${TILE_CAPTION}"></div>
       <div class="plots"><canvas class="transfer" width="160" height="34"
         title="transfer: which harmonic of the shape each sound band drives (left: low sounds, bottom: low harmonics)"></canvas>
       <canvas class="amplification" width="160" height="34"

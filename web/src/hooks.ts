@@ -64,6 +64,14 @@ function pixelHooks(app: App) {
     cpuPositions(tile: number | "player", t: number): number[] {
       return Array.from(deformCPU(motion.basis!, motion.weights(prepared(tile), t)));
     },
+    /** Where the camera of a tile (or the player, at its framing) stands: what it shows. */
+    framingOf(tile: number | "player") {
+      const element = tile === "player" ? document.getElementById("player-area")!
+        : gallery.views()[tile];
+      const { width, height } = element.getBoundingClientRect();
+      return viewer.framed(prepared(tile), width, height,
+        Math.min(Number(element.dataset.covered ?? 0), height / 3));
+    },
     /** Downsampled RGB pixels of each tile's view, read from the canvas. */
     tilePixels: (step = 4): number[][] => pixelsOf(viewer, gallery.views(), step),
     /** The same for the player's view. */
@@ -119,6 +127,12 @@ function galleryHooks(app: App) {
     resolution: () => ({ scale: viewer.resolution.scale, atFloor: viewer.resolution.atFloor,
       detail: viewer.resolution.detail, exhausted: viewer.resolution.exhausted,
       said: viewer.resolution.describe(), pixelRatio: viewer.renderer.getPixelRatio() }),
+    /** Draw the tiles with about `fraction` of the triangles (a level of detail.ts), as a slow
+     * page does; with `?scale=` fixed, the page keeps it. */
+    setDetail(fraction: number): void {
+      viewer.resolution.detail = fraction;
+      viewer.requestDraw();
+    },
     /** The export panel's request for the window in its fields (what `export` would send). */
     exportRequest: () => app.exporter.request(),
   };

@@ -78,15 +78,7 @@ export class Library {
     this.loading = meshId;
     $<HTMLSelectElement>("mesh").value = meshId; // the menu (and its ✕) names what computes
     try {
-      if (!mesh.ready && mesh.job) {
-        this.busy(`${mesh.name}: computing its harmonics…`, null);
-        await api.followJob(mesh.job.id, (job) => {
-          // No count before the solver reports one: reading the cache or setting up says 0.
-          this.busy(job.done ? `${mesh.name}: computing its harmonics (${job.done} of `
-            + `${job.total})` : `${mesh.name}: preparing its harmonics…`,
-          job.done && job.total ? job.done / job.total : null);
-        });
-      }
+      if (!mesh.ready && mesh.job) await this.followSolve(mesh.name, mesh.job);
       this.busy(`${mesh.name}: loading its harmonics…`, null);
       const bytes = 16 * Math.ceil(mesh.k / 4) * mesh.vertices;
       const [basis, appearance] = await Promise.all([
@@ -110,6 +102,32 @@ export class Library {
       this.loading = this.dropped = null;
       $<HTMLSelectElement>("mesh").value = this.meshId; // the model on screen, if this one failed
       this.busy(null);
+    }
+  }
+
+  /** Follow a model's basis job in the loading box: what the server does (waits its turn,
+   * reads the cache, sets up, the pairs found as each band of the solver ends) and the seconds
+   * since, ticking, so the box never sits still while the server works. */
+  private async followSolve(name: string, first: api.Job): Promise<void> {
+    let job = first;
+    const since = performance.now();
+    const say = (): void => {
+      const seconds = ` · ${Math.floor((performance.now() - since) / 1000)} s`;
+      // No count before the solver reports one: reading the cache or setting up says none.
+      // A cache entry found stale is solved after all: then the count shows.
+      const counting = job.done > 0 && (!job.cached || job.done < job.total);
+      const what = job.state === "queued" ? "waiting for the model before it"
+        : counting ? `computing its harmonics (${job.done} of ${job.total})`
+          : job.cached ? "reading its harmonics from the cache"
+            : "preparing its harmonics (the Laplacian, the first band)";
+      this.busy(`${name}: ${what}${seconds}`, counting ? job.done / job.total : null);
+    };
+    say();
+    const ticking = setInterval(say, 1000);
+    try {
+      await api.followJob(first.id, (next) => { job = next; say(); });
+    } finally {
+      clearInterval(ticking);
     }
   }
 

@@ -296,7 +296,7 @@ export class Viewer {
     const x = rect.left, y = height - rect.bottom;
     renderer.setViewport(x, y, rect.width, rect.height);
     renderer.setScissor(x, y, rect.width, rect.height);
-    this.aim(camera, rect.width / rect.height, shot);
+    this.aim(camera, rect.width, rect.height, shot);
     this.studio.setAspect(rect.width / rect.height);
     const { look } = shot;
     const player = stage.view === "player";
@@ -312,10 +312,15 @@ export class Viewer {
     renderer.render(deformer.scene, camera);
   }
 
-  /** Frame the model for a view of this aspect: a tile at every frame (its framing is cached),
-   * the player's orbit camera when its view changed shape or shows another mapping. */
-  private aim(camera: THREE.PerspectiveCamera, aspect: number, shot: Shot): void {
+  /** Frame the model for a view of this size: a tile at every frame (its framing is cached),
+   * below the caption over its top (`data-covered` pixels, as a view offset), the player's
+   * orbit camera when its view changed shape or shows another mapping. */
+  private aim(camera: THREE.PerspectiveCamera, width: number, height: number, shot: Shot): void {
+    const covered = Math.min(Number(shot.element.dataset.covered ?? 0), height / 3);
+    const aspect = width / (height - covered);
     camera.aspect = aspect;
+    if (covered > 0) camera.setViewOffset(width, height - covered, 0, -covered, width, height);
+    else camera.clearViewOffset();
     if (camera === this.playerCamera) {
       const framed = this.playerFramed;
       if (!framed || framed.source !== shot.source
@@ -333,6 +338,15 @@ export class Viewer {
     camera.position.copy(VIEW_DIRECTION).multiplyScalar(distance).add(target);
     camera.lookAt(target);
     camera.updateProjectionMatrix();
+  }
+
+  /** A view's camera for this mapping (tests): target, distance along `direction`, vertical
+   * field of view (degrees) and aspect of the part of the view below `covered` pixels. */
+  framed(prepared: Prepared, width: number, height: number, covered: number) {
+    const aspect = width / (height - covered);
+    const { target, distance } = this.framingFor(prepared, aspect);
+    return { target: target.toArray(), distance, direction: VIEW_DIRECTION.toArray(),
+      fov: FIELD_OF_VIEW, aspect, covered };
   }
 
   /** Where the camera stands for a model moved by `prepared` in a view of this aspect: the

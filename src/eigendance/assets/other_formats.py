@@ -193,12 +193,10 @@ def converted(path: str, name: str, problems: list | None = None):
     killed conversions are removed at the next: `writes.swept_locked_folder`).
     """
     suffix = os.path.splitext(path)[1].lower()
-    how = "open it in Blender" if suffix == ".blend" else \
-        f"in Blender: File › Import › {suffix[1:].upper()}"
-    if not blender_available():
-        raise InputError(f"{name}: {suffix} files cannot be read; convert it to glTF ({how}, "
-                         "then File › Export › glTF 2.0 (.glb)), or install the blender extra "
-                         "(pip install 'eigendance[blender]')", status=415)
+    how = "open it" if suffix == ".blend" else f"File › Import › {suffix[1:].upper()}"
+    if not blender_available():  # one line of the page at 1100 px (a long name aside)
+        raise InputError(f"{name}: {suffix} needs Blender ({how}, then File › Export › glTF "
+                         "2.0) or pip install 'eigendance[blender]'", status=415)
     with swept_locked_folder(CONVERT_PREFIX) as folder:
         glb = os.path.join(folder, "converted.glb")
         _blender_export(path, glb, CONVERTIBLE[suffix], name,

@@ -388,12 +388,12 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
         bands = []
     repairs, rounds = 0, 0
     most = 4 * math.ceil(k / count) + 8  # rounds of new bands before giving up (no progress)
+    told = _Told(progress, k)
     with Pool(workers, _band_worker, here=lambda each: _solve_band(*each)) as run:
         while True:
             pieces, gap = stitch(bands) if bands else ([], None)
             found = sum(int(keep.sum()) for _, keep in pieces)
-            if progress is not None:
-                progress(min(found, k))
+            told(found)
             if bands and gap is None and found >= k:
                 values, vectors = _assemble(pieces, k, n)
                 wrong, missing = _miscounted(stiffness, mass, bands, pieces, k)
@@ -412,10 +412,32 @@ def solve_bands(stiffness: sp.spmatrix, mass: np.ndarray, k: int, progress=None,
                     raise InternalError(f"eigen-solver: the bands do not close after {most} "
                                         "rounds", remedy={"solver": "eigsh"})
                 shifts = next_shifts(pieces, gap, k, count, workers, mass.total)
-                bands += run([(stiffness, mass, shift, count, null) for shift in shifts])
+                bands += run([(stiffness, mass, shift, count, null) for shift in shifts],
+                             finished=lambda band, done=list(bands): told.band(done, band))
             bands.sort(key=lambda band: band.shift)
     _verify(values, pieces, bands)
     return values, vectors
+
+
+class _Told:
+    """The pairs found so far, told to `progress` as each band ends (not only each round's
+    last): never fewer than told before, at most k."""
+
+    def __init__(self, progress, k: int):
+        self.progress, self.k, self.most = progress, k, 0
+
+    def __call__(self, found: int) -> None:
+        if self.progress is not None and min(found, self.k) > self.most:
+            self.most = min(found, self.k)
+            self.progress(self.most)
+
+    def band(self, done: list, band) -> None:
+        """A band of the round ended: the pairs of the bands done so far, stitched."""
+        if self.progress is None:
+            return
+        done.append(band)
+        done.sort(key=lambda each: each.shift)
+        self(sum(int(keep.sum()) for _, keep in stitch(done)[0]))
 
 
 def _assemble(pieces, k: int, n: int):

@@ -38,7 +38,11 @@ MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
 MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.015
 MOTION_BOUNDS = (0.01, 0.08)  # what every initial item's m is promised to lie in
 PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only for a moment)
-ZERO_FREQUENCY = 1e-6  # ω_ν ≤ this · ω_max: eigenvalue 0, a translation of a component
+# ω_ν ≤ this · ω_max (λ_ν ≤ 10⁻⁸ λ_max): eigenvalue 0, a translation of a component. At 10⁻⁶
+# the kernel of an operator stiffened by its contacts passed for a harmonic (the textured speeder:
+# λ₀ = 4.5·10⁻⁹, 3·10⁻¹² λ_max; its tile #1 slid the whole model); the smallest true ω₁ of the
+# shared models is above 10⁻² ω_max.
+ZERO_FREQUENCY = 1e-4
 # A harmonic moving the model less than this · the largest carries only rounding: of the
 # arithmetic (1e-15) or of the file's coordinates (6 to 7 significant digits in OBJ, PLY, STL).
 CONTENT_FLOOR = 1e-6

@@ -26,6 +26,7 @@ import shutil
 
 from eigendance.errors import EigendanceError, InputError
 from eigendance.files import check_readable, file_digest, kind_of, suffix_of
+from eigendance.harmonic.construction import is_cached
 from eigendance.inputs.mapping import mapping_from
 from eigendance.inputs.model import GLTF_SUFFIXES
 from eigendance.modal.skeleton import Skeleton
@@ -235,7 +236,7 @@ class Intake:
         """
         item = MeshItem(new_id(), mesh.name, path, mesh.k, mesh.vertices, content=content,
                         construction=mesh.construction, appearance=mesh.appearance)
-        item.job = Job(new_id(), "basis", mesh.k, mesh.name)
+        item.job = Job(new_id(), "basis", mesh.k, mesh.name, cached=is_cached(mesh.key))
         self.shelf.admit(item, self.shelf.meshes, f"{mesh.name}: a basis of {mesh.k} "
                                                   f"harmonics of {mesh.vertices} vertices")
         self.solver.put(item, mesh)

@@ -89,10 +89,11 @@ class Job:
 
         Returns
         -------
-        {"id", "kind", "state", "done", "total", "message"}.
+        {"id", "kind", "state", "done", "total", "message", "cached"} (cached: the basis is
+        read from the disk cache, not solved).
         """
         return {"id": self.id, "kind": self.kind, "state": self.state, "done": self.done,
-                "total": self.total, "message": self.message}
+                "total": self.total, "message": self.message, "cached": self.cached}
 
 
 @dataclass
