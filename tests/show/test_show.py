@@ -24,7 +24,7 @@ from eigendance.presets.store import PresetStore
 from eigendance.server.app import create_app
 from eigendance.server.serve import library_session
 from eigendance.show.osc import OscIn, OscOut, parse_address
-from eigendance.show.session import ModeAmplitudes
+from eigendance.show.session import ModeAmplitudes, cue_items
 from eigendance.show.setlist import read_set
 from eigendance.show.state import ShowState
 from helpers import fixture_path
@@ -286,3 +286,18 @@ def test_show_with_a_bad_set_is_one_line(tmp_path, capsys):
     assert main(["show", str(tmp_path / "none.toml")]) == 1
     assert main(["serve", "--osc-out", "nowhere"]) == 1
     assert "HOST:PORT" in capsys.readouterr().err
+
+
+def test_a_cue_may_dance_a_built_in_rig_as_the_commands_take_it(tmp_path):
+    setlist = read_set(write_set(tmp_path, '[[cue]]\nmodel = "hand"\nsong = "kick.mp3"\n'))
+    assert setlist.cues[0].model == "hand"
+    with library_session(k=12) as library:
+        items = cue_items(library, setlist)
+        rig = library.get("rig", items[0]["model"]["id"])
+        assert (items[0]["model"]["kind"], rig.origin, rig.source) == ("rig", "built-in", "hand")
+        assert library.add_path("hand") is rig  # `serve hand` too
+    (tmp_path / "hand").write_bytes(b"")  # a file of that name beside the set is the file
+    with pytest.raises(InputError, match="hand"):
+        read_set(tmp_path / "set.toml")
+    with pytest.raises(InputError, match="nowhere"):
+        read_set(write_set(tmp_path, '[[cue]]\nmodel = "nowhere"\nsong = "kick.mp3"\n'))
