@@ -1,17 +1,18 @@
 """OSC in and out (python-osc; docs/design.md#show).
 
 In: a UDP socket (127.0.0.1 unless told) whose messages become `ShowState.act` calls:
-`/eigendance/gain f`, `/preset s`, `/next`, `/prev`, `/tap`, `/play`, `/stop`, `/blackout [i]`,
-`/cue i`, `/slot i`, `/fade f`, `/tempo f`, and `/eigendance/control/<id> f` for each slider or
-switch of the page (its element id: `gain`, `smoothing`, `facets`, `rig-scale`, …). A packet
-that does not parse, an unknown address or a bad value is dropped with one line on stderr (at
-most one a second, with the count of the others).
+`/eigendance/gain f`, `/preset s`, `/next`, `/prev`, `/tap`, `/auto`, `/play`, `/stop`,
+`/blackout [i]`, `/cue i`, `/slot i`, `/fade f`, `/tempo f`, and `/eigendance/control/<id> f`
+for each slider or switch of the page (its element id: `gain`, `smoothing`, `facets`,
+`rig-scale`, …). A packet that does not parse, an unknown address or a bad value is dropped
+with one line on stderr (at most one a second, with the count of the others).
 
 Out: what the dance hears, at the song time the output page draws (its clock, reported to the
-server): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
+server), from the song or from the live input (its events as the page reports them:
+`show.live_out`): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
 `/eigendance/onset time`, `/eigendance/tempo f` (when it changes), `/eigendance/bands` (64
-floats, 30 times a second) and, while a rig dances, `/eigendance/modes` (its mode coefficients,
-radians, as often).
+floats, 30 times a second) and, while a rig dances a song, `/eigendance/modes` (its mode
+coefficients, radians, as often).
 """
 
 from __future__ import annotations
@@ -30,8 +31,8 @@ from eigendance.show.state import ShowState
 
 PREFIX = "/eigendance/"
 # address → (action, how many arguments it takes at most)
-ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "play": 0, "stop": 0,
-           "blackout": 1, "cue": 1, "slot": 1, "fade": 1, "tempo": 1, "loop_cue": 1,
+ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "auto": 0, "play": 0,
+           "stop": 0, "blackout": 1, "cue": 1, "slot": 1, "fade": 1, "tempo": 1, "loop_cue": 1,
            "loop_set": 1}
 BANDS_EVERY = 1 / 30  # s between /bands messages
 TICK = 0.004  # s: how finely the sender waits for the next event
@@ -158,6 +159,7 @@ class OscOut:
     def __init__(self, state: ShowState, host: str, port: int, spectrogram_of, modes_of=None):
         self.client = SimpleUDPClient(host, port)
         self.state, self.spectrogram_of, self.modes_of = state, spectrogram_of, modes_of
+        self.live_bands_at = -1.0  # the live take's time of the last /bands sent
         self.stopping = threading.Event()
         self.thread = threading.Thread(target=self._run, name="osc-out", daemon=True)
         self.thread.start()
@@ -182,7 +184,13 @@ class OscOut:
                 last_time = None
                 continue
             song, t = heard
-            spectrogram = self.spectrogram_of(song) if song else None
+            if self.state.tempo is not None and self.state.tempo != tempo:
+                tempo = self.state.tempo
+                self.client.send_message(PREFIX + "tempo", float(tempo))
+            if song is None:  # a live input: what the page reported, once the picture shows it
+                self._live(t)
+                continue
+            spectrogram = self.spectrogram_of(song)
             if spectrogram is None:
                 continue
             if song != last_song or last_time is None or not -SEEK < t - last_time < LATE:
@@ -197,10 +205,18 @@ class OscOut:
                 if modes is not None:
                     self.client.send_message(PREFIX + "modes", [float(c) for c in modes])
                 next_bands = t + BANDS_EVERY
-            if self.state.tempo is not None and self.state.tempo != tempo:
-                tempo = self.state.tempo
-                self.client.send_message(PREFIX + "tempo", float(tempo))
             last_time = max(last_time, t)
+
+    def _live(self, t: float) -> None:
+        """Send the live take's beats, onsets and bands the picture reached (`LiveHeard`)."""
+        beats, onsets, bands = self.state.live.due(t)
+        for index, time_ in beats:
+            self.client.send_message(PREFIX + "beat", [index, time_])
+        for time_ in onsets:
+            self.client.send_message(PREFIX + "onset", time_)
+        if bands is not None and abs(t - self.live_bands_at) >= BANDS_EVERY:  # a new take: back
+            self.client.send_message(PREFIX + "bands", bands)
+            self.live_bands_at = t
 
     def _events(self, rhythm, start: float, end: float) -> None:
         """Send the beats, downbeats and onsets in (start, end]."""

@@ -16,6 +16,7 @@ from eigendance.errors import InputError
 from eigendance.files import finite_number
 from eigendance.presets.store import check_name
 from eigendance.show.beat_clock import BeatGrid, grid_from_taps
+from eigendance.show.live_out import LiveHeard
 from eigendance.show.setlist import SetList
 
 GAIN_RANGE = (0.0, 8.0)
@@ -67,6 +68,7 @@ class ShowState:
         self.grid: BeatGrid | None = None  # the show's own beat clock (show.beat_clock)
         self.controls: dict[str, float] = {}
         self.song_clock: dict | None = None  # the output page's {song, time, at, playing}
+        self.live = LiveHeard()  # a live input's events, as the output page reports them
         self.version = 0
 
     # -- actions --------------------------------------------------------------------------------

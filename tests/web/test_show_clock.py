@@ -1,0 +1,133 @@
+"""The show's beat clock and a live input's OSC out in Chromium (docs/design.md#show), with real
+UDP on 127.0.0.1:
+
+- four taps at 120 BPM over OSC make /api/show/state's tempo 120, and the next cue change lands
+  on the tapped bar, not on the song's own beats;
+- with a live input (Chromium's fake microphone playing the shared 120-BPM kick track),
+  --osc-out sends the page's live beats, tempo and bands to a python-osc listener.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+
+import numpy as np
+import pytest
+from pythonosc.udp_client import SimpleUDPClient
+from show_helpers import (
+    KICK,
+    control,
+    open_output,
+    osc_listener,
+    show_server,
+    sound_chromium,
+    state,
+)
+from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip
+
+pytestmark = pytest.mark.web
+
+
+def write_set(folder, cue: str) -> str:
+    """A set of two cues on the cat: the first `cue` (its song or live input), until told."""
+    path = os.path.join(folder, "set.toml")
+    with open(path, "w") as file:
+        file.write(f"""[set]
+fade_beats = 0
+
+[[cue]]
+name = "one"
+model = {json.dumps(os.path.abspath(CAT))}
+{cue}
+
+[[cue]]
+name = "two"
+model = {json.dumps(os.path.abspath(CAT))}
+{cue}
+""")
+    return path
+
+
+def page_clock(page):
+    """(song time drawn, the page's wall clock in s) read together."""
+    t, wall = page.evaluate("""() => [window.eigendanceShow.output.app.viewer.time(),
+        performance.timeOrigin + performance.now()]""")
+    return t, wall / 1000
+
+
+def test_tapped_beats_move_the_next_cue_change_to_their_bar(browser, tmp_path):
+    folder = str(tmp_path)
+    with show_server(write_set(folder, f"song = {json.dumps(KICK)}"), folder,
+                     tmp_path / "presets") as server, sound_chromium(browser) as chromium:
+        url = server["url"]
+        page = open_output(chromium, url)
+        control(url, "play")
+        page.wait_for_function("window.eigendanceShow.output.app.transport.now() > 0.5",
+                               timeout=60_000)
+        song_beats = np.array(page.evaluate(
+            "Array.from(window.eigendanceShow.output.app.motion.spectrum.beats)"))
+        assert abs(np.median(np.diff(song_beats)) - 0.5) < 0.02  # the kick track: 120 BPM
+        # tap halfway between the song's beats: the first tap 0.8 s ahead of song time
+        t, wall = page_clock(page)
+        target = song_beats[song_beats > t + 0.8][0] + 0.25
+        first = wall + (target - t)
+        sender = SimpleUDPClient("127.0.0.1", server["osc"])
+        before = state(url)["version"]
+        sent = []
+        for i in range(4):
+            time.sleep(max(0.0, first + 0.5 * i - time.time()))
+            sent.append(time.time())
+            sender.send_message("/eigendance/tap", [])
+        deadline = time.time() + 5
+        while state(url)["version"] < before + 4 and time.time() < deadline:
+            time.sleep(0.02)  # the four taps heard
+        answer = state(url)
+        assert answer["grid"]["source"] == "tap"
+        assert answer["tempo"] == pytest.approx(120.0, abs=2.5)
+        control(url, "next")
+        page.wait_for_function("window.eigendanceShow.output.applied.some((a) => a.cue === 1)",
+                               timeout=20_000)
+        applied = page.evaluate("window.eigendanceShow.output.applied.find((a) => a.cue === 1)")
+        t, wall = page_clock(page)
+    # the taps' bar in song time: tap 0 (a downbeat) where the page drew song time t at wall
+    taps = np.array(sent) - 0.5 * np.arange(4) + (t - wall)
+    downbeat = taps.mean()
+    bars = (applied["t"] - downbeat) / 2.0  # 2 s a bar at 120 BPM
+    late = (bars - round(bars)) * 2.0
+    # within a frame of the tapped bar (and the taps' own few ms on a shared machine)
+    assert -0.03 <= late <= max(applied["frameDt"], 1 / 60) + 0.05, (late, applied)
+    off_song = np.abs(song_beats - applied["t"]).min()
+    assert off_song > 0.15, off_song  # not the song's own beat: halfway between two
+
+
+def test_live_input_beats_go_out_over_osc(browser, tmp_path):
+    folder = str(tmp_path)
+    clip = fake_clip(folder, KICK, seconds=10)
+    addresses = ("/eigendance/beat", "/eigendance/tempo", "/eigendance/bands",
+                 "/eigendance/onset")
+    with osc_listener(addresses) as (listen, received), \
+            show_server(write_set(folder, 'live = "mic"'), folder, tmp_path / "presets",
+                        listen) as server:
+        launched = browser.browser_type.launch(
+            executable_path=CHROMIUM,
+            args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"])
+        try:
+            page = open_output(launched, server["url"])
+            control(server["url"], "play")
+            page.wait_for_function("window.eigendanceShow.output.app.live.active", timeout=90_000)
+            page.wait_for_function("window.eigendanceShow.output.app.transport.now() > 9",
+                                   timeout=90_000)
+            assert page.errors == []
+        finally:
+            launched.close()
+    beats = [args for _, address, *args in list(received) if address == "/eigendance/beat"]
+    tempos = [args[0] for _, address, *args in list(received) if address == "/eigendance/tempo"]
+    bands = [args for _, address, *args in list(received) if address == "/eigendance/bands"]
+    times = np.array([t for _, t in beats])
+    assert len(times) >= 8, beats
+    assert [index for index, _ in beats] == list(range(len(beats)))  # each once, in order
+    assert np.median(np.diff(times)) == pytest.approx(0.5, abs=0.02)  # 120 BPM
+    assert tempos and tempos[-1] == pytest.approx(120.0, abs=3.0)
+    assert len(bands) > 100 and all(len(b) == 64 for b in bands)  # 30 a second
