@@ -4,18 +4,23 @@ follows, and Ableton Link's phase, followed and led, with two real peers on 127.
 from __future__ import annotations
 
 import asyncio
+import threading
 import time
 
 import pytest
+from pythonosc.dispatcher import Dispatcher
+from pythonosc.osc_server import ThreadingOSCUDPServer
 from pythonosc.udp_client import SimpleUDPClient
 from starlette.testclient import TestClient
 
+from eigendance.music.spectrogram import Spectrogram
 from eigendance.presets.store import PresetStore
 from eigendance.server.app import create_app
 from eigendance.server.serve import library_session
 from eigendance.show.beat_clock import BeatGrid
-from eigendance.show.osc import OscIn
+from eigendance.show.osc import OscIn, OscOut
 from eigendance.show.state import ShowState
+from helpers import fixture_path
 
 
 def wait_for(condition, seconds=5.0):
@@ -151,3 +156,32 @@ def test_leading_link_gives_the_session_the_tapped_phase():
     finally:
         leader.stop()
         follower.stop()
+
+
+def test_osc_out_sends_the_show_s_beats_while_its_clock_is_set():
+    spectrogram = Spectrogram.from_file(fixture_path("audio", "beatnet_808kick120bpm.mp3"))
+    received = []
+    dispatcher = Dispatcher()
+    for address in ("/eigendance/beat", "/eigendance/downbeat"):
+        dispatcher.map(address, lambda a, *args: received.append((a, *args)))
+    listener = ThreadingOSCUDPServer(("127.0.0.1", 0), dispatcher)
+    threading.Thread(target=listener.serve_forever, daemon=True).start()
+    state = ShowState()
+    sender = OscOut(state, "127.0.0.1", listener.server_address[1], lambda song: spectrogram)
+    try:
+        state.heard("kick", 0.0, True)  # song time 0 drawn now
+        start = state.song_clock["at"]
+        state.set_grid(BeatGrid(120.0, start + 0.13, 4, "tap"))  # off the song's own beats
+        time.sleep(1.4)
+        state.heard("kick", time.monotonic() - start, False)
+        time.sleep(0.05)
+    finally:
+        sender.stop()
+        listener.shutdown()
+        listener.server_close()
+    beats = [args for address, *args in received if address == "/eigendance/beat"]
+    downbeats = [args for address, *args in received if address == "/eigendance/downbeat"]
+    assert [count for count, _ in beats] == [0, 1, 2]
+    # song times 0.13, 0.63, 1.13 (float32 over OSC; the song's own beats are elsewhere)
+    assert [t for _, t in beats] == pytest.approx([0.13, 0.63, 1.13], abs=1e-3)
+    assert downbeats == [beats[0]]

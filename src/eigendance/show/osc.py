@@ -12,7 +12,9 @@ server), from the song or from the live input (its events as the page reports th
 `show.live_out`): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
 `/eigendance/onset time`, `/eigendance/tempo f` (when it changes), `/eigendance/bands` (64
 floats, 30 times a second) and, while a rig dances a song, `/eigendance/modes` (its mode
-coefficients, radians, as often).
+coefficients, radians, as often). While the show's own beat clock is set (taps, a typed tempo,
+Link: `show.beat_clock`), /beat and /downbeat are its beats (index: the count from its downbeat;
+time: the song's time) in place of the song's or the input's.
 """
 
 from __future__ import annotations
@@ -160,6 +162,7 @@ class OscOut:
         self.client = SimpleUDPClient(host, port)
         self.state, self.spectrogram_of, self.modes_of = state, spectrogram_of, modes_of
         self.live_bands_at = -1.0  # the live take's time of the last /bands sent
+        self.grid_at: float | None = None  # the show's clock when its grid was last looked at
         self.stopping = threading.Event()
         self.thread = threading.Thread(target=self._run, name="osc-out", daemon=True)
         self.thread.start()
@@ -181,14 +184,15 @@ class OscOut:
         while not self.stopping.wait(TICK):
             heard = self.now()
             if heard is None:
-                last_time = None
+                last_time = self.grid_at = None
                 continue
             song, t = heard
             if self.state.tempo is not None and self.state.tempo != tempo:
                 tempo = self.state.tempo
                 self.client.send_message(PREFIX + "tempo", float(tempo))
+            gridded = self._grid(t)  # the show's own beats, in place of the song's or the input's
             if song is None:  # a live input: what the page reported, once the picture shows it
-                self._live(t)
+                self._live(t, not gridded)
                 continue
             spectrogram = self.spectrogram_of(song)
             if spectrogram is None:
@@ -196,7 +200,7 @@ class OscOut:
             if song != last_song or last_time is None or not -SEEK < t - last_time < LATE:
                 last_time, last_song = t, song  # a new song, a seek: from here on
                 continue
-            self._events(spectrogram.rhythm, last_time, t)
+            self._events(spectrogram.rhythm, last_time, t, not gridded)
             if t >= next_bands:
                 frame = min(len(spectrogram.values) - 1, max(0, round(t * spectrogram.rate)))
                 self.client.send_message(PREFIX + "bands",
@@ -207,10 +211,27 @@ class OscOut:
                 next_bands = t + BANDS_EVERY
             last_time = max(last_time, t)
 
-    def _live(self, t: float) -> None:
-        """Send the live take's beats, onsets and bands the picture reached (`LiveHeard`)."""
-        beats, onsets, bands = self.state.live.due(t)
-        for index, time_ in beats:
+    def _grid(self, t: float) -> bool:
+        """Send the beats and downbeats of the show's beat clock (`show.beat_clock`) the clock
+        passed since the last look, at their song time; whether there is one."""
+        grid, now = self.state.grid, self.state.clock()
+        if grid is None or self.grid_at is None or not 0 <= now - self.grid_at < LATE:
+            self.grid_at = now
+            return grid is not None
+        times, counts = grid.beats_between(self.grid_at, now)
+        for when, count in zip(times, counts, strict=True):
+            event = [int(count), float(t + when - now)]  # the grid's count, the song's time
+            self.client.send_message(PREFIX + "beat", event)
+            if count % grid.beats_per_bar == 0:
+                self.client.send_message(PREFIX + "downbeat", event)
+        self.grid_at = now
+        return True
+
+    def _live(self, t: float, beats: bool = True) -> None:
+        """Send the live take's beats (unless the show's clock sends its own), onsets and bands
+        the picture reached (`LiveHeard`)."""
+        heard, onsets, bands = self.state.live.due(t)
+        for index, time_ in heard if beats else ():
             self.client.send_message(PREFIX + "beat", [index, time_])
         for time_ in onsets:
             self.client.send_message(PREFIX + "onset", time_)
@@ -218,11 +239,13 @@ class OscOut:
             self.client.send_message(PREFIX + "bands", bands)
             self.live_bands_at = t
 
-    def _events(self, rhythm, start: float, end: float) -> None:
-        """Send the beats, downbeats and onsets in (start, end]."""
+    def _events(self, rhythm, start: float, end: float, beats: bool = True) -> None:
+        """Send the beats and downbeats (unless the show's clock sends its own) and the onsets
+        in (start, end]."""
         if rhythm is None:
             return
-        for address, times in (("beat", rhythm.beats), ("downbeat", rhythm.downbeats)):
+        for address, times in (("beat", rhythm.beats), ("downbeat", rhythm.downbeats)) \
+                if beats else ():
             times = np.asarray(times, dtype=np.float64)
             for index in np.flatnonzero((times > start) & (times <= end)):
                 self.client.send_message(PREFIX + address, [int(index), float(times[index])])
