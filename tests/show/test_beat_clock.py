@@ -11,25 +11,12 @@ import pytest
 from pythonosc.dispatcher import Dispatcher
 from pythonosc.osc_server import ThreadingOSCUDPServer
 from pythonosc.udp_client import SimpleUDPClient
-from starlette.testclient import TestClient
 
 from eigendance.music.spectrogram import Spectrogram
-from eigendance.presets.store import PresetStore
-from eigendance.server.app import create_app
-from eigendance.server.serve import library_session
 from eigendance.show.beat_clock import BeatGrid
-from eigendance.show.osc import OscIn, OscOut
+from eigendance.show.osc import OscOut
 from eigendance.show.state import ShowState
-from helpers import fixture_path
-
-
-def wait_for(condition, seconds=5.0):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        if condition():
-            return True
-        time.sleep(0.005)
-    return False
+from helpers import fixture_path, wait_for
 
 
 def off_grid(t: float, anchor: float, period: float) -> float:
@@ -77,23 +64,18 @@ def test_a_typed_tempo_keeps_the_phase_and_auto_gives_the_song_back():
     assert state.tempo == 97.0
 
 
-def test_four_taps_over_osc_make_the_state_120_bpm(tmp_path):
-    with library_session(k=12) as library:
-        state = ShowState()
-        client = TestClient(create_app(library, presets=PresetStore(tmp_path), show=state),
-                            base_url="http://127.0.0.1:8765")
-        osc = OscIn(state, "127.0.0.1", 0)
-        try:
-            sender = SimpleUDPClient("127.0.0.1", osc.port)
-            start = time.monotonic()
-            for i in range(4):
-                time.sleep(max(0.0, start + 0.5 * i - time.monotonic()))
-                sender.send_message("/eigendance/tap", [])
-            assert wait_for(lambda: state.tap_count == 4)
-            answer = client.get("/api/show/state").json()
-        finally:
-            osc.stop()
+def test_four_taps_over_osc_make_the_state_120_bpm(served_show):
+    sender = SimpleUDPClient("127.0.0.1", served_show.osc.port)
+    start = time.monotonic()
+    sent = []
+    for i in range(4):
+        time.sleep(max(0.0, start + 0.5 * i - time.monotonic()))
+        sent.append(time.monotonic())
+        sender.send_message("/eigendance/tap", [])
+    assert wait_for(lambda: served_show.state.tap_count == 4)
+    answer = served_show.client.get("/api/show/state").json()
     # sleeps on a shared machine: the taps land within a few ms of 0.5 s apart
+    assert all(abs(b - a - 0.5) < 0.02 for a, b in zip(sent, sent[1:], strict=False)), sent
     assert answer["tempo"] == pytest.approx(120.0, abs=2.5)
     assert answer["grid"]["source"] == "tap" and answer["grid"]["bpm"] == answer["tempo"]
 
