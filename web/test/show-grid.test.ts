@@ -1,6 +1,7 @@
 // The show's beat clock laid on the song time (show-grid.ts), without a browser.
 import { describe, expect, it } from "vitest";
 import type { Spectrum } from "../src/bundle";
+import { beatLock, hasBeats } from "../src/filter";
 import { GridClock, gridOrigin, gridTimes } from "../src/show-grid";
 import { boundaryAfter, cueEnd } from "../src/show-timing";
 
@@ -29,6 +30,12 @@ describe("the show's beat clock", () => {
     expect([heard.tempo, heard.meter, heard.rate, heard.name]).toEqual([120, 4, 50, "kick"]);
     expect(boundaryAfter(heard, 2.0)).toBeCloseTo(3.8); // the next downbeat: 1.8 + 2 s
     expect(cueEnd(heard, { until: "bars", bars: 1 }, 1.9)).toBeCloseTo(5.8);
+    // the rigs' beat lock counts the grid's beats: whole at its beats, half way between
+    expect(hasBeats(heard)).toBe(true);
+    const onBeat = beatLock(heard, 3.8);
+    expect(onBeat.tempo).toBe(120);
+    expect(onBeat.phase - Math.round(onBeat.phase)).toBeCloseTo(0, 4);
+    expect(beatLock(heard, 4.05).phase - onBeat.phase).toBeCloseTo(0.5, 4);
     clock.frame(3.001, 11_201); // the clock runs on: the same grid
     expect(clock.wrap(song)).toBe(heard);
     clock.frame(5, 11_300); // a seek: laid again
