@@ -283,3 +283,26 @@ def test_a_cue_may_dance_a_built_in_rig_as_the_commands_take_it(tmp_path):
         read_set(tmp_path / "set.toml")
     with pytest.raises(InputError, match="nowhere"):
         read_set(write_set(tmp_path, '[[cue]]\nmodel = "nowhere"\nsong = "kick.mp3"\n'))
+
+
+def test_osc_out_sends_bands_again_when_the_song_plays_again_from_the_start():
+    spectrogram = Spectrogram.from_file(KICK)
+    received = []
+    dispatcher = Dispatcher()
+    dispatcher.map("/eigendance/bands", lambda address, *values: received.append(values))
+    listener = ThreadingOSCUDPServer(("127.0.0.1", 0), dispatcher)
+    threading.Thread(target=listener.serve_forever, daemon=True).start()
+    state = ShowState()
+    sender = OscOut(state, "127.0.0.1", listener.server_address[1], lambda song: spectrogram)
+    try:
+        state.heard("kick", 8.0, True)  # played up to 8 s …
+        assert wait_for(lambda: len(received) >= 3)
+        state.heard("kick", 8.3, False)
+        time.sleep(0.1)
+        received.clear()
+        state.heard("kick", 0.0, True)  # … then again from the start
+        assert wait_for(lambda: len(received) >= 3, 2.0), received
+    finally:
+        sender.stop()
+        listener.shutdown()
+        listener.server_close()

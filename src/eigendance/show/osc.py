@@ -198,7 +198,9 @@ class OscOut:
             if spectrogram is None:
                 continue
             if song != last_song or last_time is None or not -SEEK < t - last_time < LATE:
-                last_time, last_song = t, song  # a new song, a seek: from here on
+                # a new song, a seek, a replay: from here on (bands too: a replay from 0 does
+                # not wait for the time where the last play stopped)
+                last_time, last_song, next_bands = t, song, t
                 continue
             self._events(spectrogram.rhythm, last_time, t, not gridded)
             if t >= next_bands:
