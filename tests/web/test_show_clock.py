@@ -78,26 +78,30 @@ def test_tapped_beats_move_the_next_cue_change_to_their_bar(browser, tmp_path):
         before = state(url)["version"]
         sent = []
         for i in range(4):
-            time.sleep(max(0.0, first + 0.5 * i - time.time()))
+            time.sleep(max(0.0, first + 0.5 * i - time.time() - 0.02))
+            while time.time() < first + 0.5 * i:
+                pass  # the last 20 ms spun: a sleep may overshoot on a shared machine
             sent.append(time.time())
             sender.send_message("/eigendance/tap", [])
         deadline = time.time() + 5
         while state(url)["version"] < before + 4 and time.time() < deadline:
             time.sleep(0.02)  # the four taps heard
         answer = state(url)
-        assert np.all(np.abs(np.diff(sent) - 0.5) < 0.05), sent
+        # the taps as sent (a busy machine may still delay one): the line through them, by
+        # least squares as the design says, is the bar they tapped
+        period, first_tap = np.polyfit(np.arange(4), np.array(sent), 1)
+        assert 60 / period == pytest.approx(120.0, abs=6.0), sent
         assert answer["grid"]["source"] == "tap"
-        assert answer["tempo"] == pytest.approx(120.0, abs=2.5)
+        assert answer["tempo"] == pytest.approx(60 / period, abs=1.5)
         control(url, "next")
         page.wait_for_function("window.eigendanceShow.output.applied.some((a) => a.cue === 1)",
                                timeout=20_000)
         applied = page.evaluate("window.eigendanceShow.output.applied.find((a) => a.cue === 1)")
         t, wall = page_clock(page)
     # the taps' bar in song time: tap 0 (a downbeat) where the page drew song time t at wall
-    taps = np.array(sent) - 0.5 * np.arange(4) + (t - wall)
-    downbeat = taps.mean()
-    bars = (applied["t"] - downbeat) / 2.0  # 2 s a bar at 120 BPM
-    late = (bars - round(bars)) * 2.0
+    downbeat = first_tap + (t - wall)
+    bars = (applied["t"] - downbeat) / (4 * period)  # 4 beats a bar
+    late = (bars - round(bars)) * 4 * period
     # within a frame of the tapped bar (and the taps' own few ms on a shared machine)
     assert -0.03 <= late <= max(applied["frameDt"], 1 / 60) + 0.05, (late, applied)
     off_song = np.abs(song_beats - applied["t"]).min()
