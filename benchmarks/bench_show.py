@@ -10,9 +10,12 @@ machine's wall clock (Python's time.time() and the page's performance.timeOrigin
   - OSC → frame: until the output page starts the first frame drawn with it.
 And for OSC out: each /eigendance/beat's arrival against its song time (the page's clock, the
 report's time on the way taken off), as offsets (median, 95th percentile) and mir_eval's
-F-measure at ±70 ms. Not run by CI.
+F-measure at ±70 ms. With --live, a set whose cue is the live input (Chromium's fake microphone
+playing the kick track): each live /eigendance/beat's arrival against the moment the output
+page's picture reached it (its drawn time and wall clock, read together at the end). Not run
+by CI.
 
-    python benchmarks/bench_show.py [--messages 20] [--seconds 8]
+    python benchmarks/bench_show.py [--messages 20] [--seconds 8] [--live]
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web")
 
 from show_helpers import (  # noqa: E402 - the tests' helpers, found above
     AUTOPLAY,
+    KICK,
     control,
     open_output,
     osc_listener,
@@ -40,7 +44,7 @@ from show_helpers import (  # noqa: E402 - the tests' helpers, found above
     state,
     write_set,
 )
-from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
+from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip  # noqa: E402
 
 from eigendance.music.mapping import Mapping  # noqa: E402
 from eigendance.presets.store import Preset, PresetStore  # noqa: E402
@@ -77,10 +81,32 @@ def gain_latency(page, url, osc_port, count):
     return np.array(rows)
 
 
+def live_offsets(playwright, folder) -> np.ndarray:
+    """The live input's beats over OSC out: arrival − when the picture reached them, s."""
+    path = os.path.join(folder, "live.toml")
+    with open(path, "w") as file:
+        file.write(f'[[cue]]\nmodel = "{os.path.abspath(CAT)}"\nlive = "mic"\n')
+    clip = fake_clip(folder, KICK, seconds=10)
+    with osc_listener() as (listen, received), \
+            show_server(path, folder, os.path.join(folder, "presets"), listen) as server:
+        chromium = playwright.chromium.launch(
+            executable_path=CHROMIUM,
+            args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"])
+        page = open_output(chromium, server["url"], width=1280, height=720)
+        page.wait_for_function("window.eigendanceShow.output.app.transport.now() > 9",
+                               timeout=90_000)
+        t, wall = page.evaluate("""() => [window.eigendanceShow.output.app.viewer.time(),
+            performance.timeOrigin + performance.now()]""")
+        beats = [(at, beat) for at, _, _, beat in list(received)]
+        chromium.close()
+    return np.array([at - (wall / 1000 + beat - t) for at, beat in beats])
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--messages", type=int, default=20)
     parser.add_argument("--seconds", type=float, default=8.0)
+    parser.add_argument("--live", action="store_true", help="the live input's beats too")
     args = parser.parse_args()
     folder = tempfile.mkdtemp(prefix="bench-show-")
     presets = os.path.join(folder, "presets")
@@ -99,6 +125,7 @@ def main() -> None:
         control(url, "stop")
         beats = [(at, t) for at, address, _, t in list(received)]
         chromium.close()
+        live = live_offsets(playwright, folder) if args.live else None
     print(f"OSC /eigendance/gain → /api/show/state: {stats(rows[:, 0])}")
     print(f"OSC /eigendance/gain → output page:     {stats(rows[:, 1])}")
     print(f"OSC /eigendance/gain → its first frame: {stats(rows[:, 2])}")
@@ -110,6 +137,10 @@ def main() -> None:
         print(f"OSC out: {len(beats)} beats, arrival − song time − median: "
               f"{stats(np.abs(offsets - zero))}; F(±70 ms) = "
               f"{mir_eval.beat.f_measure(times, arrivals - zero):.3f}")
+    if live is not None and len(live):
+        print(f"OSC out, live input: {len(live)} beats, arrival − the picture's: median "
+              f"{np.median(live) * 1000:.1f} ms, p95 {np.percentile(live, 95) * 1000:.1f} ms, "
+              f"min {live.min() * 1000:.1f} ms")
     print(f"load average: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
 
 

@@ -4,6 +4,7 @@ signal dispositions it needs) and the processes a process started (Linux /proc).
 import os
 import signal
 import subprocess
+import time
 
 import pytest
 import trimesh
@@ -88,3 +89,13 @@ def descendants(pid: int) -> set[int]:
 
 def alive(pids: set[int]) -> set[int]:
     return pids & set(parents())
+
+
+def wait_for(condition, seconds=5.0) -> bool:
+    """Poll condition() every 2 ms until it holds (True) or `seconds` pass (False)."""
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        if condition():
+            return True
+        time.sleep(0.002)
+    return False

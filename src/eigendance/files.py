@@ -216,7 +216,7 @@ def finite_number(value) -> bool:
 
     Parameters
     ----------
-    value : an int or a float.
+    value : an int or a float (anything else — null, a string, a list — is not a number: False).
 
     Returns
     -------
@@ -224,7 +224,7 @@ def finite_number(value) -> bool:
     """
     try:
         return math.isfinite(value)
-    except OverflowError:
+    except (OverflowError, TypeError):
         return False
 
 

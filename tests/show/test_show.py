@@ -13,7 +13,6 @@ import pytest
 from pythonosc.dispatcher import Dispatcher
 from pythonosc.osc_server import ThreadingOSCUDPServer
 from pythonosc.udp_client import SimpleUDPClient
-from starlette.testclient import TestClient
 
 from eigendance.cli.main import main
 from eigendance.errors import InputError
@@ -21,13 +20,12 @@ from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import load_rig
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.presets.store import PresetStore
-from eigendance.server.app import create_app
 from eigendance.server.serve import library_session
 from eigendance.show.osc import OscIn, OscOut, parse_address
-from eigendance.show.session import ModeAmplitudes
+from eigendance.show.session import ModeAmplitudes, cue_items
 from eigendance.show.setlist import read_set
 from eigendance.show.state import ShowState
-from helpers import fixture_path
+from helpers import fixture_path, wait_for
 
 CAT = fixture_path("meshes", "teapot.obj")
 KICK = fixture_path("audio", "beatnet_808kick120bpm.mp3")
@@ -138,39 +136,23 @@ def test_slots_and_controls(tmp_path):
     assert state.act("blackout")["blackout"] is False
 
 
-def wait_for(condition, seconds=5.0):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        if condition():
-            return True
-        time.sleep(0.002)
-    return False
-
-
-def test_an_osc_message_changes_the_gain_the_api_reports(tmp_path):
-    with library_session(k=12) as library:
-        state = ShowState()
-        client = TestClient(create_app(library, presets=PresetStore(tmp_path), show=state),
-                            base_url="http://127.0.0.1:8765")
-        osc = OscIn(state, "127.0.0.1", 0)
-        try:
-            sender = SimpleUDPClient("127.0.0.1", osc.port)
-            delays = []
-            for gain in (2.5, 0.5, 3.0, 1.25, 2.0):
-                sent = time.monotonic()
-                sender.send_message("/eigendance/gain", gain)
-                assert wait_for(lambda g=gain: client.get("/api/show/state").json()["gain"] == g)
-                delays.append(time.monotonic() - sent)
-            # the bound (200 ms) on the best of five: one busy moment of the shared
-            # machine may delay any single message
-            assert min(delays) < 0.2, delays
-            sender.send_message("/eigendance/preset", "Kick")
-            sender.send_message("/eigendance/control/smoothing", 0.25)
-            sender.send_message("/eigendance/play", [])
-            assert wait_for(lambda: state.playing and state.preset == "Kick"
-                            and state.controls == {"smoothing": 0.25})
-        finally:
-            osc.stop()
+def test_an_osc_message_changes_the_gain_the_api_reports(served_show):
+    state, client = served_show.state, served_show.client
+    sender = SimpleUDPClient("127.0.0.1", served_show.osc.port)
+    delays = []
+    for gain in (2.5, 0.5, 3.0, 1.25, 2.0):
+        sent = time.monotonic()
+        sender.send_message("/eigendance/gain", gain)
+        assert wait_for(lambda g=gain: client.get("/api/show/state").json()["gain"] == g)
+        delays.append(time.monotonic() - sent)
+    # the bound (200 ms) on the best of five: one busy moment of the shared machine may
+    # delay any single message
+    assert min(delays) < 0.2, delays
+    sender.send_message("/eigendance/preset", "Kick")
+    sender.send_message("/eigendance/control/smoothing", 0.25)
+    sender.send_message("/eigendance/play", [])
+    assert wait_for(lambda: state.playing and state.preset == "Kick"
+                    and state.controls == {"smoothing": 0.25})
 
 
 def test_malformed_osc_is_ignored_with_one_line(capfd):
@@ -286,3 +268,41 @@ def test_show_with_a_bad_set_is_one_line(tmp_path, capsys):
     assert main(["show", str(tmp_path / "none.toml")]) == 1
     assert main(["serve", "--osc-out", "nowhere"]) == 1
     assert "HOST:PORT" in capsys.readouterr().err
+
+
+def test_a_cue_may_dance_a_built_in_rig_as_the_commands_take_it(tmp_path):
+    setlist = read_set(write_set(tmp_path, '[[cue]]\nmodel = "hand"\nsong = "kick.mp3"\n'))
+    assert setlist.cues[0].model == "hand"
+    with library_session(k=12) as library:
+        items = cue_items(library, setlist)
+        rig = library.get("rig", items[0]["model"]["id"])
+        assert (items[0]["model"]["kind"], rig.origin, rig.source) == ("rig", "built-in", "hand")
+        assert library.add_path("hand") is rig  # `serve hand` too
+    (tmp_path / "hand").write_bytes(b"")  # a file of that name beside the set is the file
+    with pytest.raises(InputError, match="hand"):
+        read_set(tmp_path / "set.toml")
+    with pytest.raises(InputError, match="nowhere"):
+        read_set(write_set(tmp_path, '[[cue]]\nmodel = "nowhere"\nsong = "kick.mp3"\n'))
+
+
+def test_osc_out_sends_bands_again_when_the_song_plays_again_from_the_start():
+    spectrogram = Spectrogram.from_file(KICK)
+    received = []
+    dispatcher = Dispatcher()
+    dispatcher.map("/eigendance/bands", lambda address, *values: received.append(values))
+    listener = ThreadingOSCUDPServer(("127.0.0.1", 0), dispatcher)
+    threading.Thread(target=listener.serve_forever, daemon=True).start()
+    state = ShowState()
+    sender = OscOut(state, "127.0.0.1", listener.server_address[1], lambda song: spectrogram)
+    try:
+        state.heard("kick", 8.0, True)  # played up to 8 s …
+        assert wait_for(lambda: len(received) >= 3)
+        state.heard("kick", 8.3, False)
+        time.sleep(0.1)
+        received.clear()
+        state.heard("kick", 0.0, True)  # … then again from the start
+        assert wait_for(lambda: len(received) >= 3, 2.0), received
+    finally:
+        sender.stop()
+        listener.shutdown()
+        listener.server_close()

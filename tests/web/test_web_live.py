@@ -26,38 +26,18 @@ import mir_eval
 import numpy as np
 import pytest
 import soundfile
-from scipy.signal import resample_poly
-from web_helpers import CHROMIUM, CHROMIUM_ARGS, running_server
+from web_helpers import CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip, running_server
 
-from eigendance.music.decode import mono, read_audio
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
 
 pytestmark = pytest.mark.web
 CLIP = os.path.join(os.path.dirname(__file__), "..", "fixtures", "audio",
                     "kevin_macleod_vibe_ace_0s-21s.ogg")
-FAKE = ["--use-fake-device-for-media-stream", "--autoplay-policy=no-user-gesture-required"]
-GRANT = "--use-fake-ui-for-media-stream"
 PARITY = 0.03  # the issue's bound on |live − offline| per band
 START = 25  # frames (0.25 s) after the stream's start: before, its first block holds no clip
 SEGMENT = 50  # frames re-aligned at once where the capture slipped
 SLIP = 30  # frames left out after a slip (a window and 3.75 smoothing time constants)
-
-
-def fake_clip(folder, rate=44100, seconds=None, source=CLIP):
-    """The real clip (22.05 kHz) as a 16-bit WAV at `rate` (Chromium's capture rate: 44.1 kHz,
-    so it reaches the page unresampled), the file the fake microphone plays; it starts with
-    half a second of silence, as a room does before the music (the capture starts a few
-    chunks into the file, so the clip itself starts whole)."""
-    samples, sample_rate = read_audio(source)
-    samples = mono(samples)
-    if seconds:
-        samples = samples[:int(seconds * sample_rate)]
-    samples = np.concatenate([np.zeros(sample_rate // 2), samples])
-    samples = resample_poly(samples, rate, sample_rate)
-    path = os.path.join(folder, f"{os.path.basename(source)}-{rate}.wav")
-    soundfile.write(path, samples, rate, subtype="PCM_16")
-    return path
 
 
 @contextlib.contextmanager
@@ -131,7 +111,7 @@ def aligned(clip, live, dropouts, rate=44100):
 
 @pytest.fixture(scope="module")
 def clip(tmp_path_factory):
-    return fake_clip(str(tmp_path_factory.mktemp("live")), seconds=12)
+    return fake_clip(str(tmp_path_factory.mktemp("live")), CLIP, seconds=12)
 
 
 def test_live_input_matches_the_offline_analysis(browser, live_server, clip, tmp_path):
@@ -218,7 +198,7 @@ def test_live_tempo_of_a_real_song_is_the_offline_tempo(browser, live_server, tm
     """A real country song (whose tempo librosa's tracker finds at 72 BPM on this excerpt, and
     a tracker on a 100-frames-per-second envelope at 144): after 20 s the page's tempo is the
     offline tempo of the same samples within 4%, not its double or half."""
-    clip = fake_clip(str(tmp_path), seconds=22, source=COUNTRY)
+    clip = fake_clip(str(tmp_path), COUNTRY, seconds=22)
     with chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"],
                   live_server["url"], "?test&source=mic&size=1&scale=0.3") as page:
         final = wait_for(page, lambda s: s["seconds"] > 20.5, 60)
@@ -262,7 +242,7 @@ def test_nothing_gets_stuck(browser, live_server, tmp_path):
         assert page.evaluate(start) is False
         error = page.evaluate("window.eigendance.info().error")
         assert "permission denied" in error, error
-    clip = fake_clip(str(tmp_path), 96000, seconds=4)
+    clip = fake_clip(str(tmp_path), CLIP, 96000, seconds=4)
     with chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"],
                   url) as page:
         assert page.evaluate(start) is True

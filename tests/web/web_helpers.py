@@ -115,3 +115,30 @@ def rig_ids_at(url) -> dict:
     """{rig name: id} of the library of the server at url."""
     with urllib.request.urlopen(url + "api/library") as answer:
         return {rig["name"]: rig["id"] for rig in json.load(answer)["rigs"]}
+
+
+FAKE = ["--use-fake-device-for-media-stream", "--autoplay-policy=no-user-gesture-required"]
+GRANT = "--use-fake-ui-for-media-stream"  # Chromium's flags of a fake microphone, allowed
+
+
+def fake_clip(folder, source, rate=44100, seconds=None):
+    """A real clip (the first `seconds` of `source`) as a 16-bit WAV at `rate` (Chromium's
+    capture rate: 44.1 kHz, so it reaches the page unresampled), the file the fake microphone
+    plays; it starts with
+    half a second of silence, as a room does before the music (the capture starts a few
+    chunks into the file, so the clip itself starts whole)."""
+    import numpy as np
+    import soundfile
+    from scipy.signal import resample_poly
+
+    from eigendance.music.decode import mono, read_audio
+
+    samples, sample_rate = read_audio(source)
+    samples = mono(samples)
+    if seconds:
+        samples = samples[:int(seconds * sample_rate)]
+    samples = np.concatenate([np.zeros(sample_rate // 2), samples])
+    samples = resample_poly(samples, rate, sample_rate)
+    path = os.path.join(folder, f"{os.path.basename(source)}-{rate}.wav")
+    soundfile.write(path, samples, rate, subtype="PCM_16")
+    return path

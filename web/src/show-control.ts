@@ -8,7 +8,8 @@ import type { ShowState } from "./show-timing";
 /** The performer's keys, listed in the help (they leave the page's own keys alone). */
 export const SHOW_KEYS: [string, string, string][] = [
   ["PageDown", ".", "next cue"], ["PageUp", ",", "previous cue"],
-  ["1", "9", "preset slots 1–9"], ["T", "", "tap tempo"], ["K", "", "blackout"],
+  ["1", "9", "preset slots 1–9"], ["T", "", "tap tempo (the show's beats)"],
+  ["A", "", "auto: the song's own beats again"], ["K", "", "blackout"],
   ["L", "", "loop this cue"], ["O", "", "the output page (/show)"],
 ];
 
@@ -44,7 +45,8 @@ export class ShowPanel {
       <div class="row">
         <button id="show-play" title="play / stop the show">▶ play</button>
         <button id="show-blackout" title="black output (K)">blackout</button>
-        <button id="show-tap" title="tap the tempo (T)">tap</button><span id="show-tempo"></span>
+        <button id="show-tap" title="tap the tempo: the show's beats, from the first tap's downbeat (T)">tap</button>
+        <button id="show-auto" title="the song's own beats again, after tapping (A)">auto</button><span id="show-tempo"></span>
       </div>
       <div class="row"><label title="the show's gain: how far every dance moves">gain
         <input id="show-gain" type="range" min="0" max="4" step="0.01" value="1"></label>
@@ -86,7 +88,9 @@ export class ShowPanel {
     byId("show-loop-set").classList.toggle("active", state.loop_set);
     byId("show-blackout").classList.toggle("active", state.blackout);
     byId("show-play").textContent = state.playing ? "■ stop" : "▶ play";
-    byId("show-tempo").textContent = state.tempo ? `${state.tempo.toFixed(1)} BPM` : "";
+    byId("show-tempo").textContent = state.tempo
+      ? `${state.tempo.toFixed(1)} BPM${state.grid ? ` · ${state.grid.source}` : ""}` : "";
+    byId("show-auto").classList.toggle("active", state.grid === null);
     const gain = byId("show-gain") as HTMLInputElement;
     if (document.activeElement !== gain) gain.value = String(state.gain);
     const fade = byId("show-fade") as HTMLInputElement;
@@ -102,6 +106,7 @@ export class ShowPanel {
     click("show-loop-set", () => void control("loop_set"));
     click("show-blackout", () => void control("blackout"));
     click("show-tap", () => void control("tap"));
+    click("show-auto", () => void control("auto"));
     click("show-play", () => void control(this.state?.playing ? "stop" : "play"));
     const gain = this.element.querySelector<HTMLInputElement>("#show-gain")!;
     gain.addEventListener("input", () => void control("gain", Number(gain.value)));
@@ -120,7 +125,8 @@ export class ShowPanel {
     const actions: Record<string, () => void> = {
       PageDown: () => void control("next"), ".": () => void control("next"),
       PageUp: () => void control("prev"), ",": () => void control("prev"),
-      t: () => void control("tap"), k: () => void control("blackout"),
+      t: () => void control("tap"), a: () => void control("auto"),
+      k: () => void control("blackout"),
       l: () => void control("loop_cue"), o: () => void window.open("show", "eigendance-show"),
     };
     const action = /^[1-9]$/.test(key) ? () => void control("slot", Number(key)) : actions[key];

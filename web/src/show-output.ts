@@ -5,7 +5,10 @@
 // (OSC out follows it), and ends a cue after its bars.
 import type { App } from "./app";
 import * as api from "./api";
+import type { Spectrum } from "./bundle";
 import type { Mapping, Prepared } from "./filter";
+import { GridClock } from "./show-grid";
+import { BANDS_PER_SECOND, LiveReporter, isLiveSpectrum } from "./show-live";
 import { boundaryAfter, cueEnd, fadeWeight } from "./show-timing";
 import type { ShowState } from "./show-timing";
 import "./show.css";
@@ -49,6 +52,12 @@ export class ShowOutput {
   private lastT = 0;
   private clockAt = 0;
   readonly applied: Applied[] = [];
+  /** the show's own beat clock (taps, a typed tempo, Link) over the song's beats */
+  readonly clock = new GridClock();
+  /** a live input's events for OSC out, reported with the clock */
+  private readonly live = new LiveReporter();
+  /** the spectrum of the song or live take, without the show's beats */
+  private base: Spectrum | null = null;
   /** each change of the show's gain: when the page heard it and drew its first frame (ms since
    * 1970; the benchmark's latency from an OSC message to the changed frame) */
   readonly gains: { gain: number; heard: number; drawn: number | null }[] = [];
@@ -74,6 +83,9 @@ export class ShowOutput {
     const clock = app.transport;
     const now = clock.now.bind(clock);
     clock.now = () => Math.max(0, now() - this.options.offset);
+    this.base = app.motion.spectrum; // every part reads the spectrum with the show's beats
+    Object.defineProperty(app.motion, "spectrum", { configurable: true,
+      get: () => this.clock.wrap(this.base), set: (spectrum) => { this.base = spectrum; } });
     const weights = app.motion.weights.bind(app.motion);
     app.motion.weights = (prepared: Prepared, t: number) => this.weights(weights, prepared, t);
     const onFrame = app.viewer.onFrame;
@@ -95,6 +107,7 @@ export class ShowOutput {
     this.state = state;
     const app = this.app;
     document.body.classList.toggle("show-blackout", state.blackout);
+    this.clock.set(state.grid);
     if (before && before.gain !== state.gain) {
       this.gains.push({ gain: state.gain, heard: performance.timeOrigin + performance.now(),
         drawn: null });
@@ -160,6 +173,7 @@ export class ShowOutput {
     const frameDt = this.lastFrame ? (wall - this.lastFrame) / 1000 : 0;
     this.lastFrame = wall;
     if (this.lastT > t + 0.5) this.cueStart = t; // the song started again
+    if (this.app.transport.playing) this.clock.frame(t, performance.timeOrigin + wall);
     this.lastT = t;
     const last = this.gains[this.gains.length - 1];
     if (last && last.drawn === null) last.drawn = performance.timeOrigin + wall;
@@ -169,13 +183,17 @@ export class ShowOutput {
       this.pending = null;
       void this.apply(pending, t, frameDt);
     }
-    if (wall - this.clockAt > CLOCK_EVERY_MS) {
+    const base = this.base;
+    const live = isLiveSpectrum(base) && this.app.live.active ? base : null;
+    // a live input's report goes as soon as there is a beat or an onset, its bands 30 a second
+    const every = live ? 1000 / BANDS_PER_SECOND : CLOCK_EVERY_MS;
+    if (wall - this.clockAt > every || (live && this.live.pending(live))) {
       this.clockAt = wall;
       const spectrum = this.app.motion.spectrum;
       void fetch("api/show/clock", { method: "POST", headers: { "Content-Type": "application/json" },
-        body: JSON.stringify({ song: this.app.library.songId || null, time: t,
+        body: JSON.stringify({ song: live ? null : this.app.library.songId || null, time: t,
           playing: this.app.transport.playing, tempo: spectrum?.tempo || null,
-          wall: performance.timeOrigin + wall }) })
+          wall: performance.timeOrigin + wall, live: live ? this.live.report(live) : null }) })
         .catch(() => {});
     }
   }

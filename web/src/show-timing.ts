@@ -2,6 +2,7 @@
 // rhythm, or its beats where it has no bars, or at once without beats — and for how long a cue
 // lasts (bars, or to the next section). Pure functions of the song's spectrum, for Vitest.
 import type { Spectrum } from "./bundle";
+import type { Grid } from "./show-grid";
 
 /** The server's show state (`GET api/show/state`). */
 export interface ShowCue {
@@ -12,6 +13,8 @@ export interface ShowCue {
 export interface ShowState {
   set: string | null; cues: ShowCue[]; cue: number | null; next: number | null;
   preset: string | null; gain: number; playing: boolean; tempo: number | null;
+  /** the show's own beat clock (show-grid.ts), or null: the song's beats */
+  grid: Grid | null;
   blackout: boolean; loop_set: boolean; loop_cue: boolean | null; fade_beats: number;
   controls: Record<string, number>; version: number;
 }

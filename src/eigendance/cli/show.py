@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from eigendance.cli.web import add_server_options, serve
+from eigendance.server.serve import demo_paths
 from eigendance.show.setlist import read_set
 
 
@@ -28,4 +29,7 @@ def run_show(args) -> None:
     args : the parsed command line.
     """
     setlist = read_set(args.set)
-    serve(args, list, "eigendance show: control page {url}, output {url}show", setlist=setlist)
+    # a set of live inputs only: the demo's music in the library too, so that the page starts
+    # (its galleries are calibrated on a song) before the live input takes over
+    songs = list if any(cue.song for cue in setlist.cues) else lambda: demo_paths()[1:]
+    serve(args, songs, "eigendance show: control page {url}, output {url}show", setlist=setlist)

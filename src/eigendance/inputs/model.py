@@ -62,18 +62,37 @@ class Model:
     basis: HarmonicBasis | None = None
 
 
-def built_in(source: str | os.PathLike) -> bool:
+def built_in(source: str | os.PathLike, folder: str | os.PathLike = "") -> bool:
     """Whether `source` names a built-in rig (and no file of that name exists).
 
     Parameters
     ----------
     source : a path or a rig's name.
+    folder : where a relative path is (a set list's folder; default: the working folder).
 
     Returns
     -------
     bool.
     """
-    return os.fspath(source) in SAMPLE_RIGS and not os.path.exists(source)
+    return os.fspath(source) in SAMPLE_RIGS and not os.path.exists(os.path.join(folder, source))
+
+
+def model_source(source: str, folder: str | os.PathLike) -> str:
+    """A model named in a file (a set list's cue): a built-in rig's name, as the commands take
+    it, else the file relative to `folder`.
+
+    Parameters
+    ----------
+    source : what the file says.
+    folder : the file's folder.
+
+    Returns
+    -------
+    The rig's name, or the file's absolute path; InputError for a file that is not there.
+    """
+    if built_in(source, folder):
+        return source
+    return os.path.abspath(check_readable(os.path.join(folder, source)))
 
 
 def classify(path: str | os.PathLike, name: str | None = None) -> tuple[str, object]:

@@ -23,6 +23,7 @@ import threading
 
 from eigendance.errors import InputError, InternalError
 from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.inputs.model import built_in
 from eigendance.modal.sample_rigs import SAMPLE_RIGS
 from eigendance.server import rigs, workers
 from eigendance.server.binary import appearance_bundle, basis_bundle
@@ -77,7 +78,7 @@ class Library:
 
         Parameters
         ----------
-        path : the file.
+        path : the file, or a built-in rig's name (as the commands take it: its item).
         name : how the page calls it (default: the file's name).
         k : harmonics of a mesh's basis (default the library's).
 
@@ -85,10 +86,17 @@ class Library:
         -------
         The item: new, or the one already there with the same content.
         """
-        item = self.intake.add_path(path, name, k)
+        item = self._built_in(path) or self.intake.add_path(path, name, k)
         if self.first is None and isinstance(item, MeshItem | RigItem):
             self.first = {"kind": "mesh" if isinstance(item, MeshItem) else "rig", "id": item.id}
         return item
+
+    def _built_in(self, source: str) -> RigItem | None:
+        """The built-in rig `source` names (as the commands take it), or None."""
+        if not built_in(source):
+            return None
+        return next((item for item in self.rigs.values()
+                     if item.origin == "built-in" and item.source == source), None)
 
     def as_json(self) -> dict:
         """The library as `GET /api/library` answers it.

@@ -113,7 +113,8 @@ async def show_clock(request: Request):
     ----------
     request : JSON {"song": id or null, "time": s, "playing": bool, "tempo": BPM or null,
         "wall": when the page drew it, ms since 1970 (same machine: the report's time on the
-        way is taken off; a clock more than a second off is not believed)}.
+        way is taken off; a clock more than a second off is not believed), "live": a live
+        input's new events (`show.live_out.LiveHeard.report`), optional}.
 
     Returns
     -------
@@ -124,6 +125,8 @@ async def show_clock(request: Request):
             isinstance(data.get("time"), bool) or not isinstance(data.get("playing"), bool):
         raise InputError("send {\"song\", \"time\": seconds, \"playing\": true or false}")
     song = data.get("song")
+    if data.get("live") is not None:
+        show_of(request).live.report(data["live"])
     tempo, wall = data.get("tempo"), data.get("wall")
     age = time.time() - wall / 1000 if finite_number(wall) and not isinstance(wall, bool) else 0
     show_of(request).heard(song if isinstance(song, str) else None, float(data["time"]),

@@ -1,8 +1,12 @@
 """Ableton Link (aalink, an optional extra: `pip install eigendance[link]`; docs/design.md#show).
 
-`follow`: the show's tempo is the Link session's (another program leads). `lead`: the show's
-tempo (tapped, set, or the song's) becomes the session's. Link runs on an asyncio loop of its
-own in a daemon thread; the show's state is read and changed through `ShowState.act`.
+`follow`: the show's beat clock is the Link session's, tempo and phase (another program
+leads): its beats and downbeats (quantum = the bar's beats) are the ones cue changes,
+crossfades and the dance's beat lock follow; a tap changes the session's tempo, as any Link
+peer may. `lead`: the show's beat clock (tapped or typed) becomes the session's, tempo and
+phase (its downbeat on the session's bar); without one, the song's tempo. Link runs on an
+asyncio loop of its own in a daemon thread; the show's state is read and changed through
+`ShowState`.
 """
 
 from __future__ import annotations
@@ -11,11 +15,13 @@ import asyncio
 import threading
 
 from eigendance.errors import InputError
-from eigendance.show.state import ShowState
+from eigendance.show.beat_clock import BEATS_PER_BAR, BeatGrid
+from eigendance.show.state import TEMPO_RANGE, ShowState
 
 MODES = ("follow", "lead")
-POLL = 0.05  # s between looks at the session's tempo
+POLL = 0.05  # s between looks at the session
 CHANGE = 0.01  # BPM: smaller differences are the same tempo
+PHASE = 0.005  # s: a lead's phase further off the session's is forced on it
 
 
 def link_class():
@@ -33,7 +39,7 @@ def link_class():
 
 
 class LinkSync:
-    """A Link peer that follows or leads the show's tempo.
+    """A Link peer that follows or leads the show's beat clock.
 
     Parameters
     ----------
@@ -49,27 +55,50 @@ class LinkSync:
         self.stopping = threading.Event()
         self.ready = threading.Event()
         self.link = None
+        self.sent: BeatGrid | None = None  # the tapped grid last given to the session
         self.thread = threading.Thread(target=self._run, name="link", daemon=True)
         self.thread.start()
         self.ready.wait(5)
 
     def _run(self) -> None:
         asyncio.set_event_loop(self.loop)
-        self.loop.run_until_complete(self._follow())
+        self.loop.run_until_complete(self._session())
 
-    async def _follow(self) -> None:
+    async def _session(self) -> None:
         self.link = self.Link(self.state.tempo or 120.0)  # on this thread's running loop
+        self.link.quantum = BEATS_PER_BAR
         self.link.enabled = True
         self.ready.set()
         while not self.stopping.is_set():
-            ours, theirs = self.state.tempo, float(self.link.tempo)
-            if ours is None or abs(ours - theirs) > CHANGE:
-                if self.mode == "follow" or ours is None:
-                    self.state.act("tempo", min(max(theirs, 20.0), 400.0))
-                else:
-                    self.link.tempo = ours
+            if self.mode == "follow":
+                self._follow()
+            else:
+                self._lead()
             await asyncio.sleep(POLL)
         self.link.enabled = False
+
+    def _follow(self) -> None:
+        link, grid = self.link, self.state.grid
+        if grid is not None and grid.source == "tap" and grid is not self.sent:
+            link.tempo = grid.bpm  # tapped here: the session's new tempo
+            self.sent = grid
+        bpm = min(max(float(link.tempo), TEMPO_RANGE[0]), TEMPO_RANGE[1])
+        beat, now = float(link.beat), self.state.clock()  # read together: beat b is now
+        self.state.set_grid(BeatGrid(bpm, now - beat * 60.0 / bpm, BEATS_PER_BAR, "link"))
+
+    def _lead(self) -> None:
+        link, grid, ours = self.link, self.state.grid, self.state.tempo
+        if grid is not None:
+            # the session's tempo and phase are the show's: set again when they drift (another
+            # peer, or a session met that kept its own)
+            if abs(grid.bpm - float(link.tempo)) > CHANGE:
+                link.tempo = grid.bpm
+            phase, now = float(link.phase), self.state.clock()
+            ahead = (phase - grid.beat_at(now)) % BEATS_PER_BAR
+            if min(ahead, BEATS_PER_BAR - ahead) * grid.period > PHASE:
+                link.force_beat(grid.beat_at(self.state.clock()))
+        elif ours is not None and abs(ours - float(link.tempo)) > CHANGE:
+            link.tempo = ours  # the song's tempo (its phase is the page's: not sent)
 
     @property
     def peers(self) -> int:

@@ -1,17 +1,20 @@
 """OSC in and out (python-osc; docs/design.md#show).
 
 In: a UDP socket (127.0.0.1 unless told) whose messages become `ShowState.act` calls:
-`/eigendance/gain f`, `/preset s`, `/next`, `/prev`, `/tap`, `/play`, `/stop`, `/blackout [i]`,
-`/cue i`, `/slot i`, `/fade f`, `/tempo f`, and `/eigendance/control/<id> f` for each slider or
-switch of the page (its element id: `gain`, `smoothing`, `facets`, `rig-scale`, …). A packet
-that does not parse, an unknown address or a bad value is dropped with one line on stderr (at
-most one a second, with the count of the others).
+`/eigendance/gain f`, `/preset s`, `/next`, `/prev`, `/tap`, `/auto`, `/play`, `/stop`,
+`/blackout [i]`, `/cue i`, `/slot i`, `/fade f`, `/tempo f`, and `/eigendance/control/<id> f`
+for each slider or switch of the page (its element id: `gain`, `smoothing`, `facets`,
+`rig-scale`, …). A packet that does not parse, an unknown address or a bad value is dropped
+with one line on stderr (at most one a second, with the count of the others).
 
 Out: what the dance hears, at the song time the output page draws (its clock, reported to the
-server): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
+server), from the song or from the live input (its events as the page reports them:
+`show.live_out`): `/eigendance/beat (index, time)`, `/eigendance/downbeat (index, time)`,
 `/eigendance/onset time`, `/eigendance/tempo f` (when it changes), `/eigendance/bands` (64
-floats, 30 times a second) and, while a rig dances, `/eigendance/modes` (its mode coefficients,
-radians, as often).
+floats, 30 times a second) and, while a rig dances a song, `/eigendance/modes` (its mode
+coefficients, radians, as often). While the show's own beat clock is set (taps, a typed tempo,
+Link: `show.beat_clock`), /beat and /downbeat are its beats (index: the count from its downbeat;
+time: the song's time) in place of the song's or the input's.
 """
 
 from __future__ import annotations
@@ -30,8 +33,8 @@ from eigendance.show.state import ShowState
 
 PREFIX = "/eigendance/"
 # address → (action, how many arguments it takes at most)
-ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "play": 0, "stop": 0,
-           "blackout": 1, "cue": 1, "slot": 1, "fade": 1, "tempo": 1, "loop_cue": 1,
+ACTIONS = {"gain": 1, "preset": 1, "next": 0, "prev": 0, "tap": 0, "auto": 0, "play": 0,
+           "stop": 0, "blackout": 1, "cue": 1, "slot": 1, "fade": 1, "tempo": 1, "loop_cue": 1,
            "loop_set": 1}
 BANDS_EVERY = 1 / 30  # s between /bands messages
 TICK = 0.004  # s: how finely the sender waits for the next event
@@ -158,6 +161,8 @@ class OscOut:
     def __init__(self, state: ShowState, host: str, port: int, spectrogram_of, modes_of=None):
         self.client = SimpleUDPClient(host, port)
         self.state, self.spectrogram_of, self.modes_of = state, spectrogram_of, modes_of
+        self.live_bands_at = -1.0  # the live take's time of the last /bands sent
+        self.grid_at: float | None = None  # the show's clock when its grid was last looked at
         self.stopping = threading.Event()
         self.thread = threading.Thread(target=self._run, name="osc-out", daemon=True)
         self.thread.start()
@@ -179,16 +184,25 @@ class OscOut:
         while not self.stopping.wait(TICK):
             heard = self.now()
             if heard is None:
-                last_time = None
+                last_time = self.grid_at = None
                 continue
             song, t = heard
-            spectrogram = self.spectrogram_of(song) if song else None
+            if self.state.tempo is not None and self.state.tempo != tempo:
+                tempo = self.state.tempo
+                self.client.send_message(PREFIX + "tempo", float(tempo))
+            gridded = self._grid(t)  # the show's own beats, in place of the song's or the input's
+            if song is None:  # a live input: what the page reported, once the picture shows it
+                self._live(t, not gridded)
+                continue
+            spectrogram = self.spectrogram_of(song)
             if spectrogram is None:
                 continue
             if song != last_song or last_time is None or not -SEEK < t - last_time < LATE:
-                last_time, last_song = t, song  # a new song, a seek: from here on
+                # a new song, a seek, a replay: from here on (bands too: a replay from 0 does
+                # not wait for the time where the last play stopped)
+                last_time, last_song, next_bands = t, song, t
                 continue
-            self._events(spectrogram.rhythm, last_time, t)
+            self._events(spectrogram.rhythm, last_time, t, not gridded)
             if t >= next_bands:
                 frame = min(len(spectrogram.values) - 1, max(0, round(t * spectrogram.rate)))
                 self.client.send_message(PREFIX + "bands",
@@ -197,16 +211,43 @@ class OscOut:
                 if modes is not None:
                     self.client.send_message(PREFIX + "modes", [float(c) for c in modes])
                 next_bands = t + BANDS_EVERY
-            if self.state.tempo is not None and self.state.tempo != tempo:
-                tempo = self.state.tempo
-                self.client.send_message(PREFIX + "tempo", float(tempo))
             last_time = max(last_time, t)
 
-    def _events(self, rhythm, start: float, end: float) -> None:
-        """Send the beats, downbeats and onsets in (start, end]."""
+    def _grid(self, t: float) -> bool:
+        """Send the beats and downbeats of the show's beat clock (`show.beat_clock`) the clock
+        passed since the last look, at their song time; whether there is one."""
+        grid, now = self.state.grid, self.state.clock()
+        if grid is None or self.grid_at is None or not 0 <= now - self.grid_at < LATE:
+            self.grid_at = now
+            return grid is not None
+        times, counts = grid.beats_between(self.grid_at, now)
+        for when, count in zip(times, counts, strict=True):
+            event = [int(count), float(t + when - now)]  # the grid's count, the song's time
+            self.client.send_message(PREFIX + "beat", event)
+            if count % grid.beats_per_bar == 0:
+                self.client.send_message(PREFIX + "downbeat", event)
+        self.grid_at = now
+        return True
+
+    def _live(self, t: float, beats: bool = True) -> None:
+        """Send the live take's beats (unless the show's clock sends its own), onsets and bands
+        the picture reached (`LiveHeard`)."""
+        heard, onsets, bands = self.state.live.due(t)
+        for index, time_ in heard if beats else ():
+            self.client.send_message(PREFIX + "beat", [index, time_])
+        for time_ in onsets:
+            self.client.send_message(PREFIX + "onset", time_)
+        if bands is not None and abs(t - self.live_bands_at) >= BANDS_EVERY:  # a new take: back
+            self.client.send_message(PREFIX + "bands", bands)
+            self.live_bands_at = t
+
+    def _events(self, rhythm, start: float, end: float, beats: bool = True) -> None:
+        """Send the beats and downbeats (unless the show's clock sends its own) and the onsets
+        in (start, end]."""
         if rhythm is None:
             return
-        for address, times in (("beat", rhythm.beats), ("downbeat", rhythm.downbeats)):
+        for address, times in (("beat", rhythm.beats), ("downbeat", rhythm.downbeats)) \
+                if beats else ():
             times = np.asarray(times, dtype=np.float64)
             for index in np.flatnonzero((times > start) & (times <= end)):
                 self.client.send_message(PREFIX + address, [int(index), float(times[index])])

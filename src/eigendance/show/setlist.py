@@ -9,7 +9,8 @@ slots = ["Kick", "Drift"]   # presets on the keys 1–9 (default: the favourites
 
 [[cue]]
 name = "intro"         # optional (default: the preset's or the model's name)
-model = "cat.obj"      # a mesh or rig file, relative to the set file
+model = "cat.obj"      # a mesh or rig file, relative to the set file, or a built-in rig
+                       # ("hand", "chain", "loop4", …: what the commands take)
 song = "kick.mp3"      # or live = "mic" / "tab"
 preset = "Kick"        # a preset's name (optional: the model's first gallery tile)
 bars = 8               # or until = "section" / "told" (the default)
@@ -25,6 +26,7 @@ from dataclasses import dataclass, field
 
 from eigendance.errors import InputError, one_line
 from eigendance.files import check_readable, read_toml
+from eigendance.inputs.model import model_source
 from eigendance.presets.store import check_name
 
 UNTIL = ("bars", "section", "told")
@@ -39,7 +41,7 @@ class Cue:
     Parameters
     ----------
     name : shown on the control page.
-    model : the model file (absolute path).
+    model : the model file (absolute path), or a built-in rig's name.
     song : the audio file (absolute path), or None with `live`.
     live : "mic" or "tab" (a live input instead of a song), or None.
     preset : a preset's name, or None.
@@ -140,11 +142,10 @@ def _cue(table, index: int, folder: str, fade: float, path: str) -> Cue:
         raise InputError(f"{where}: until must be one of {', '.join(UNTIL)}")
     if until == "bars" and (bars is None or not 1 <= bars <= 10000):
         raise InputError(f"{where}: bars must be a whole number of bars, 1–10000")
-    model, song = (None if p is None else check_readable(os.path.join(folder, p))
-                   for p in (model, song))
+    model = model_source(model, folder)  # a file, or a built-in rig as the commands take it
+    song = None if song is None else os.path.abspath(check_readable(os.path.join(folder, song)))
     name = _get(table, "name", str, where) or preset or os.path.basename(model)
-    return Cue(one_line(name, 60), os.path.abspath(model),
-               None if song is None else os.path.abspath(song), live, preset, until,
+    return Cue(one_line(name, 60), model, song, live, preset, until,
                bars or 0, bool(_get(table, "loop", bool, where, False)), _fade(table, where, fade))
 
 

@@ -15,6 +15,8 @@ from collections.abc import Callable
 from eigendance.errors import InputError
 from eigendance.files import finite_number
 from eigendance.presets.store import check_name
+from eigendance.show.beat_clock import BeatGrid, grid_from_taps
+from eigendance.show.live_out import LiveHeard
 from eigendance.show.setlist import SetList
 
 GAIN_RANGE = (0.0, 8.0)
@@ -62,8 +64,11 @@ class ShowState:
         self.fade_beats = cues[0].fade_beats if cues else 4.0
         self.tempo: float | None = None
         self.taps: list[float] = []
+        self.tap_count = 0  # taps in this count (the kept `taps` are its last eight)
+        self.grid: BeatGrid | None = None  # the show's own beat clock (show.beat_clock)
         self.controls: dict[str, float] = {}
         self.song_clock: dict | None = None  # the output page's {song, time, at, playing}
+        self.live = LiveHeard()  # a live input's events, as the output page reports them
         self.version = 0
 
     # -- actions --------------------------------------------------------------------------------
@@ -76,7 +81,8 @@ class ShowState:
         action : "next", "prev", "cue" (value: index), "gain" (value: 0–8), "preset" (value: a
             name), "slot" (value: 1–9), "tap", "play", "stop", "toggle", "blackout", "loop_cue",
             "loop_set" (value: bool, or None to toggle), "fade" (value: beats), "tempo" (value:
-            BPM), "control" (value: {"id", "value"}: one slider or switch of the page).
+            BPM), "auto" (back to the song's own beats: forget the taps and typed tempo),
+            "control" (value: {"id", "value"}: one slider or switch of the page).
             "next" and "prev" take value {"from": index}: only from that cue (the output page
             ending a cue, once however many pages follow).
         value : as above.
@@ -141,14 +147,41 @@ class ShowState:
     def _tap(self, value) -> None:
         now = self.clock()
         if self.taps and now - self.taps[-1] > TAP_GAP:
-            self.taps = []
+            self.taps, self.tap_count = [], 0
         self.taps = [*self.taps[-7:], now]
-        if len(self.taps) >= 2:
-            interval = (self.taps[-1] - self.taps[0]) / (len(self.taps) - 1)
-            self.tempo = min(max(60.0 / interval, TEMPO_RANGE[0]), TEMPO_RANGE[1])
+        self.tap_count += 1
+        grid = grid_from_taps(self.taps, self.tap_count - len(self.taps))
+        if grid is not None:
+            bpm = min(max(grid.bpm, TEMPO_RANGE[0]), TEMPO_RANGE[1])
+            self.grid = BeatGrid(bpm, grid.anchor, grid.beats_per_bar, "tap")
+            self.tempo = bpm
 
     def _tempo(self, value) -> None:
         self.tempo = _number(value, "tempo", *TEMPO_RANGE)
+        now = self.clock()
+        self.grid = self.grid.with_bpm(self.tempo, now) if self.grid else BeatGrid(self.tempo, now)
+
+    def _auto(self, value) -> None:
+        self.grid, self.taps, self.tap_count, self.tempo = None, [], 0, None
+
+    def set_grid(self, grid: BeatGrid) -> bool:
+        """Take a beat clock from elsewhere (a Link session), counted as a change only when it
+        differs (`BeatGrid.differs`): pages are told of a new tempo or phase, not of each look.
+
+        Parameters
+        ----------
+        grid : the new grid.
+
+        Returns
+        -------
+        bool, whether it changed.
+        """
+        with self.lock:
+            if not grid.differs(self.grid):
+                return False
+            self.grid, self.tempo = grid, grid.bpm
+            self.version += 1
+        return True
 
     def _play(self, value) -> None:
         self.playing = True
@@ -196,7 +229,7 @@ class ShowState:
         with self.lock:
             self.song_clock = {"song": song, "time": float(song_time), "at": self.clock() - age,
                                "playing": bool(playing)}
-            if tempo is not None and not self.taps and finite_number(tempo) and tempo > 0:
+            if tempo is not None and self.grid is None and finite_number(tempo) and tempo > 0:
                 self.tempo = float(tempo)
 
     # -- what the pages see ---------------------------------------------------------------------
@@ -206,8 +239,9 @@ class ShowState:
 
         Returns
         -------
-        dict: set, cues, cue, next, preset, gain, playing, tempo, blackout, loop_cue, loop_set,
-        fade_beats, controls, version.
+        dict: set, cues, cue, next, preset, gain, playing, tempo, grid (the show's beat clock:
+        {bpm, beats_per_bar, source, downbeat: a downbeat's time, ms since 1970}, or None),
+        blackout, loop_cue, loop_set, fade_beats, controls, version.
         """
         with self.lock:
             cues = self.setlist.cues if self.setlist else []
@@ -220,10 +254,19 @@ class ShowState:
                              for i, cue in enumerate(cues)],
                     "cue": self.cue, "next": following, "preset": self.preset,
                     "gain": self.gain, "playing": self.playing, "tempo": self.tempo,
+                    "grid": self._grid_json(),
                     "blackout": self.blackout, "loop_set": self.loop_set,
                     "loop_cue": None if self.cue is None else self.loop_cue[self.cue],
                     "fade_beats": self.fade_beats,
                     "controls": dict(self.controls), "version": self.version}
+
+    def _grid_json(self) -> dict | None:
+        grid = self.grid
+        if grid is None:
+            return None
+        wall = time.time() + grid.anchor - self.clock()  # the page's clock: ms since 1970
+        return {"bpm": grid.bpm, "beats_per_bar": grid.beats_per_bar, "source": grid.source,
+                "downbeat": wall * 1000.0}
 
     def _items(self, index: int) -> dict:
         return self.items[index] if index < len(self.items) else {}
