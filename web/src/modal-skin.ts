@@ -2,7 +2,8 @@
 // the mode coefficients c(t) of `eigendance.modal.motion.rig_coefficients`, the shader weights
 // that turn the harmonics' positions pass into GPU modal skinning (thesis §6.5), and the body
 // poses that move bones and three.js linear blend skinning. Same numbers as the Python.
-import { beatLock, filterValues, hasBeats, prepare } from "./filter";
+import { beatLock, hasBeats } from "./beat-lock";
+import { filterValues, prepare } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import type { Motion } from "./motion";
 import type { ModeSettings, Rig } from "./rig-bundle";

@@ -1,7 +1,8 @@
 // The small 2D plots: the live spectrum strip, and under each tile its transfer (which harmonic
 // each sound band drives) and its amplification (how strongly each harmonic moves the model).
 import type { Spectrum } from "./bundle";
-import { hasBeats, kickAt } from "./filter";
+import { hasBeats } from "./beat-lock";
+import { kickAt } from "./filter";
 import type { Prepared } from "./filter";
 
 /** How long a beat tick on the spectrum strip takes to fade, s. */

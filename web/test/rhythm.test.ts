@@ -6,14 +6,13 @@ import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
+import { beatLock, beatPhase, DOWNBEAT_ACCENT, hasBeats } from "../src/beat-lock";
 import {
-  beatLock, beatPhase, DOWNBEAT_ACCENT, filterValues, kickAt, prepare, pulseAccents, pulseEvents,
-  shapeValues, smoothed, spectrumAt,
+  filterValues, kickAt, prepare, pulseAccents, pulseEvents, shapeValues, smoothed, spectrumAt,
 } from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { prepareRig, rigCoefficients, modeDrive } from "../src/modal-skin";
 import { rigFromBundle } from "../src/rig-bundle";
-import { hasBeats } from "../src/filter";
 
 const folder = join(__dirname, "fixtures");
 const bytes = (name: string) => {

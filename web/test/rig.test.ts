@@ -6,9 +6,8 @@ import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { parseBundle, spectrumFromBundle } from "../src/bundle";
-import {
-  beatLock, deformCPU, hasBeats, shapeValues, smoothed, spectrumAt,
-} from "../src/filter";
+import { beatLock, hasBeats } from "../src/beat-lock";
+import { deformCPU, shapeValues, smoothed, spectrumAt } from "../src/filter";
 import type { Mapping } from "../src/filter";
 import { bodyMatrices, modalWeights, modeDrive, prepareRig, rigCoefficients } from "../src/modal-skin";
 import { rigBasis, rigFromBundle, toFileUnits } from "../src/rig-bundle";

@@ -1,7 +1,7 @@
 // The show's beat clock laid on the song time (show-grid.ts), without a browser.
 import { describe, expect, it } from "vitest";
 import type { Spectrum } from "../src/bundle";
-import { beatLock, hasBeats } from "../src/filter";
+import { beatLock, hasBeats } from "../src/beat-lock";
 import { GridClock, gridOrigin, gridTimes } from "../src/show-grid";
 import { boundaryAfter, cueEnd } from "../src/show-timing";
 
