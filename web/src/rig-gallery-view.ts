@@ -5,13 +5,14 @@
 // like the harmonic gallery's (`POST api/breed`).
 import * as api from "./api";
 import { $, fileName, saveJSON } from "./dom";
-import { gridColumns } from "./grid";
+import { fittedColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
 import type { Mapping } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
 import type { RigPrepared } from "./modal-skin";
 import { SHOWN_HZ, modesLabel, playedFrequency, shownMode } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
+import { VIEW_DIRECTION, silhouette } from "./studio";
 import type { Shot, Look } from "./viewer";
 
 export type RigGalleryMode = "modes" | "dances";
@@ -59,6 +60,7 @@ export class RigGalleryView {
   private tiles: Tile[] = [];
   private readonly selectedModes = new Set<number>();
   private readonly selectedDances = new Set<number>();
+  private shape: { rig: Rig; aspect: number } | null = null;
 
   constructor(private readonly events: RigGalleryEvents) {
     $("rig-show-modes").addEventListener("click", () => this.setMode("modes"));
@@ -146,6 +148,28 @@ export class RigGalleryView {
     if (this.mode === "dances") this.build();
   }
 
+  /** The grid's columns for the rig's shape and the area the tiles have (`fittedColumns`):
+   * the rig fills its tiles (again when the window or the view changes). */
+  layout(): void {
+    const container = $("rig-tiles");
+    const area = container.getBoundingClientRect();
+    const gap = 6, padding = 20; // #rig-tiles: gap and side padding (style.css)
+    container.style.setProperty("--columns", String(fittedColumns(this.tiles.length
+      || this.prepared.length, area.width - padding, area.height - 10, this.aspect, gap)));
+  }
+
+  /** The rig's width over its height as the tiles' camera sees it at rest. */
+  private get aspect(): number {
+    if (!this.rig) return 1;
+    if (this.shape?.rig !== this.rig) {
+      const { x, y } = silhouette(this.rig.vertices, VIEW_DIRECTION);
+      const span = (values: Float32Array) => values.reduce((a, b) => Math.max(a, b), -Infinity)
+        - values.reduce((a, b) => Math.min(a, b), Infinity);
+      this.shape = { rig: this.rig, aspect: span(x) / Math.max(span(y), 1e-9) };
+    }
+    return this.shape.aspect;
+  }
+
   /** The time scale changed (the player's palette): the mode tiles follow. */
   refresh(): void { this.build(); }
 
@@ -201,8 +225,7 @@ export class RigGalleryView {
       } else {
         this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
       }
-      container.style.setProperty("--columns",
-        String(gridColumns(this.prepared.length)));
+      this.layout();
       this.tiles = this.prepared.map((prepared, index) => {
         const tile = this.makeTile(index, prepared);
         container.appendChild(tile.element);

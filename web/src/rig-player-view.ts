@@ -7,6 +7,7 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { prepareRig } from "./modal-skin";
 import { paletteOf } from "./palette";
+import { floorCap } from "./floor";
 import type { RigPrepared } from "./modal-skin";
 import { playedFrequency } from "./rig-bundle";
 import type { ModeSettings, Rig } from "./rig-bundle";
@@ -244,11 +245,15 @@ export class RigPlayerView {
       const row = document.createElement("div");
       row.className = "rig-mode-row";
       const amplitude = palette.amplitudes![v] / DEGREES, phase = palette.phases![v] / DEGREES;
+      // At most where the skin would sink below the floor (floor.ts).
+      const largest = Math.min(Math.max(90, Math.ceil(2 * amplitude)),
+        Math.floor(2 * floorCap(rig, mode) / DEGREES) / 2);
       row.innerHTML = `<span class="name" title="as played: natural frequency ${
         rig.frequencies[mode].toFixed(3)} Hz × the time scale">mode ${mode + 1} · ${
         playedFrequency(rig.frequencies[mode], palette.time_scale!)}</span>
-        <label title="reach at φ = 1: the largest body rotation, degrees">amplitude
-        <input type="range" class="amplitude" min="0" max="${Math.max(90, Math.ceil(2 * amplitude))}" step="0.5" value="${amplitude}">
+        <label title="reach at φ = 1: the largest body rotation, degrees (at most ${largest}°: \
+beyond, the skin would sink below the floor)">amplitude
+        <input type="range" class="amplitude" min="0" max="${largest}" step="0.5" value="${amplitude}">
         <output>${amplitude.toFixed(1)}°</output></label>
         <label title="phase γ, degrees">phase <input type="range" class="phase" min="0"
         max="360" step="1" value="${phase % 360}"><output>${(phase % 360).toFixed(0)}°</output></label>`;

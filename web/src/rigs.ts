@@ -70,6 +70,7 @@ export class RigStage {
       guard: events.guard, play: (surface) => this.playSurface(surface),
       share: () => this.surfaceShare() });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
+    window.addEventListener("resize", () => { if (this.active) this.gallery.layout(); });
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
 
@@ -125,6 +126,7 @@ export class RigStage {
     $("rig-player-view").hidden = view !== "player";
     $("tab-gallery").classList.toggle("active", view === "gallery");
     $("tab-player").classList.toggle("active", view === "player");
+    if (view === "gallery" && this.active) this.gallery.layout();
     this.viewer.requestDraw();
   }
 
@@ -142,7 +144,7 @@ export class RigStage {
     if (!rig || !modes.length || !this.defaultMapping) return;
     const share = 1 / Math.sqrt(modes.length);
     this.player.show({ ...this.defaultMapping, modes: { selected: modes,
-      amplitudes: modes.map((m) => rig.amplitudes[m] * share),
+      amplitudes: modes.map((m) => rig.tileAmplitudes[m] * share),
       phases: modes.map((m) => rig.phases[m]),
       time_scale: this.player.palette?.time_scale ?? rig.palette!.time_scale } },
     `modes ${modes.map((m) => m + 1).join(", ")}`);
