@@ -196,3 +196,38 @@ def test_every_tile_of_every_page_of_every_shared_rig_moves(browser, web_files, 
             assert not still, f"{len(still)} still tiles"
         finally:
             page.close()
+
+
+HORSE = os.path.join(SHARED_RIGS, "quaternius_Horse.glb")  # four hooves on the floor
+
+
+def test_the_palette_at_its_largest_amplitudes_keeps_the_hooves_above_the_floor(browser, web_files,
+                                                                                tmp_path):
+    """Item 9: in the rig's player, every mode's amplitude slider dragged to its end, music off
+    (each mode at its amplitude all the time): over 6 s of the dance the skin's lowest point
+    stays on or above the floor (the rest pose's lowest point, less 2% of the diagonal)."""
+    from eigendance.modal.sample_rigs import load_rig
+
+    path = HORSE if os.path.exists(HORSE) else fixture_path("rigged", "Fox.glb")
+    rest = load_rig(path).vertices
+    floor = rest[:, 1].min() - 0.02 * np.linalg.norm(np.ptp(rest, axis=0))
+    with running_server([path, web_files["song"]], tmp_path, web_files["cache"]) as server:
+        page = open_app(browser, server["url"], "?test", 1280, 800)
+        try:
+            open_rig_from_menu(page, server["url"], os.path.basename(path))
+            page.click("#tab-player")
+            page.locator("#rig-music").uncheck()
+            sliders = page.locator("#rig-palette input.amplitude")
+            assert sliders.count() >= 2
+            for index in range(sliders.count()):  # as a drag to the slider's end
+                sliders.nth(index).evaluate("(el) => { el.value = el.max; "
+                                            "el.dispatchEvent(new Event('input')); }")
+            largest = [float(x) for x in sliders.evaluate_all("(all) => all.map((el) => el.max)")]
+            lowest = min(min(page.evaluate(f"window.eigendance.rig.cpuPositions('player', {t})")
+                             [1::3]) for t in np.arange(0, 6, 0.1))
+            print(f"{os.path.basename(path)}: sliders up to {max(largest):.1f}°, lowest point "
+                  f"{lowest - floor:+.4f} from the floor less the slack")
+            assert lowest >= floor - 1e-4 * np.linalg.norm(np.ptp(rest, axis=0))
+            assert not page.errors, page.errors
+        finally:
+            page.close()

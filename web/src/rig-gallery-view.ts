@@ -45,6 +45,8 @@ export interface RigGalleryEvents {
   open(mapping: Mapping, source: string): void;
   /** the time scale the mode tiles play at (the player's palette's) */
   timeScale(): number;
+  /** the dances' generations or selection changed (the session keeps them) */
+  changed?(): void;
 }
 
 export class RigGalleryView {
@@ -138,15 +140,27 @@ export class RigGalleryView {
     if (this.mode === "modes") this.build();
   }
 
-  showGeneration(index: number): void {
+  showGeneration(index: number, selected: number[] = []): void {
     this.generation = Math.max(0, Math.min(index, this.generations.length - 1));
     this.selectedDances.clear();
+    for (const dance of selected) if (dance < this.dances().length) this.selectedDances.add(dance);
     const menu = $<HTMLSelectElement>("rig-generation");
     menu.innerHTML = "";
     this.generations.forEach((_, i) => menu.add(new Option(`generation ${i + 1}`, String(i),
       false, i === this.generation)));
     if (this.mode === "dances") this.build();
+    this.events.changed?.();
   }
+
+  /** Generations of a saved session (session.ts), the one shown and its dances selected. */
+  restoreDances(generations: Mapping[][], generation: number, selected: number[]): void {
+    if (!generations.length) return;
+    this.generations = generations;
+    this.showGeneration(generation, selected);
+  }
+
+  /** The dances selected (whichever gallery is shown). */
+  get selectedDanceList(): number[] { return [...this.selectedDances].sort((a, b) => a - b); }
 
   /** The grid's columns for the rig's shape and the area the tiles have (`fittedColumns`):
    * the rig fills its tiles (again when the window or the view changes). */
@@ -180,6 +194,7 @@ export class RigGalleryView {
     if (chosen.has(key)) chosen.delete(key); else chosen.add(key);
     this.tiles[index]?.element.classList.toggle("selected", chosen.has(key));
     this.updateButtons();
+    if (this.mode === "dances") this.events.changed?.();
   }
 
   /** The next generation of dances from the selected ones (`eigendance.music.breeding.breed`). */

@@ -27,6 +27,8 @@ export interface RigPlayerEvents {
   reset(): Promise<void>;
   /** the surface's mapping as played (saved as the mapping's `surface` genes), or null */
   surface?(): Mapping | null;
+  /** the mapping or its palette changed (the session keeps them) */
+  changed?(): void;
 }
 
 const DEGREES = Math.PI / 180;
@@ -223,6 +225,7 @@ export class RigPlayerView {
     if (this.rig && this.mapping && this.palette) {
       this.prepared = prepareRig(this.rig, { ...this.mapping, modes: this.palette }, this.music);
     }
+    this.events.changed?.();
     this.events.requestDraw();
   }
 

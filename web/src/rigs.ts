@@ -14,6 +14,8 @@ import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
 import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
+import { RigSessions } from "./rig-session";
+import type { SavedRig } from "./session";
 import { surfaceBasis, surfaceShare } from "./rig-surface";
 import type { SurfacePlay } from "./rig-surface";
 import { RigSurfaceView } from "./rig-surface-view";
@@ -41,8 +43,12 @@ export class RigStage {
   figure: RigFigure | null = null;
   active = false;
   view: View = "gallery";
+  /** every rig's galleries and palette, as the session keeps them (rig-session.ts) */
+  readonly sessions = new RigSessions();
   /** the rig gallery's default mapping (calibrated on the song): what combined modes play */
   private defaultMapping: Mapping | null = null;
+  /** false while a rig opens (what it shows first is not a change to keep) */
+  private keeping = false;
 
   constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
               private readonly path: DeformationPath | null, private readonly batch: number,
@@ -59,12 +65,13 @@ export class RigStage {
       songId: () => events.songId(),
       combine: (modes) => this.combine(modes),
       open: (mapping, source) => { this.player.show(mapping, source); this.setView("player"); },
-      timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1 });
+      timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1,
+      changed: () => this.keep() });
     this.player = new RigPlayerView({ requestDraw, guard: events.guard,
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
-      reset: () => this.reset(), surface: () => this.surface.genes });
+      reset: () => this.reset(), surface: () => this.surface.genes, changed: () => this.keep() });
     this.motion.surfaceFor = () => this.player.prepared;
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
       guard: events.guard, play: (surface) => this.playSurface(surface),
@@ -78,6 +85,7 @@ export class RigStage {
    * modes. Throws the server's error (a rig without modes, an unreadable file…). */
   async open(id: string, pageSize: number): Promise<void> {
     this.events.loading("loading the rig and its vibration modes…");
+    this.keeping = false;
     try {
       const rig = await rigBundle(id);
       if (!rig.k) throw new Error(`${rig.name} has no vibration mode (no elastic joint)`);
@@ -91,6 +99,8 @@ export class RigStage {
       this.player.show(gallery.default, "default palette");
       this.gallery.setDances(gallery.mappings);
       this.gallery.setMode("modes");
+      this.showSaved(this.sessions.get(id));
+      this.keeping = true;
       this.enter();
       this.viewer.choosePath(this.path);
       // The server keeps a rig's edits until "reset pose": a reload shows them, and says so.
@@ -101,6 +111,39 @@ export class RigStage {
     } finally {
       this.events.loading(null);
     }
+  }
+
+  /** Rigs of a saved session (*open session*): the rig open shows its galleries again. */
+  restore(rigs: Record<string, SavedRig>): void {
+    this.sessions.restore(rigs);
+    if (this.active && this.rig && rigs[this.rig.id]) {
+      this.keeping = false;
+      this.showSaved(rigs[this.rig.id]);
+      this.keeping = true;
+    }
+  }
+
+  /** A rig's galleries and player as a session kept them (a palette that no longer fits the
+   * rig, after an edit elsewhere, is left out). */
+  private showSaved(saved: SavedRig | undefined): void {
+    if (!saved) return;
+    this.gallery.restoreDances(saved.generations, saved.generation, saved.selected);
+    if (!saved.player) return;
+    try {
+      this.player.show(saved.player.mapping, saved.player.source);
+    } catch {
+      this.player.show(this.defaultMapping!, "default palette");
+    }
+  }
+
+  /** Keep the open rig's galleries and palette in the session (rig-session.ts). */
+  private keep(): void {
+    const rig = this.rig;
+    if (!this.keeping || !rig) return;
+    const mapping = this.player.saved();
+    this.sessions.set(rig.id, { generations: this.gallery.generations,
+      generation: this.gallery.generation, selected: this.gallery.selectedDanceList,
+      player: mapping ? { mapping, source: this.player.source } : null });
   }
 
   /** A new song: the dances and the combined modes' mapping are calibrated on it again. */

@@ -49,7 +49,8 @@ class Rig:
         (a reference).
 
     Attributes: skeleton; model (`ModalModel`, the vibration modes, with the skin's floor); skin
-    (`ModalSkin`, made with the rig when it has a skin and modes); palette (the default palette, None without vibration modes).
+    (`ModalSkin`, made with the rig when it has a skin and modes); palette (the default palette,
+    None without vibration modes).
 
     Example
     -------
