@@ -231,3 +231,46 @@ def test_the_palette_at_its_largest_amplitudes_keeps_the_hooves_above_the_floor(
             assert not page.errors, page.errors
         finally:
             page.close()
+
+
+TALL = os.path.join(SHARED_RIGS, "CesiumMan.glb")  # a standing character, arms down
+
+
+def drawn_box(page, tile: int) -> tuple[float, float]:
+    """The share of the tile's width and height the drawn model spans: pixels unlike the
+    backdrop (each row's colour at the tile's left and right edges, which the framing keeps
+    clear) by more than 40 levels, at a fixed render scale of 1."""
+    box = page.locator("#rig-tiles .rig-tile .view").nth(tile).bounding_box()
+    width, height = int(box["width"]), int(box["height"])
+    pixels = np.frombuffer(base64.b64decode(page.evaluate("window.eigendance.rig.tileBytes(1)")
+                                            [tile]), np.uint8).astype(float)
+    image = pixels.reshape(height, width, 3)
+    backdrop = (image[:, :1] + image[:, -1:]) / 2
+    model = np.abs(image - backdrop).max(axis=2) > 40
+    rows, columns = np.nonzero(model.any(axis=1))[0], np.nonzero(model.any(axis=0))[0]
+    return (np.ptp(columns) + 1) / width, (np.ptp(rows) + 1) / height
+
+
+def test_each_rig_fills_its_mode_tiles(browser, web_files, tmp_path):
+    """Item 7: a tall character and a four-legged animal (a tall shape from the page's camera)
+    each fill their mode tiles: the drawn model spans at least half the tile each way, and its
+    box over a third of the tile (tall characters filled a quarter of a wide tile)."""
+    paths = [path if os.path.exists(path) else fixture_path("rigged", fallback)
+             for path, fallback in ((TALL, "RiggedFigure.glb"), (HORSE, "Fox.glb"))]
+    with running_server([*paths, web_files["song"]], tmp_path, web_files["cache"]) as server:
+        page = open_app(browser, server["url"], "?test&scale=1", 1280, 800)
+        try:
+            for path in paths:
+                name = os.path.basename(path)
+                page.select_option("#mesh", f"rig:{rig_id(server['url'], name)}")
+                page.wait_for_function(f"window.eigendance.rig.info().name === '{name}' && "
+                                       "document.getElementById('loading').hidden",
+                                       timeout=60_000)
+                page.evaluate("window.eigendance.rig.renderAt(0)")
+                spans = [drawn_box(page, tile) for tile in (5, 9, 12)]
+                print(os.path.basename(path), [f"{w:.2f} × {h:.2f}" for w, h in spans])
+                for width, height in spans:
+                    assert min(width, height) >= 0.5 and width * height >= 0.35, spans
+            assert not page.errors, page.errors
+        finally:
+            page.close()

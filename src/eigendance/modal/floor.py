@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from eigendance.geometry import bounding_box_diagonal
+from eigendance.modal.palette import mode_reach
 
 FLOOR_SLACK = 0.02  # how far (fraction of the skin's diagonal) a limb may sink below the floor
 TILE_MOTION = 0.05  # a mode tile's largest skin displacement, fraction of the diagonal
@@ -120,8 +121,6 @@ def tile_amplitudes(model, skin, natural) -> np.ndarray:
     -------
     (nm,) radians of reach.
     """
-    from eigendance.modal.palette import mode_reach  # palette imports this module
-
     reach = mode_reach(model)
     n = len(skin.vertices)
     largest = np.linalg.norm(skin.displacement.reshape(-1, n, 3), axis=2).max(axis=1,
