@@ -224,6 +224,13 @@ export class RigPlayerView {
   update(): void {
     if (this.rig && this.mapping && this.palette) {
       this.prepared = prepareRig(this.rig, { ...this.mapping, modes: this.palette }, this.music);
+      // Together the modes would sink a limb below the floor: they play scaled down (floor.ts).
+      const asked = this.palette.amplitudes!, played = this.prepared.amplitudes;
+      const scale = asked.some((a) => a > 0) ? Math.max(...played.map((p, v) =>
+        Math.abs(asked[v]) > 0 ? Math.abs(p / asked[v]) : 0)) : 1;
+      $("rig-floor-note").hidden = scale > 0.999;
+      $("rig-floor-note").textContent = `together these amplitudes would sink a limb below the `
+        + `floor: they play at ×${scale.toFixed(2)}`;
     }
     this.events.changed?.();
     this.events.requestDraw();

@@ -3,7 +3,7 @@
 The palette says which vibration modes move, how much, with which phase and at which time scale
 (the mapping file's `modes`, `eigendance.music.mapping.ModeSettings`). Every field it leaves
 empty is filled by the default rule, chosen so that at a song's loud moments (φ ≈ 1) the bodies
-move at 0.5–4 Hz and the most bent joint turns by 5°–45°:
+move at 0.5–4 Hz and the most bent joint turns by 5°–45° (less where the floor holds it):
 
 - selection: the lowest modes, at most DEFAULT_MODES, whose frequency is at most MODE_SPREAD
   times the lowest one (they fit into the dancing band together);
