@@ -35,6 +35,9 @@ def open_rig_from_menu(page, url: str, name: str) -> None:
     page.select_option("#mesh", f"rig:{rig_id(url, name)}")
     page.wait_for_function("document.querySelectorAll('#rig-tiles .rig-tile').length > 0",
                            timeout=60_000)
+    page.wait_for_function(f"window.eigendance.rig.info().name === {name!r} && "
+                           "window.eigendance.rig.info().active && "
+                           "document.getElementById('loading').hidden", timeout=60_000)
 
 
 def test_combined_modes_of_a_rig_export_as_a_glb(browser, live_server):
