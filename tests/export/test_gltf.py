@@ -94,8 +94,9 @@ def test_a_skin_plays_linear_blend_skinning_of_the_body_transforms(chain_lbs, tm
     transforms, _ = chain_lbs.pose(times.astype(np.float64))
     reference = linear_blend_skinning(chain_lbs.rest, chain_lbs.weights, transforms)
     check_positions(played, reference, chain_lbs.diagonal, 1e-5)
-    # the dance really moves, so the comparison means something
-    assert np.abs(reference - reference[:1]).max() > 0.01 * chain_lbs.diagonal
+    # the dance really moves (0.8% of the diagonal: a chain lying on its floor sways little,
+    # docs/design.md#the-floor), 800 times the comparison's tolerance
+    assert np.abs(reference - reference[:1]).max() > 0.005 * chain_lbs.diagonal
 
 
 def test_a_modal_skinned_rig_reports_its_difference_from_the_skin(figure_modal, tmp_path):

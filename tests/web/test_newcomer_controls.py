@@ -175,3 +175,68 @@ def test_the_session_survives_a_reload_and_a_file(browser, live_server, tmp_path
         assert not fresh.errors, fresh.errors
     finally:
         fresh.close()
+
+
+def rig_state(page) -> dict:
+    """What the rig's galleries and player show: the generations in the menu, the dance tiles'
+    labels and which are selected, and the player's amplitude sliders."""
+    page.click("#tab-gallery")
+    page.click("#rig-show-dances")
+    return {"generations": page.locator("#rig-generation option").all_text_contents(),
+            "shown": page.locator("#rig-generation").input_value(),
+            "labels": page.locator("#rig-tiles .caption").all_text_contents(),
+            "selected": page.locator("#rig-tiles .rig-tile.selected").count(),
+            "amplitudes": page.locator("#rig-palette input.amplitude").evaluate_all(
+                "(all) => all.map((el) => el.value)"),
+            "mapping": page.evaluate("window.eigendance.rig.playerMapping()")}
+
+
+def test_a_rigs_palette_and_dances_survive_a_reload_and_a_file(browser, live_server, tmp_path):
+    """The session holds the rigs too: a palette set in the built-in hand's player and a bred
+    generation of its dances come back after a reload, and from a saved session file in a
+    fresh browser."""
+    url = live_server["url"]
+    page = open_app(browser, url, "?test&size=4&path=cpu")
+    try:
+        open_rig_from_menu(page, url, "hand")
+        page.click("#tab-player")
+        page.locator("#rig-palette input.amplitude").first.evaluate(
+            "(el) => { el.value = 12.5; el.dispatchEvent(new Event('input')); }")
+        page.click("#tab-gallery")
+        page.click("#rig-show-dances")
+        tiles = page.locator("#rig-tiles .rig-tile .caption")
+        tiles.nth(0).click()
+        tiles.nth(2).click()
+        page.click("#rig-breed")
+        page.wait_for_function("document.getElementById('rig-generation').options.length === 2",
+                               timeout=60_000)
+        page.locator("#rig-tiles .rig-tile .caption").nth(1).click()
+        before = rig_state(page)
+        assert len(before["generations"]) == 2 and before["selected"] == 1
+        assert before["amplitudes"][0] == "12.5"
+        page.reload()
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
+        page.evaluate("window.eigendance.ready")
+        open_rig_from_menu(page, url, "hand")
+        assert rig_state(page) == before
+        with page.expect_download() as saved:
+            page.click("#rig-save-session")  # the rig's dances bar
+        session = tmp_path / saved.value.suggested_filename
+        saved.value.save_as(session)
+        assert saved.value.suggested_filename == "hand-session.json"
+        rigs = json.loads(session.read_text())["rigs"]
+        assert [len(rig["generations"]) for rig in rigs.values()] == [2]
+        assert not page.errors, page.errors
+    finally:
+        page.close()
+    fresh = open_app(browser, url, "?test&size=4&path=cpu")  # empty storage
+    try:
+        open_rig_from_menu(fresh, url, "hand")
+        assert len(rig_state(fresh)["generations"]) == 1
+        fresh.set_input_files("#rig-open-session", str(session))
+        fresh.wait_for_function("document.getElementById('rig-generation').options.length === 2",
+                                timeout=30_000)
+        assert rig_state(fresh) == before
+        assert not fresh.errors, fresh.errors
+    finally:
+        fresh.close()

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from web_helpers import pinned_gpu_app, rig_ids_at
 
+from eigendance.modal.floor import tile_amplitudes
 from eigendance.modal.motion import rig_coefficients
 from eigendance.modal.palette import default_phases, mode_reach, single_mode_amplitudes
 from eigendance.modal.rig import Rig
@@ -80,7 +81,8 @@ def test_gpu_modal_skinning_equals_python(page, rig_ids, song, name):
     assert modes == list(range(min(model.n_modes, 16)))
     mapping = Mapping.from_json(page.evaluate("window.eigendance.rig.playerMapping()"))
     scale = mapping.modes.time_scale
-    mu = single_mode_amplitudes(model) / mode_reach(model)
+    # the tiles' amplitudes, made to be seen (docs/design.md#the-floor)
+    mu = tile_amplitudes(model, rig.skin, single_mode_amplitudes(model)) / mode_reach(model)
     gamma = default_phases(np.arange(model.n_modes))
     player = rig.skin.positions(rig_coefficients(model, song, mapping, TIMES))
     worst, moved = 0.0, np.zeros(len(modes))

@@ -33,6 +33,7 @@ ARRAYS = {  # name: (dtype, shape with n vertices, m faces, b bodies, j joints, 
     "vertices": ("float32", "n,3"), "faces": ("uint32", "m,3"), "tau": ("float32", "n,G,3,4"),
     "rho": ("float32", "n,G,3,4"), "frequencies": ("float32", "k"),
     "amplitudes": ("float32", "k"), "reach": ("float32", "k"), "phases": ("float32", "k"),
+    "tile_amplitudes": ("float32", "k"),
     "skin_joints": ("uint32", "n,4"), "skin_weights": ("float32", "n,4"),
     "bone_matrices": ("float32", "b,16"), "bind_matrices": ("float32", "b,16"),
     "body_centers": ("float32", "b,3"), "body_rotations": ("float32", "b,3,3"),
@@ -103,8 +104,8 @@ def test_the_library_lists_built_in_rigs_and_rig_files(client):
     assert all(joint["closes_loop"] for joint in description["joint_list"])  # a ring
     hand = client.get(f"/api/rigs/{rigs['hand']['id']}").json()
     assert not any(joint["closes_loop"] for joint in hand["joint_list"])  # a tree
-    assert description["palette"] == default_palette(
-        ModalModel.from_skeleton(sample_rig("loop16"))).to_settings().to_json()
+    assert description["palette"] == default_palette(  # the ring's floor included
+        Rig(sample_rig("loop16")).model).to_settings().to_json()
 
 
 @pytest.mark.parametrize("name", ["loop16", "hand"])

@@ -99,11 +99,13 @@ def rig_reference(spectrogram, values):
 
 
 # Palettes with fields missing: the default rule fills them (`resolve_palette`); the 40° cap
-# binds for every mode of the chain, the time scale follows the selected modes.
+# binds for every mode of the chain, the time scale follows the selected modes; the floor caps
+# the amplitudes (a mode alone: 3 rad; together: the others).
 PALETTES = [None, {"selected": [1, 4]}, {"selected": [0, 1, 2, 3, 4, 5]}, {"selected": [5]},
             {"selected": [3, 0]}, {"selected": [3, 0], "phases": [0.5, 1.5]},
             {"selected": [2, 4], "amplitudes": [0.1, 0.2]}, {"time_scale": 0.7},
-            {"selected": [4, 1], "time_scale": 2.0}]
+            {"selected": [4, 1], "time_scale": 2.0},
+            {"selected": [0, 3], "amplitudes": [3.0, 0.01]}]
 
 
 def palette_reference(rig):

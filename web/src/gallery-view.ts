@@ -7,7 +7,7 @@ import { gridColumns } from "./grid";
 import { drivenHarmonics, settingsOf, withBasis } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { History } from "./history";
-import { sessionOf, storeSession } from "./session";
+import { keepInSession } from "./session";
 import type { SavedHistory } from "./session";
 import type { Motion } from "./motion";
 import { drawAmplification, drawTransfer, effectiveAmplification } from "./plots";
@@ -157,7 +157,7 @@ export class GalleryView {
   }
 
   /** Keep the session in the browser after every change. */
-  private persist(): void { storeSession(sessionOf(this.snapshot())); }
+  private persist(): void { keepInSession({ histories: this.snapshot() }); }
 
   /** A new basis or edited mappings: prepare the generation on screen again, redraw plots. */
   refresh(): void {

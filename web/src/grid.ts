@@ -16,3 +16,24 @@ export function gridColumns(count: number): number {
   }
   return columns;
 }
+
+/**
+ * Columns of a grid of `count` tiles of a model `aspect` times wider than tall (as the camera
+ * sees it) in a `width` × `height` area (CSS px; tiles `gap` apart, each with a `caption` row):
+ * the count that draws the model largest — a tall character gets tall tiles, a long animal wide
+ * ones — again with no last row less than half full (the rig galleries: docs/design.md#the-floor).
+ */
+export function fittedColumns(count: number, width: number, height: number, aspect: number,
+                              gap = 6, caption = 18): number {
+  if (!(width > 0 && height > 0 && aspect > 0) || count < 1) return gridColumns(count);
+  let best = 1, largest = -1;
+  for (let columns = 1; columns <= count; columns++) {
+    const rows = Math.ceil(count / columns);
+    if (columns > 1 && 2 * (count - (rows - 1) * columns) < columns) continue;
+    const tileWidth = (width - (columns - 1) * gap) / columns;
+    const tileHeight = (height - (rows - 1) * gap) / rows - caption;
+    const scale = Math.min(tileWidth / aspect, tileHeight); // the model's drawn height
+    if (scale > largest * 1.001) { best = columns; largest = scale; }
+  }
+  return best;
+}

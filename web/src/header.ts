@@ -47,21 +47,29 @@ export function wireHeader(app: App): void {
   });
   $("mute").addEventListener("click", () => toggleMute(app));
   $("loop").addEventListener("click", () => toggleLoop(app));
-  $("save-session").addEventListener("click", () => {
-    saveJSON(sessionOf(app.gallery.snapshot()), fileName(app.library.meshName, "session", "json"));
-  });
-  $("open-session").addEventListener("change", (e) => {
-    const input = e.target as HTMLInputElement;
-    const file = input.files?.[0];
-    input.value = "";
-    if (!file) return;
-    void messages.guard(`Could not open ${file.name}`, async () => {
-      const session = readSession(await file.text());
-      app.gallery.restore(session.histories);
-      if (!app.rigs.active) app.gallery.showMesh(library.meshId);
-      messages.status(`${file.name}: ${Object.keys(session.histories).length} model(s) restored`);
+  for (const id of ["save-session", "rig-save-session"]) { // the harmonics' and a rig's bar
+    $(id).addEventListener("click", () => {
+      saveJSON(sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot()),
+        fileName(app.rigs.active ? app.rigs.rig?.name ?? "" : app.library.meshName, "session",
+          "json"));
     });
-  });
+  }
+  for (const id of ["open-session", "rig-open-session"]) {
+    $(id).addEventListener("change", (e) => {
+      const input = e.target as HTMLInputElement;
+      const file = input.files?.[0];
+      input.value = "";
+      if (!file) return;
+      void messages.guard(`Could not open ${file.name}`, async () => {
+        const session = readSession(await file.text());
+        app.gallery.restore(session.histories);
+        app.rigs.restore(session.rigs ?? {});
+        if (!app.rigs.active) app.gallery.showMesh(library.meshId);
+        const count = Object.keys(session.histories).length + Object.keys(session.rigs ?? {}).length;
+        messages.status(`${file.name}: ${count} model(s) restored`);
+      });
+    });
+  }
   for (const id of ["reset-view", "rig-reset-view"]) {
     $(id).addEventListener("click", () => resetView(app));
   }

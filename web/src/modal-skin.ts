@@ -44,13 +44,14 @@ export function prepareRig(rig: Rig, mapping: Mapping, music = true): RigPrepare
     tempo: palette.tempo ?? null, lock: true };
 }
 
-/** Mode κ alone, as its tile of the mode gallery plays it: φ ≡ 1, the bundle's amplitude and
- * phase, time scale s. */
+/** Mode κ alone, as its tile of the mode gallery plays it: φ ≡ 1, the bundle's tile amplitude
+ * (made to be seen: docs/design.md#the-floor) and phase, time scale s. */
 export function modeTile(rig: Rig, mode: number, timeScale: number): RigPrepared {
   const silent = prepare({ format: "eigendance.mapping", version: 3, bands: 0, transfer: [],
     amplification: [0], seed: null }, 1);
   return { ...silent, gain: 0, selected: Int32Array.of(mode),
-    amplitudes: Float64Array.of(rig.amplitudes[mode]), phases: Float64Array.of(rig.phases[mode]),
+    amplitudes: Float64Array.of(rig.tileAmplitudes[mode]),
+    phases: Float64Array.of(rig.phases[mode]),
     timeScale, offset: 0, music: false, tempo: "free", lock: false };
 }
 

@@ -4,10 +4,12 @@
 // (each mode alone bending its most bent joint by 25°, the bundle's `amplitudes`; then all
 // scaled down together if the selected modes in phase would bend a joint beyond 40°), the
 // phases (κ·g, the bundle's `phases`) and the time scale (the s closest to 1 that puts the
-// selected modes' frequencies in [0.8, 3.5] Hz), and the tempo mode (`modes.tempo`, null: locked
+// selected modes' frequencies in [0.8, 3.5] Hz), any amplitudes then kept above the floor
+// (floor.ts, `floor_capped`), and the tempo mode (`modes.tempo`, null: locked
 // to the beats of a song that has them). Vitest checks it against numbers Python writes
 // (web/test/fixtures/palette.json). The tempo lock's ratios and phases are `lock_ratios` and
 // `locked_phases` of the same module (docs/design.md#tempo-lock).
+import { floorCapped } from "./floor";
 import type { ModeSettings, Rig } from "./rig-bundle";
 
 /** Hz: where the default time scale puts the selected modes (`palette.TEMPO_BAND`). */
@@ -54,8 +56,8 @@ export function paletteOf(rig: Rig, modes: Partial<ModeSettings> | null | undefi
   }
   const order = selected.map((_, i) => i).sort((a, b) => selected[a] - selected[b]);
   const sorted = order.map((i) => selected[i]);
-  const amplitudes = modes?.amplitudes ? order.map((i) => modes.amplitudes![i])
-    : defaultAmplitudes(rig, sorted);
+  const amplitudes = floorCapped(rig, sorted, modes?.amplitudes
+    ? order.map((i) => modes.amplitudes![i]) : defaultAmplitudes(rig, sorted));
   const phases = modes?.phases ? order.map((i) => modes.phases![i])
     : sorted.map((mode) => rig.phases[mode]);
   const timeScale = modes?.time_scale

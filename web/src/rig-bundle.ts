@@ -53,6 +53,8 @@ export interface Rig {
   tau: Float32Array;
   frequencies: Float32Array; // k, Hz ascending
   amplitudes: Float32Array; // k, each mode alone (radians of reach)
+  /** k, each mode's tile in the gallery of modes, made to be seen (docs/design.md#the-floor) */
+  tileAmplitudes: Float32Array;
   reach: Float32Array; // k, reach per unit coefficient
   phases: Float32Array; // k, default γ
   skinJoints: Uint32Array; // n*4
@@ -81,7 +83,8 @@ export function rigFromBundle(buffer: ArrayBuffer, id: string): Rig {
     jointList: meta.joint_list, bodyNames: meta.body_names, palette: meta.palette,
     offset: meta.offset ?? 0,
     vertices: f("vertices"), faces: u("faces"), tau: f("tau"), frequencies: f("frequencies"),
-    amplitudes: f("amplitudes"), reach: f("reach"), phases: f("phases"),
+    amplitudes: f("amplitudes"), tileAmplitudes: f("tile_amplitudes"), reach: f("reach"),
+    phases: f("phases"),
     skinJoints: u("skin_joints"), skinWeights: f("skin_weights"),
     boneMatrices: f("bone_matrices"), bindMatrices: f("bind_matrices"),
     bodyCenters: f("body_centers"), bodyRotations: f("body_rotations"), bodyEnds: f("body_ends"),

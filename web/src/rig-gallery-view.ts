@@ -7,7 +7,7 @@
 // crosses them as Python's `breed` does.
 import * as api from "./api";
 import { $, fileName, saveJSON } from "./dom";
-import { gridColumns } from "./grid";
+import { fittedColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
 import type { Mapping, Prepared } from "./filter";
 import { modeTile, prepareRig } from "./modal-skin";
@@ -15,6 +15,7 @@ import type { RigPrepared } from "./modal-skin";
 import { SHOWN_HZ, modesLabel, playedFrequency, shownMode } from "./rig-bundle";
 import type { Rig } from "./rig-bundle";
 import type { RigDance } from "./rig-surface";
+import { VIEW_DIRECTION, silhouette } from "./studio";
 import type { Shot, Look } from "./viewer";
 
 export type RigGalleryMode = "modes" | "dances";
@@ -47,6 +48,8 @@ export interface RigGalleryEvents {
   open(mapping: Mapping, source: string): void;
   /** the time scale the mode tiles play at (the player's palette's) */
   timeScale(): number;
+  /** the dances' generations or selection changed (the session keeps them) */
+  changed?(): void;
 }
 
 export class RigGalleryView {
@@ -64,6 +67,7 @@ export class RigGalleryView {
   private readonly selectedDances = new Set<number>();
   /** the surface section's dances while it is on (null: off, the dances are the bones' alone) */
   private surfaces: Mapping[] | null = null;
+  private shape: { rig: Rig; aspect: number } | null = null;
 
   constructor(private readonly events: RigGalleryEvents) {
     $("rig-show-modes").addEventListener("click", () => this.setMode("modes"));
@@ -163,14 +167,48 @@ export class RigGalleryView {
     if (this.mode === "modes") this.build();
   }
 
-  showGeneration(index: number): void {
+  showGeneration(index: number, selected: number[] = []): void {
     this.generation = Math.max(0, Math.min(index, this.generations.length - 1));
     this.selectedDances.clear();
+    for (const dance of selected) if (dance < this.dances().length) this.selectedDances.add(dance);
     const menu = $<HTMLSelectElement>("rig-generation");
     menu.innerHTML = "";
     this.generations.forEach((_, i) => menu.add(new Option(`generation ${i + 1}`, String(i),
       false, i === this.generation)));
     if (this.mode === "dances") this.build();
+    this.events.changed?.();
+  }
+
+  /** Generations of a saved session (session.ts), the one shown and its dances selected. */
+  restoreDances(generations: Mapping[][], generation: number, selected: number[]): void {
+    if (!generations.length) return;
+    this.generations = generations;
+    this.showGeneration(generation, selected);
+  }
+
+  /** The dances selected (whichever gallery is shown). */
+  get selectedDanceList(): number[] { return [...this.selectedDances].sort((a, b) => a - b); }
+
+  /** The grid's columns for the rig's shape and the area the tiles have (`fittedColumns`):
+   * the rig fills its tiles (again when the window or the view changes). */
+  layout(): void {
+    const container = $("rig-tiles");
+    const area = container.getBoundingClientRect();
+    const gap = 6, padding = 20; // #rig-tiles: gap and side padding (style.css)
+    container.style.setProperty("--columns", String(fittedColumns(this.tiles.length
+      || this.prepared.length, area.width - padding, area.height - 10, this.aspect, gap)));
+  }
+
+  /** The rig's width over its height as the tiles' camera sees it at rest. */
+  private get aspect(): number {
+    if (!this.rig) return 1;
+    if (this.shape?.rig !== this.rig) {
+      const { x, y } = silhouette(this.rig.vertices, VIEW_DIRECTION);
+      const span = (values: Float32Array) => values.reduce((a, b) => Math.max(a, b), -Infinity)
+        - values.reduce((a, b) => Math.min(a, b), Infinity);
+      this.shape = { rig: this.rig, aspect: span(x) / Math.max(span(y), 1e-9) };
+    }
+    return this.shape.aspect;
   }
 
   /** The time scale changed (the player's palette): the mode tiles follow. */
@@ -183,6 +221,7 @@ export class RigGalleryView {
     if (chosen.has(key)) chosen.delete(key); else chosen.add(key);
     this.tiles[index]?.element.classList.toggle("selected", chosen.has(key));
     this.updateButtons();
+    if (this.mode === "dances") this.events.changed?.();
   }
 
   /** The next generation of dances from the selected ones (`eigendance.music.breeding.breed`). */
@@ -228,8 +267,7 @@ export class RigGalleryView {
       } else {
         this.prepared = this.dances().map((mapping) => prepareRig(rig, mapping));
       }
-      container.style.setProperty("--columns",
-        String(gridColumns(this.prepared.length)));
+      this.layout();
       this.tiles = this.prepared.map((prepared, index) => {
         const tile = this.makeTile(index, prepared);
         container.appendChild(tile.element);

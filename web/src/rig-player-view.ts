@@ -7,6 +7,7 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { prepareRig } from "./modal-skin";
 import { paletteOf } from "./palette";
+import { floorCap } from "./floor";
 import type { RigPrepared } from "./modal-skin";
 import { playedFrequency } from "./rig-bundle";
 import type { ModeSettings, Rig } from "./rig-bundle";
@@ -27,7 +28,8 @@ export interface RigPlayerEvents {
   reset(): Promise<void>;
   /** the surface's mapping as played (saved as the mapping's `surface` genes), or null */
   surface?(): Mapping | null;
-  /** the dance played changed (its palette, gain, offset, music; the surface's share follows) */
+  /** the dance played changed (its palette, gain, offset, music: the session keeps it, the
+   * surface's share follows) */
   changed?(): void;
 }
 
@@ -226,8 +228,15 @@ export class RigPlayerView {
   update(): void {
     if (this.rig && this.mapping && this.palette) {
       this.prepared = prepareRig(this.rig, { ...this.mapping, modes: this.palette }, this.music);
-      this.events.changed?.();
+      // Together the modes would sink a limb below the floor: they play scaled down (floor.ts).
+      const asked = this.palette.amplitudes!, played = this.prepared.amplitudes;
+      const scale = asked.some((a) => a > 0) ? Math.max(...played.map((p, v) =>
+        Math.abs(asked[v]) > 0 ? Math.abs(p / asked[v]) : 0)) : 1;
+      $("rig-floor-note").hidden = scale > 0.999;
+      $("rig-floor-note").textContent = `together these amplitudes would sink a limb below the `
+        + `floor: they play at ×${scale.toFixed(2)}`;
     }
+    this.events.changed?.();
     this.events.requestDraw();
   }
 
@@ -250,11 +259,15 @@ export class RigPlayerView {
       const row = document.createElement("div");
       row.className = "rig-mode-row";
       const amplitude = palette.amplitudes![v] / DEGREES, phase = palette.phases![v] / DEGREES;
+      // At most where the skin would sink below the floor (floor.ts).
+      const largest = Math.min(Math.max(90, Math.ceil(2 * amplitude)),
+        Math.floor(2 * floorCap(rig, mode) / DEGREES) / 2);
       row.innerHTML = `<span class="name" title="as played: natural frequency ${
         rig.frequencies[mode].toFixed(3)} Hz × the time scale">mode ${mode + 1} · ${
         playedFrequency(rig.frequencies[mode], palette.time_scale!)}</span>
-        <label title="reach at φ = 1: the largest body rotation, degrees">amplitude
-        <input type="range" class="amplitude" min="0" max="${Math.max(90, Math.ceil(2 * amplitude))}" step="0.5" value="${amplitude}">
+        <label title="reach at φ = 1: the largest body rotation, degrees (at most ${largest}°: \
+beyond, the skin would sink below the floor)">amplitude
+        <input type="range" class="amplitude" min="0" max="${largest}" step="0.5" value="${amplitude}">
         <output>${amplitude.toFixed(1)}°</output></label>
         <label title="phase γ, degrees">phase <input type="range" class="phase" min="0"
         max="360" step="1" value="${phase % 360}"><output>${(phase % 360).toFixed(0)}°</output></label>`;

@@ -14,6 +14,8 @@ import type { Rig } from "./rig-bundle";
 import { poseRig, resetRig, rigBasis, rigBundle, rigGallery, stiffenRig } from "./rig-bundle";
 import { RIG_LOOK, RigGalleryView } from "./rig-gallery-view";
 import { RigPlayerView } from "./rig-player-view";
+import { RigSessions } from "./rig-session";
+import type { SavedRig } from "./session";
 import { SurfacePlay, surfaceBasis, surfaceShare } from "./rig-surface";
 import type { RigDance } from "./rig-surface";
 import { RigSurfaceView } from "./rig-surface-view";
@@ -43,8 +45,12 @@ export class RigStage {
   view: View = "gallery";
   /** each dance tile's surface genes as played (`surfaceOf`) */
   private tileSurfaces = new WeakMap<Prepared, SurfacePlay>();
+  /** every rig's galleries and palette, as the session keeps them (rig-session.ts) */
+  readonly sessions = new RigSessions();
   /** the rig gallery's default mapping (calibrated on the song): what combined modes play */
   private defaultMapping: Mapping | null = null;
+  /** false while a rig opens (what it shows first is not a change to keep) */
+  private keeping = false;
 
   constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
               private readonly path: DeformationPath | null, private readonly batch: number,
@@ -61,18 +67,20 @@ export class RigStage {
       songId: () => events.songId(),
       combine: (modes) => this.combine(modes),
       open: (mapping, source) => this.openDance(mapping, source),
-      timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1 });
+      timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1,
+      changed: () => this.keep() });
     this.player = new RigPlayerView({ requestDraw, guard: events.guard,
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),
       stiffness: (joint, value) => this.stiffness(joint, value),
       reset: () => this.reset(), surface: () => this.surface.genes,
-      changed: () => this.surface?.refreshShare() });
+      changed: () => { this.surface?.refreshShare(); this.keep(); } });
     this.motion.surfaceOf = (prepared) => this.surfaceOf(prepared);
     this.surface = new RigSurfaceView({ rig: () => this.rig, songId: events.songId,
       guard: events.guard, play: (surface) => this.playSurface(surface),
       share: () => this.surfaceShare(), dances: (dances) => this.gallery.setSurfaces(dances) });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
+    window.addEventListener("resize", () => { if (this.active) this.gallery.layout(); });
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
 
@@ -80,6 +88,7 @@ export class RigStage {
    * modes. Throws the server's error (a rig without modes, an unreadable file…). */
   async open(id: string, pageSize: number): Promise<void> {
     this.events.loading("loading the rig and its vibration modes…");
+    this.keeping = false;
     try {
       const rig = await rigBundle(id);
       if (!rig.k) throw new Error(`${rig.name} has no vibration mode (no elastic joint)`);
@@ -93,6 +102,8 @@ export class RigStage {
       this.player.show(gallery.default, "default palette");
       this.gallery.setDances(gallery.mappings);
       this.gallery.setMode("modes");
+      this.showSaved(this.sessions.get(id));
+      this.keeping = true;
       this.enter();
       this.viewer.choosePath(this.path);
       // The server keeps a rig's edits until "reset pose": a reload shows them, and says so.
@@ -103,6 +114,39 @@ export class RigStage {
     } finally {
       this.events.loading(null);
     }
+  }
+
+  /** Rigs of a saved session (*open session*): the rig open shows its galleries again. */
+  restore(rigs: Record<string, SavedRig>): void {
+    this.sessions.restore(rigs);
+    if (this.active && this.rig && rigs[this.rig.id]) {
+      this.keeping = false;
+      this.showSaved(rigs[this.rig.id]);
+      this.keeping = true;
+    }
+  }
+
+  /** A rig's galleries and player as a session kept them (a palette that no longer fits the
+   * rig, after an edit elsewhere, is left out). */
+  private showSaved(saved: SavedRig | undefined): void {
+    if (!saved) return;
+    this.gallery.restoreDances(saved.generations, saved.generation, saved.selected);
+    if (!saved.player) return;
+    try {
+      this.player.show(saved.player.mapping, saved.player.source);
+    } catch {
+      this.player.show(this.defaultMapping!, "default palette");
+    }
+  }
+
+  /** Keep the open rig's galleries and palette in the session (rig-session.ts). */
+  private keep(): void {
+    const rig = this.rig;
+    if (!this.keeping || !rig) return;
+    const mapping = this.player.saved();
+    this.sessions.set(rig.id, { generations: this.gallery.generations,
+      generation: this.gallery.generation, selected: this.gallery.selectedDanceList,
+      player: mapping ? { mapping, source: this.player.source } : null });
   }
 
   /** A new song: the dances and the combined modes' mapping are calibrated on it again. */
@@ -128,6 +172,7 @@ export class RigStage {
     $("rig-player-view").hidden = view !== "player";
     $("tab-gallery").classList.toggle("active", view === "gallery");
     $("tab-player").classList.toggle("active", view === "player");
+    if (view === "gallery" && this.active) this.gallery.layout();
     this.viewer.requestDraw();
   }
 
@@ -169,7 +214,7 @@ export class RigStage {
     if (!rig || !modes.length || !this.defaultMapping) return;
     const share = 1 / Math.sqrt(modes.length);
     this.player.show({ ...this.defaultMapping, modes: { selected: modes,
-      amplitudes: modes.map((m) => rig.amplitudes[m] * share),
+      amplitudes: modes.map((m) => rig.tileAmplitudes[m] * share),
       phases: modes.map((m) => rig.phases[m]),
       time_scale: this.player.palette?.time_scale ?? rig.palette!.time_scale } },
     `modes ${modes.map((m) => m + 1).join(", ")}`);

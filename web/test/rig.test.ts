@@ -69,7 +69,13 @@ describe("rig motion", () => {
   it("sorts a palette given out of order, its amplitudes and phases following", () => {
     const prepared = prepareRig(rig, reference.cases[1].mapping);
     expect(Array.from(prepared.selected)).toEqual([1, 4]);
-    expect(Array.from(prepared.amplitudes)).toEqual([0.2, 0.3]);
+    // the same palette given in order: the same amplitudes (0.2 and 0.3, then kept above the
+    // floor: floor.ts)
+    const sorted = prepareRig(rig, { ...reference.cases[1].mapping, modes: {
+      ...reference.cases[1].mapping.modes, selected: [1, 4], amplitudes: [0.2, 0.3],
+      phases: [2.5, 1.0] } });
+    expect(Array.from(prepared.amplitudes)).toEqual(Array.from(sorted.amplitudes));
+    expect(prepared.amplitudes[0]).toBeLessThanOrEqual(0.2);
     expect(Array.from(prepared.phases)).toEqual([2.5, 1.0]);
     expect(prepared.timeScale).toBe(0.7);
   });

@@ -174,12 +174,13 @@ class ModalModel:
     body_rotations (n_b, 3, 3): the rest pose, needed to move bodies and skin. joint_bodies
     (n_j, 2) and joint_positions (n_j, 3): the two bodies of every joint and where it is;
     size: the skeleton's extent (`Skeleton.size`), the length that turns translations into
-    angles (docs/design.md#modal-motion).
+    angles (docs/design.md#modal-motion). floor: the skin's `modal.floor.SkinFloor` (the palette
+    keeps the skin above it), set by `Rig`; None without a skin (not in the modal file).
 
     Parameters
     ----------
     frequencies, modes, rigid_modes, nullspace_dim, constraint_rows, constraint_rank, body_names,
-    body_centers, body_rotations, mass, joint_bodies, joint_positions, size : as above;
+    body_centers, body_rotations, mass, joint_bodies, joint_positions, size, floor : as above;
         `from_skeleton` makes them, `load` reads them.
 
     Example
@@ -203,6 +204,7 @@ class ModalModel:
     joint_bodies: np.ndarray | None = None  # (n_j, 2) int64
     joint_positions: np.ndarray | None = None  # (n_j, 3)
     size: float | None = None
+    floor: object | None = None  # modal.floor.SkinFloor
 
     def __post_init__(self):
         if self.joint_bodies is None:

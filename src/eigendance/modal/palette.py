@@ -3,7 +3,7 @@
 The palette says which vibration modes move, how much, with which phase and at which time scale
 (the mapping file's `modes`, `eigendance.music.mode_settings.ModeSettings`). Every field it leaves
 empty is filled by the default rule, chosen so that at a song's loud moments (φ ≈ 1) the bodies
-move at 0.5–4 Hz and the most bent joint turns by 5°–45°:
+move at 0.5–4 Hz and the most bent joint turns by 5°–45° (less where the floor holds it):
 
 - selection: the lowest modes, at most DEFAULT_MODES, whose frequency is at most MODE_SPREAD
   times the lowest one (they fit into the dancing band together);
@@ -13,6 +13,9 @@ move at 0.5–4 Hz and the most bent joint turns by 5°–45°:
 - amplitudes: each mode alone at φ = 1 bends its most bent joint by MODE_BEND (25°); then, if the
   selected modes all in phase would bend some joint by more than COMBINED_BEND (40°), all are
   scaled down to that;
+- the floor (any amplitudes, given or default): each mode alone, and then all selected modes
+  together in their worst phases at φ = 1, sink no skin vertex more than FLOOR_SLACK of the
+  diagonal below the floor (`modal.floor`; the page's palette.ts applies the same rule);
 - phases: γ_κ = κ·g mod 2π for mode κ, g = π(3 − √5) the golden angle: whatever modes are
   selected, their phases are spread around the circle, so they do not start together.
 
@@ -288,12 +291,37 @@ def resolve_palette(model: ModalModel, settings: ModeSettings | None) -> Palette
     selected = selected[order]
     amplitudes = default_amplitudes(model, selected) if settings.amplitudes is None else \
         _matched(settings.amplitudes, selected, "amplitudes")[order]
+    amplitudes = floor_capped(model, selected, amplitudes)
     phases = default_phases(selected) if settings.phases is None else \
         _matched(settings.phases, selected, "phases")[order]
     time_scale = default_time_scale(model.frequencies[selected]) \
         if settings.time_scale is None else float(settings.time_scale)
     return Palette(selected, np.asarray(amplitudes, dtype=float),
                    np.asarray(phases, dtype=float), time_scale)
+
+
+def floor_capped(model: ModalModel, selected, amplitudes) -> np.ndarray:
+    """Amplitudes that keep the skin above the floor (docs/design.md#the-floor): each at most
+    its mode's cap alone, then all scaled down together while their worst phases at φ = 1
+    would sink a vertex too far (`modal.floor.SkinFloor`; unchanged without a floor).
+
+    Parameters
+    ----------
+    model : the rig's modes (its `floor`).
+    selected : (k,) mode indices.
+    amplitudes : (k,) reach, radians.
+
+    Returns
+    -------
+    (k,) radians.
+    """
+    amplitudes = np.asarray(amplitudes, dtype=float)
+    floor = model.floor
+    if floor is None or not len(amplitudes):
+        return amplitudes
+    reach = mode_reach(model)[selected]
+    capped = np.sign(amplitudes) * np.minimum(np.abs(amplitudes), floor.caps()[selected] * reach)
+    return capped * floor.scale(selected, capped / reach)
 
 
 def _matched(values, selected, key: str) -> np.ndarray:

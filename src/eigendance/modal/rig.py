@@ -18,6 +18,7 @@ import numpy as np
 
 from eigendance.errors import InputError
 from eigendance.geometry import vertex_normals
+from eigendance.modal.floor import SkinFloor
 from eigendance.modal.model import ModalModel
 from eigendance.modal.motion import (
     body_poses,
@@ -47,8 +48,9 @@ class Rig:
     dtype : the modal skin's precision: float32 (as a GPU plays it, the default) or float64
         (a reference).
 
-    Attributes: skeleton; model (`ModalModel`, the vibration modes); skin (`ModalSkin`, made on
-    first use); palette (the default palette, None without vibration modes).
+    Attributes: skeleton; model (`ModalModel`, the vibration modes, with the skin's floor); skin
+    (`ModalSkin`, made with the rig when it has a skin and modes); palette (the default palette,
+    None without vibration modes).
 
     Example
     -------
@@ -63,10 +65,13 @@ class Rig:
         self.skeleton = skeleton
         self.model = ModalModel.from_skeleton(skeleton)
         self.dtype = np.dtype(dtype)
-        self.palette: Palette | None = default_palette(self.model) if self.model.n_modes \
-            else None
         self._skin: ModalSkin | None = None
         self._surfaces: dict[int, SkinHarmonics] = {}
+        if self.model.n_modes and skeleton.vertices is not None and len(skeleton.vertices):
+            # The palette keeps the skin above the floor (docs/design.md#the-floor).
+            self.model.floor = SkinFloor.of_skin(self.skin.vertices, self.skin.displacement)
+        self.palette: Palette | None = default_palette(self.model) if self.model.n_modes \
+            else None
 
     @classmethod
     def from_skeleton(cls, skeleton: Skeleton, dtype=np.float32) -> Rig:

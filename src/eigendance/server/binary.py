@@ -33,6 +33,7 @@ import numpy as np
 
 from eigendance.geometry import bounding_box_diagonal
 from eigendance.modal.bodies import CONSTRAINED_ROWS
+from eigendance.modal.floor import tile_amplitudes
 from eigendance.modal.palette import (
     default_phases,
     joint_bend,
@@ -300,6 +301,7 @@ def rig_bundle(rig, name: str = "rig", revision: int = 0, edited: bool = False) 
         "tau": packed_modes(skin.displacement, n), "rho": packed_modes(skin.rotation, n),
         "frequencies": model.frequencies,
         "amplitudes": single_mode_amplitudes(model), "reach": mode_reach(model),
+        "tile_amplitudes": tile_amplitudes(model, skin, single_mode_amplitudes(model)),
         "phases": default_phases(np.arange(nm)),
         "skin_joints": joints.astype(np.uint32), "skin_weights": weights,
         "bone_matrices": column_major(bones, 1, 2).reshape(-1, 16),
