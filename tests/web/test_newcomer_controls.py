@@ -125,7 +125,7 @@ def test_the_slow_page_notice_agrees_with_the_readout_and_moves_no_tile(browser,
             pytest.skip("this machine draws 16 tiles fast enough: no notice")
         assert places() == before
         compared = 0
-        for _ in range(12):
+        for _ in range(40):  # a loaded machine's readout and notice come and go
             readout, notice, shown = page.evaluate(
                 "[document.getElementById('fps').textContent, "
                 "document.getElementById('notice-text').textContent, "
@@ -134,6 +134,8 @@ def test_the_slow_page_notice_agrees_with_the_readout_and_moves_no_tile(browser,
                 assert f"only {readout.split()[0]} frames per second" in notice, \
                     (readout, notice)
                 compared += 1
+                if compared == 3:
+                    break
             page.wait_for_timeout(400)
         assert compared >= 1  # the notice may go once the rate recovers
     finally:
