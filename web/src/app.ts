@@ -1,8 +1,7 @@
 // The App owns the page: the views, the library, the transport, the viewer and what the page
 // says (messages.ts); it starts the page and moves between models, songs, views and galleries.
 // The header's controls and keys are wired in header.ts, files in files.ts, the frame-rate
-// readout in frame-rate.ts, the export panel in export-panel.ts (after three-gltf-viewer's
-// app.js / viewer.js split).
+// readout in frame-rate.ts, the export panel in export-panel.ts (three-gltf-viewer's split).
 import * as api from "./api";
 import { $, messageOf } from "./dom";
 import { ExportPanel } from "./export-panel";
