@@ -77,3 +77,32 @@ def test_without_the_coupling_the_pieces_come_apart(robot, monkeypatch):
     item = initial_gallery(basis, song, 8)[3]
     times = np.linspace(0, song.duration, 120)
     assert part_drift(rest, basis.faces, positions_at(basis, song, item, times) - rest) > 0.3
+
+
+def blocks_on_a_coarse_base():
+    """MorphStressTest's shape: a base of two-triangle faces (2 × 0.3 × 0.5, a trimesh box) and
+    eight blocks (0.125 wide, 0.125 apart, subdivided) standing on it, every piece its own."""
+    base = trimesh.creation.box([2.0, 0.3, 0.5])
+    blocks = []
+    for i in range(8):
+        block = trimesh.creation.box([0.125, 0.25, 0.25]).subdivide().subdivide()
+        x = -0.875 + i * 0.25  # centres 0.25 apart: gaps of 0.125
+        blocks.append(block.apply_translation([x, 0.15 + 0.125, 0.0]))
+    return trimesh.util.concatenate([base, *blocks])
+
+
+def test_contacts_reach_only_pieces_that_touch():
+    """A coarse piece's long edges must not reach pieces it does not touch: every contact
+    spans at most 1% of the diagonal (before the cap, springs spanned up to 0.35 of this
+    model's 2.13: the base's corners to the blocks, a block's faces to its neighbours), and every
+    block still sits on the base (each block has contacts, and the operator is one piece)."""
+    mesh = blocks_on_a_coarse_base()
+    diagonal = np.linalg.norm(np.ptp(mesh.vertices, axis=0))
+    found = contacts(mesh.vertices, mesh.faces)
+    assert found.distances.max() <= 0.01 * diagonal + 1e-12, found.distances.max()
+    _, labels = components(len(mesh.vertices), mesh.faces)
+    touched = set(labels[found.vertices]) | set(labels[found.faces[:, 0]])
+    assert touched == set(range(9))  # the base and all eight blocks
+    stiffness, _ = operators.laplacian(mesh.vertices, mesh.faces, "cotan")
+    pieces, _ = sp.csgraph.connected_components(abs(stiffness) > 0, directed=False)
+    assert pieces == 1

@@ -19,8 +19,13 @@ from scipy.sparse.csgraph import connected_components
 from eigendance.geometry import bounding_box_diagonal, face_edges
 
 # A vertex touches another piece when its closest point there lies within this many of its own
-# mean edge lengths.
+# mean edge lengths,
 CONTACT_REACH = 2.0
+# each length at most this fraction of the bounding-box diagonal: a coarse piece's long edges
+# (a base of two triangles, a block's two-triangle faces) would otherwise reach pieces it does
+# not touch, up to the whole model, and pin it to them, so that the harmonics tore the outer
+# blocks of MorphStressTest into spikes. 2 × 0.005 = 1% of the diagonal, `part_drift`'s reach.
+TOUCH_LENGTH = 0.005
 # A group of pieces that touches none is joined where it comes within its gap to the nearest
 # group plus this many of each vertex's mean edge lengths.
 JOIN_BAND = 1.0
@@ -176,7 +181,8 @@ def contacts(vertices: np.ndarray, faces: np.ndarray) -> Contacts:
     Returns
     -------
     Contacts (empty for a mesh of one piece): every vertex with another piece's surface
-    within CONTACT_REACH of its mean edge lengths, then the joins.
+    within CONTACT_REACH of its mean edge lengths (each at most TOUCH_LENGTH of the bounding-box
+    diagonal), then the joins.
 
     Example
     -------
@@ -185,8 +191,8 @@ def contacts(vertices: np.ndarray, faces: np.ndarray) -> Contacts:
     >>> lid = box.copy().apply_translation([0, 0, 1])               # sitting on the box
     >>> both = trimesh.util.concatenate([box, lid])
     >>> found = contacts(both.vertices, both.faces)
-    >>> int((found.distances == 0).sum()), len(found)    # the 8 corners that meet, of 16 in reach
-    (8, 16)
+    >>> int((found.distances == 0).sum()), len(found)    # the 8 corners that meet, all in reach
+    (8, 8)
     """
     vertices = np.asarray(vertices, dtype=np.float64)
     faces = np.asarray(faces, dtype=np.int64)
@@ -194,7 +200,8 @@ def contacts(vertices: np.ndarray, faces: np.ndarray) -> Contacts:
     if count < 2:
         return Contacts(np.zeros(0, np.int64), np.zeros((0, 3), np.int64), np.zeros((0, 3)),
                         np.zeros(0))
-    lengths = edge_lengths(vertices, faces)
+    lengths = np.minimum(edge_lengths(vertices, faces),
+                         TOUCH_LENGTH * bounding_box_diagonal(vertices))
     everyone = np.flatnonzero(np.bincount(faces.ravel(), minlength=len(vertices)) > 0)
     found = closest_on_others(vertices, faces, labels, everyone,
                               CONTACT_REACH * lengths[everyone])

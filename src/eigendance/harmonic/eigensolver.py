@@ -30,7 +30,8 @@ from eigendance.harmonic.slicing import BASELINE_SHIFT, band_size, next_shifts, 
 from eigendance.processes import Pool
 
 SOLVERS = ("bands", "eigsh")
-SOLVER_VERSION = 2  # part of every cache key: a new version recomputes cached bases
+SOLVER_VERSION = 3  # part of every cache key: a new version recomputes cached bases (3: the
+# contacts' reach capped at 1% of the diagonal, harmonic.contacts.TOUCH_LENGTH)
 # Meshes of at most this many vertices are solved densely, by both solvers.
 DENSE_VERTICES = 600
 
