@@ -20,7 +20,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
-import { storedSession } from "./session";
+import { loadStartSong, storedSession } from "./session";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { Viewer, softwareRenderer } from "./viewer";
@@ -160,7 +160,7 @@ export class App {
     return this.messages.guard("Could not show this rig", async () => {
       if (!this.started) { // a library with a song and no model: a rig chosen in the menu
         const library = await this.library.refresh();
-        if (library.songs.length) await this.library.loadSong(this.options.song ?? library.songs[0].id);
+        if (library.songs.length) await loadStartSong(this, library);
         this.started = library.songs.length > 0;
       }
       await this.rigs.open(rigId, this.rule?.max ?? 16);
@@ -319,9 +319,9 @@ export class App {
     this.fillSizeMenu(size);
   }
 
-  /** Start with rig `rigId` in its gallery of modes, on the first song (or `?song=`). */
+  /** Start with rig `rigId` in its gallery of modes, on the session's song (or `?song=`). */
   private async loadFirstRig(library: api.Library, rigId: string): Promise<boolean> {
-    await this.library.loadSong(this.options.song ?? library.songs[0].id);
+    await loadStartSong(this, library); // the session's song (session.ts), or the first
     this.started = true;
     const failure = await this.openRig(rigId);
     if (this.options.view === "player") this.setView("player");
@@ -343,8 +343,8 @@ export class App {
   }
 
   /** Load the first mesh and song and show the gallery (at start, or once uploads complete the
-   * library). What a start (or a reload) shows: the first model and song of the library (or
-   * `?mesh=`, `?song=`), the gallery — or the player with a mapping given to `serve` (or
+   * library). What a start (or a reload) shows: the first model of the library, the session's
+   * song or the first (or `?mesh=`, `?song=`), the gallery — or the player with a mapping given to `serve` (or
    * `?mapping=`); mappings added in the page stay in the menu, and do not open by themselves.
    * A rig given first to `serve` (a skinned glTF), or the only kind of model there, opens in
    * its gallery of modes instead. Returns false while the library lacks a model or a song. */
@@ -357,7 +357,7 @@ export class App {
       return false;
     }
     const { options } = this;
-    await this.library.loadSong(options.song ?? library.songs[0].id);
+    await loadStartSong(this, library); // the session's song, paused where it was left
     await this.library.loadMesh(options.mesh ?? library.meshes[0].id);
     this.started = true;
     // The session kept in the browser (session.ts): the generations come back after a reload.

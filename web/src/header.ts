@@ -7,7 +7,7 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
-import { readSession, sessionOf } from "./session";
+import { keepInSession, readSession, resumeSong, sessionOf, songOf } from "./session";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -47,9 +47,12 @@ export function wireHeader(app: App): void {
   });
   $("mute").addEventListener("click", () => toggleMute(app));
   $("loop").addEventListener("click", () => toggleLoop(app));
+  // A song that stops at its end says so (choosing a rig or a view then does not look like the
+  // cause); the hint goes when ▶ plays it again.
+  transport.onEnd = () => messages.hint("the song ended: ▶ plays it again (↻ repeats it)", false);
   for (const id of ["save-session", "rig-save-session"]) { // the harmonics' and a rig's bar
     $(id).addEventListener("click", () => {
-      saveJSON(sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot()),
+      saveJSON(sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot(), songOf(app)),
         fileName(app.rigs.active ? app.rigs.rig?.name ?? "" : app.library.meshName, "session",
           "json"));
     });
@@ -62,14 +65,19 @@ export function wireHeader(app: App): void {
       if (!file) return;
       void messages.guard(`Could not open ${file.name}`, async () => {
         const session = readSession(await file.text());
+        // The song first: choosing it calibrates a new first generation, which the file replaces.
+        const known = await resumeSong(app, session.song, await library.refresh());
         app.gallery.restore(session.histories);
         app.rigs.restore(session.rigs ?? {});
         if (!app.rigs.active) app.gallery.showMesh(library.meshId);
         const count = Object.keys(session.histories).length + Object.keys(session.rigs ?? {}).length;
-        messages.status(`${file.name}: ${count} model(s) restored`);
+        messages.status(`${file.name}: ${count} model(s) restored`
+          + (known ? "" : "; its song is no longer in the library"));
       });
     });
   }
+  // The song chosen and where it plays stay in the session: a reload comes back to them.
+  window.addEventListener("pagehide", () => keepInSession({ song: songOf(app) }));
   for (const id of ["reset-view", "rig-reset-view"]) {
     $(id).addEventListener("click", () => resetView(app));
   }

@@ -1,8 +1,10 @@
 // The session (issue 30): every model's gallery history — its generations, the one on screen and
 // the tiles selected — and every rig's (its dances' generations, the one shown, the dances
-// selected, and the player's mapping with its palette), kept in the browser's storage, so that a
-// reload shows them again, and written to a file (*save session*) that *open session* reads
-// back. Pure but for the storage.
+// selected, and the player's mapping with its palette), and the song chosen with where it was
+// left, kept in the browser's storage, so that a reload shows them again (the song paused where
+// it was), and written to a file (*save session*) that *open session* reads back.
+import type * as api from "./api";
+import type { App } from "./app";
 import type { Mapping } from "./filter";
 import type { Generation } from "./history";
 
@@ -18,21 +20,60 @@ export interface SavedHistory { generations: Generation<Mapping>[]; current: num
 export interface SavedRig { generations: Mapping[][]; generation: number; selected: number[];
   player: { mapping: Mapping; source: string } | null; }
 
+/** The song chosen (the library's id) and where it was left (s). */
+export interface SavedSong { id: string; time: number; }
+
 /** The session file: the gallery history of each model and the galleries of each rig (by the
- * library's ids). */
+ * library's ids), and the song. */
 export interface Session { format: string; version: 1; histories: Record<string, SavedHistory>;
-  rigs?: Record<string, SavedRig>; }
+  rigs?: Record<string, SavedRig>; song?: SavedSong; }
 
 export function sessionOf(histories: Record<string, SavedHistory>,
-                          rigs: Record<string, SavedRig> = {}): Session {
-  return { format: SESSION_FORMAT, version: 1, histories, rigs };
+                          rigs: Record<string, SavedRig> = {}, song?: SavedSong): Session {
+  return { format: SESSION_FORMAT, version: 1, histories, rigs, ...(song ? { song } : {}) };
 }
 
-/** Keep one part of the session in the browser, the other as it is kept. */
+/** Keep one part of the session in the browser, the others as they are kept. */
 export function keepInSession(part: { histories?: Record<string, SavedHistory>;
-  rigs?: Record<string, SavedRig> }): void {
+  rigs?: Record<string, SavedRig>; song?: SavedSong }): void {
   const kept = storedSession();
-  storeSession(sessionOf(part.histories ?? kept?.histories ?? {}, part.rigs ?? kept?.rigs ?? {}));
+  storeSession(sessionOf(part.histories ?? kept?.histories ?? {}, part.rigs ?? kept?.rigs ?? {},
+    part.song ?? kept?.song));
+}
+
+/** The page's song and where it is now (undefined before a song is loaded; its start while a
+ * live input plays, whose clock is not the song's). */
+export function songOf(app: App): SavedSong | undefined {
+  const id = app.library.songId, transport = app.transport;
+  return id ? { id, time: transport.following ? 0 : transport.now() } : undefined;
+}
+
+/** Load the song a start (or a reload) plays: `?song=`, else the session's while the library
+ * still has it, else the library's first; the session's song paused where it was left. */
+export async function loadStartSong(app: App, library: api.Library): Promise<void> {
+  const kept = storedSession()?.song;
+  const known = kept && library.songs.some((song) => song.id === kept.id);
+  await app.library.loadSong(app.options.song ?? (known ? kept.id : library.songs[0].id));
+  if (kept?.id === app.library.songId) seekTo(app, kept.time);
+}
+
+/** A session file's song: chosen as in the song menu (the galleries calibrated on it) when the
+ * library has it and another plays, then paused where it was left. False: not in the library. */
+export async function resumeSong(app: App, song: SavedSong | undefined,
+                                 library: api.Library): Promise<boolean> {
+  if (!song) return true;
+  if (!library.songs.some((item) => item.id === song.id)) return false;
+  if (song.id !== app.library.songId || app.transport.following) await app.changeSong(song.id);
+  app.transport.pause();
+  seekTo(app, song.time);
+  return true;
+}
+
+/** Paused at `time` (s) of the song; at its end, the start. */
+function seekTo(app: App, time: number): void {
+  const duration = app.transport.duration;
+  app.transport.seek(time < duration - 0.5 ? time : 0);
+  app.viewer.requestDraw();
 }
 
 /** A session file's text checked; throws one line saying what is wrong. */
@@ -55,6 +96,10 @@ export function readSession(text: string): Session {
       && g.every((m) => Array.isArray(m?.transfer))) || !Array.isArray(rig.selected)) {
       throw new Error(`the galleries of rig ${id} in this session are not readable`);
     }
+  }
+  const song = session.song;
+  if (song !== undefined && (typeof song?.id !== "string" || !Number.isFinite(song.time))) {
+    throw new Error("the song of this session is not readable");
   }
   return session;
 }

@@ -19,6 +19,8 @@ export class AudioTransport implements Clock {
   loop = false;
   /** Called when playback starts or stops (to show ▶ or ❚❚). */
   onChange: (playing: boolean) => void = () => {};
+  /** Called when the song stopped at its end (not looping): the page says so. */
+  onEnd: () => void = () => {};
 
   private context: AudioContext | null = null;
   /** what plays, at full level: the recorder taps it */
@@ -138,6 +140,7 @@ export class AudioTransport implements Clock {
     this.pause();
     this.offset = 0;
     if (this.loop) this.play(); // the *loop* switch: again from the start
+    else this.onEnd();
   }
 
   /** A stream of what plays (at full level, whatever the volume), for the recorder; `untap`

@@ -51,10 +51,19 @@ describe("AudioTransport", () => {
     expect(transport.ended()).toBe(true);
     for (let i = 0; i < 3; i++) expect(transport.now()).toBe(8); // clamped, still playing
     expect(transport.playing).toBe(true);
+    let ends = 0;
+    transport.onEnd = () => { ends += 1; };
     transport.rewind();
     expect(transport.playing).toBe(false);
     expect(transport.ended()).toBe(false);
     expect(transport.now()).toBe(0);
+    expect(ends).toBe(1); // the page says the song ended
+    transport.loop = true;
+    transport.play();
+    context.currentTime += 9;
+    transport.rewind(); // looping: it plays on from the start, no end to say
+    expect(transport.playing).toBe(true);
+    expect(ends).toBe(1);
   });
 
   it("plays nothing without audio (?render): the time starts at 0", async () => {
