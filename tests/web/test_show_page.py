@@ -101,20 +101,25 @@ def test_the_output_page_has_no_control_and_fills_the_window(show, chromium):
 def test_a_cue_changes_within_one_frame_of_a_downbeat(show, chromium, reference_beats):
     fresh(show["url"])
     page = open_output(chromium, show["url"])
-    control(show["url"], "play")
-    page.wait_for_function("window.eigendanceShow.output.applied.some((a) => a.cue === 1)",
-                           timeout=60_000)
-    applied = page.evaluate("window.eigendanceShow.output.applied.find((a) => a.cue === 1)")
-    beats, downbeats = reference_beats
-    grid = downbeats if len(downbeats) else beats
-    bars = grid if len(downbeats) else beats[::4]  # 4 beats to the bar without bars
-    assert applied["preset"] == "Wide"
-    # cue one lasts one bar from the first bar start: it ends on the second
-    assert 0 <= applied["t"] - bars[1] <= max(applied["frameDt"], 1 / 60) + 1e-3, \
-        (applied, bars[:3])
-    assert state(show["url"])["cue"] == 1  # the page told the server
-    assert page.errors == []
-    page.close()
+    try:  # closed whatever happens: a page left playing would drive the next test's OSC out
+        control(show["url"], "play")
+        page.wait_for_function("window.eigendanceShow.output.applied.some((a) => a.cue === 1)",
+                               timeout=60_000)
+        applied = page.evaluate(
+            "window.eigendanceShow.output.applied.find((a) => a.cue === 1)")
+        beats, downbeats = reference_beats
+        grid = downbeats if len(downbeats) else beats
+        bars = grid if len(downbeats) else beats[::4]  # 4 beats to the bar without bars
+        assert applied["preset"] == "Wide"
+        # cue one lasts one bar from the first bar start: it ends on the second, on the first
+        # frame at or past it (the frame before was short of it; beat times are float32)
+        assert applied["before"] < bars[1] + 1e-4 <= applied["t"] + 2e-4, (applied, bars[:3])
+        # and so within a frame of it (the audio clock steps unevenly on a loaded machine)
+        assert applied["t"] - bars[1] <= max(applied["frameDt"], 1 / 60) + 0.05
+        assert state(show["url"])["cue"] == 1  # the page told the server
+        assert page.errors == []
+    finally:
+        page.close()
 
 
 def test_an_osc_message_changes_the_gain_and_the_output_follows(show, chromium):

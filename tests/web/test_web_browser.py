@@ -154,12 +154,14 @@ def assert_no_band_cut_out(page):
 
 
 def test_every_tile_moves_on_screen_while_a_real_song_plays(browser, live_server):
-    """Every tile's pixels over 3 s of playback of a real recording: each one changes."""
+    """Every tile's pixels over 5 s of playback of a real recording: each one changes."""
     song = songs_of(live_server)[os.path.basename(REAL_SONG)]
     page = open_app(browser, live_server["url"], f"?test&size=4&song={song}&path=cpu")
     page.click("#play")
     snapshots, times, played, layout = [], [], 0.0, None
-    while len(times) < 8 or played < 3.0:  # at least 3 s of song time, 8 pictures
+    # at least 5 s of song time, 12 pictures (a loaded machine draws few: the ripple's most
+    # different pair may be missed in fewer)
+    while len(times) < 12 or played < 5.0:
         page.wait_for_timeout(250)
         info = page.evaluate("window.eigendance.info()")
         if not info["playing"]:  # the end of the recording (4 s): play it again

@@ -30,9 +30,11 @@ export function readOutputOptions(search: string): OutputOptions {
     offset: Number.isFinite(offset) ? Math.min(Math.max(offset, 0), 2000) / 1000 : 0 };
 }
 
-/** One change of cue as applied: for the tests and the benchmark. */
+/** One change of cue as applied, at song time t; `before` the song time of the frame before
+ * (the change came on the first frame at or past its boundary): for the tests and the
+ * benchmark. */
 export interface Applied { cue: number | null; preset: string | null; t: number; at: number;
-  frameDt: number; }
+  frameDt: number; before: number; }
 
 export class ShowOutput {
   state: ShowState | null = null;
@@ -174,6 +176,7 @@ export class ShowOutput {
     this.lastFrame = wall;
     if (this.lastT > t + 0.5) this.cueStart = t; // the song started again
     if (this.app.transport.playing) this.clock.frame(t, performance.timeOrigin + wall);
+    const before = this.lastT;
     this.lastT = t;
     const last = this.gains[this.gains.length - 1];
     if (last && last.drawn === null) last.drawn = performance.timeOrigin + wall;
@@ -181,7 +184,7 @@ export class ShowOutput {
     const pending = this.pending;
     if (pending && t >= pending.at) {
       this.pending = null;
-      void this.apply(pending, t, frameDt);
+      void this.apply(pending, t, frameDt, before);
     }
     const base = this.base;
     const live = isLiveSpectrum(base) && this.app.live.active ? base : null;
@@ -222,13 +225,15 @@ export class ShowOutput {
     }
   }
 
-  private async apply(change: NonNullable<ShowOutput["pending"]>, t: number, frameDt: number) {
+  private async apply(change: NonNullable<ShowOutput["pending"]>, t: number, frameDt: number,
+                      before = t) {
     const app = this.app;
     const state = this.state!;
     const beats = state.fade_beats;
     const tempo = app.motion.spectrum?.tempo || state.tempo || 120;
     const from = change.sameModel ? app.player.prepared : null;
-    this.applied.push({ cue: change.cue, preset: change.preset, t, at: performance.now(), frameDt });
+    this.applied.push({ cue: change.cue, preset: change.preset, t, at: performance.now(), frameDt,
+      before });
     if (change.cue !== this.shownCue) this.cueStart = t;
     this.shownCue = change.cue;
     this.shownPreset = change.preset;
