@@ -185,9 +185,10 @@ def test_every_tile_moves_on_screen_while_a_real_song_plays(browser, live_server
         changed = max((np.abs(a - b).sum(axis=-1) > 30).mean()
                       for i, a in enumerate(images) for b in images[:i])
         print(f"tile {tile + 1}: {changed:.4f} of its pixels change over {played:.1f} s")
-        # A still tile changes no pixel. The test's fourth item is the cat's highest harmonic
-        # (k = 24) alone, a ripple: ~0.3% of a 350×260 tile, its silhouette's edge moving.
-        assert changed > 0.001, f"tile {tile + 1} does not move on screen ({changed:.4f})"
+        # A still tile changes no pixel (0.0000). The test's fourth item is the cat's highest
+        # harmonic (k = 24) alone, a ripple, its silhouette's edge moving: 0.09–2% of a 350×260
+        # tile from one fresh checkout to another (0.09%: some 80 pixels).
+        assert changed > 0.0003, f"tile {tile + 1} does not move on screen ({changed:.4f})"
     assert not page.errors, page.errors
     page.close()
 
