@@ -32,12 +32,11 @@ from eigendance.music.decode import mono, read_audio
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.serve import demo_paths
 
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
+from chromium import FAKE, GRANT, launch  # noqa: E402 - the tests' Chromium, found above
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 CLIP = os.path.join(HERE, "..", "tests", "fixtures", "audio", "kevin_macleod_vibe_ace_0s-21s.ogg")
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run",
-                 "--autoplay-policy=no-user-gesture-required",
-                 "--use-fake-device-for-media-stream", "--use-fake-ui-for-media-stream"]
 RATES = (44100, 48000, 96000)
 
 
@@ -82,8 +81,8 @@ def main() -> None:
     try:
         url = server.stdout.readline().split()[-1]
         with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path="/usr/bin/chromium", args=[
-                *CHROMIUM_ARGS, f"--use-file-for-fake-audio-capture={clip}"])
+            browser = launch(playwright.chromium, *FAKE, GRANT,
+                             f"--use-file-for-fake-audio-capture={clip}")
             page = browser.new_page(viewport={"width": 1280, "height": 800})
             page.goto(f"{url}?test&size={args.size}&scale={args.scale}")
             page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=600_000)

@@ -20,11 +20,13 @@ import soundfile
 from playwright.sync_api import sync_playwright
 from scipy.signal import resample_poly
 
-from bench_live import CHROMIUM_ARGS
 from eigendance.music.decode import mono, read_audio
 from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.serve import demo_paths
 from shared_data import shared_path
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
+from chromium import FAKE, GRANT, launch  # noqa: E402 - the tests' Chromium, found above
 
 
 def clip_of(path: str, folder: str, seconds: float) -> str:
@@ -38,8 +40,8 @@ def clip_of(path: str, folder: str, seconds: float) -> str:
 
 
 def live_tempo(playwright, url: str, clip: str, heard: float) -> float:
-    browser = playwright.chromium.launch(executable_path="/usr/bin/chromium", args=[
-        *CHROMIUM_ARGS, f"--use-file-for-fake-audio-capture={clip}%noloop"])
+    browser = launch(playwright.chromium, *FAKE, GRANT,
+                     f"--use-file-for-fake-audio-capture={clip}%noloop")
     try:
         page = browser.new_page(viewport={"width": 800, "height": 600})
         page.goto(f"{url}?test&source=mic&size=1&scale=0.3")

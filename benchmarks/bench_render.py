@@ -27,9 +27,10 @@ import time
 
 from shared_data import shared_path
 
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
+from chromium import launch  # noqa: E402 - the tests' Chromium, found above
+
 BUNNY = shared_path("meshes", "bunny_stanford.obj")
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run"]
 WIDTH, HEIGHT, FPS = 1280, 720, 30.0
 
 
@@ -114,8 +115,7 @@ def page_speed(mesh: str, k: int, song: str, args) -> float:
     try:
         url = server.stdout.readline().split()[-1]
         with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
-                                                 args=CHROMIUM_ARGS)
+            browser = launch(playwright.chromium)
             page = browser.new_page(viewport={"width": WIDTH, "height": HEIGHT})
             page.goto(url + "?render&bare&view=player")
             page.wait_for_function("window.eigendance && window.eigendance.ready",

@@ -34,8 +34,8 @@ from pythonosc.udp_client import SimpleUDPClient
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests"))
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
 
+from chromium import AUTOPLAY, FAKE, GRANT, launch  # noqa: E402 - the tests' Chromium
 from show_helpers import (  # noqa: E402 - the tests' helpers, found above
-    AUTOPLAY,
     KICK,
     control,
     open_output,
@@ -44,7 +44,7 @@ from show_helpers import (  # noqa: E402 - the tests' helpers, found above
     state,
     write_set,
 )
-from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip  # noqa: E402
+from web_helpers import CAT, fake_clip  # noqa: E402
 
 from eigendance.music.mapping import Mapping  # noqa: E402
 from eigendance.presets.store import Preset, PresetStore  # noqa: E402
@@ -89,9 +89,8 @@ def live_offsets(playwright, folder) -> np.ndarray:
     clip = fake_clip(folder, KICK, seconds=10)
     with osc_listener() as (listen, received), \
             show_server(path, folder, os.path.join(folder, "presets"), listen) as server:
-        chromium = playwright.chromium.launch(
-            executable_path=CHROMIUM,
-            args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"])
+        chromium = launch(playwright.chromium, *FAKE, GRANT,
+                          f"--use-file-for-fake-audio-capture={clip}%noloop")
         page = open_output(chromium, server["url"], width=1280, height=720)
         page.wait_for_function("window.eigendanceShow.output.app.transport.now() > 9",
                                timeout=90_000)
@@ -114,8 +113,7 @@ def main() -> None:
     with osc_listener() as (listen, received), \
             show_server(write_set(folder), folder, presets, listen) as server, \
             sync_playwright() as playwright:
-        chromium = playwright.chromium.launch(executable_path=CHROMIUM,
-                                              args=CHROMIUM_ARGS + AUTOPLAY)
+        chromium = launch(playwright.chromium, *AUTOPLAY)
         url = server["url"]
         page = open_output(chromium, url, width=1280, height=720)
         control(url, "play")

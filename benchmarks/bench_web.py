@@ -44,9 +44,9 @@ from eigendance.music.spectrogram import Spectrogram
 from eigendance.server.serve import demo_paths
 from shared_data import shared_path
 
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run",
-                 "--autoplay-policy=no-user-gesture-required"]
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
+from chromium import AUTOPLAY, launch  # noqa: E402 - the tests' Chromium, found above
+
 # name: (mesh file, or a benchmarks/big_meshes.py name; k; construction)
 CASES = {"demo": (None, 150, "exact"),
          "bunny": (shared_path("meshes", "bunny_stanford.obj"), 300, "exact"),
@@ -132,8 +132,7 @@ def run_case(name: str, mesh: str, k: int, construction: str, song: str, args) -
 
 def browser_timings(url: str, args) -> dict:
     with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
-                                             args=CHROMIUM_ARGS)
+        browser = launch(playwright.chromium, *AUTOPLAY)
         page = browser.new_page(viewport={"width": 1280, "height": 800})
         start = time.perf_counter()
         page.goto(f"{url}?test&size={args.size}&scale=1")

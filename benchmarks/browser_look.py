@@ -12,7 +12,7 @@ import sys
 
 from playwright.sync_api import sync_playwright
 
-from browser_server import CHROMIUM_ARGS
+from browser_server import launch
 
 FRAMES, ROUNDS = 10, 3  # frames per timing; timings per look, alternating (the best is kept)
 
@@ -27,8 +27,7 @@ def look_fps(model: str, song: str, rig: bool, k: int, port: int = 8798) -> dict
     try:
         url = server.stdout.readline().split()[-1]
         with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
-                                                 args=CHROMIUM_ARGS)
+            browser = launch(playwright.chromium)
             page = browser.new_page(viewport={"width": 1280, "height": 800})
             page.goto(f"{url}?test&scale=1")
             page.wait_for_function("window.eigendance && window.eigendance.ready",

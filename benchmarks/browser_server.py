@@ -5,14 +5,15 @@ from __future__ import annotations
 
 import contextlib
 import json
+import os
 import subprocess
 import sys
 import time
 import urllib.request
 
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync"]
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "web"))
+from chromium import launch  # noqa: E402 - the tests' Chromium, found above
+
 RENDERER = """() => {
     const gl = document.createElement('canvas').getContext('webgl2');
     const info = gl.getExtension('WEBGL_debug_renderer_info');
@@ -49,8 +50,7 @@ def gpu_page(url: str, width: int = 1024, height: int = 768):
     from playwright.sync_api import sync_playwright  # the browser benchmarks' alone
 
     with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path="/usr/bin/chromium",
-                                             args=CHROMIUM_ARGS)
+        browser = launch(playwright.chromium)
         try:
             page = browser.new_page(viewport={"width": width, "height": height})
             page.goto(f"{url}?test&path=gpu")

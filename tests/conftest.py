@@ -6,7 +6,7 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "web"))
 
-from web_helpers import CHROMIUM, CHROMIUM_ARGS  # noqa: E402 - after its folder is on the path
+from chromium import CHROMIUM, launch  # noqa: E402 - after its folder is on the path
 
 from helpers import required  # noqa: E402
 
@@ -31,6 +31,6 @@ def browser():
     from playwright.sync_api import sync_playwright  # heavy: only for the browser tests
 
     with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        launched = launch(playwright.chromium)
         yield launched
         launched.close()

@@ -10,14 +10,14 @@ import threading
 import time
 import urllib.request
 
+from chromium import AUTOPLAY, launch
 from pythonosc.dispatcher import Dispatcher
 from pythonosc.osc_server import ThreadingOSCUDPServer
-from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, free_port, running_server
+from web_helpers import CAT, free_port, running_server
 
 from helpers import fixture_path
 
 KICK = fixture_path("audio", "beatnet_808kick120bpm.mp3")  # 120 BPM, 10 s
-AUTOPLAY = ["--autoplay-policy=no-user-gesture-required"]
 
 
 def write_set(folder) -> str:
@@ -90,8 +90,7 @@ def state(url):
 @contextlib.contextmanager
 def sound_chromium(playwright_browser):
     """A Chromium of the session's Playwright that may play sound without a click."""
-    launched = playwright_browser.browser_type.launch(executable_path=CHROMIUM,
-                                                      args=CHROMIUM_ARGS + AUTOPLAY)
+    launched = launch(playwright_browser.browser_type, *AUTOPLAY)
     try:
         yield launched
     finally:

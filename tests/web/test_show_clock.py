@@ -16,6 +16,7 @@ import time
 import numpy as np
 import pytest
 import soundfile
+from chromium import FAKE, GRANT, launch
 from pythonosc.udp_client import SimpleUDPClient
 from show_helpers import (
     KICK,
@@ -26,7 +27,7 @@ from show_helpers import (
     sound_chromium,
     state,
 )
-from web_helpers import CAT, CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip
+from web_helpers import CAT, fake_clip
 
 pytestmark = pytest.mark.web
 
@@ -134,9 +135,8 @@ def test_taps_drive_a_live_input_without_beats(browser, tmp_path):
     silence = os.path.join(folder, "silence.wav")
     soundfile.write(silence, np.zeros(44100 * 20), 44100, subtype="PCM_16")
     with show_server(write_set(folder, 'live = "mic"'), folder, tmp_path / "presets") as server:
-        launched = browser.browser_type.launch(
-            executable_path=CHROMIUM,
-            args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={silence}"])
+        launched = launch(browser.browser_type, *FAKE, GRANT,
+                          f"--use-file-for-fake-audio-capture={silence}")
         try:
             page = open_output(launched, server["url"])
             page.wait_for_function("window.eigendanceShow.output.app.live.active", timeout=90_000)
@@ -158,9 +158,8 @@ def test_live_input_beats_go_out_over_osc(browser, tmp_path):
     with osc_listener(addresses) as (listen, received), \
             show_server(write_set(folder, 'live = "mic"'), folder, tmp_path / "presets",
                         listen) as server:
-        launched = browser.browser_type.launch(
-            executable_path=CHROMIUM,
-            args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}%noloop"])
+        launched = launch(browser.browser_type, *FAKE, GRANT,
+                          f"--use-file-for-fake-audio-capture={clip}%noloop")
         try:
             page = open_output(launched, server["url"])
             control(server["url"], "play")

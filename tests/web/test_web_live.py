@@ -26,7 +26,8 @@ import mir_eval
 import numpy as np
 import pytest
 import soundfile
-from web_helpers import CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip, running_server
+from chromium import FAKE, GRANT, launch
+from web_helpers import fake_clip, running_server
 
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
@@ -43,7 +44,7 @@ SLIP = 30  # frames left out after a slip (a window and 3.75 smoothing time cons
 @contextlib.contextmanager
 def chromium(browser, flags, url, query="?test"):
     """Another Chromium (same Playwright) with these flags, the page open at url + query."""
-    launched = browser.browser_type.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS + flags)
+    launched = launch(browser.browser_type, *flags)
     try:
         page = launched.new_page(viewport={"width": 1000, "height": 700}, accept_downloads=True)
         page.errors = []

@@ -15,9 +15,6 @@ import zipfile
 
 from helpers import start
 
-CHROMIUM = "/usr/bin/chromium"
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run"]
 CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
                    "cat_lowres.obj")
 E2E_K = 24
@@ -115,10 +112,6 @@ def rig_ids_at(url) -> dict:
     """{rig name: id} of the library of the server at url."""
     with urllib.request.urlopen(url + "api/library") as answer:
         return {rig["name"]: rig["id"] for rig in json.load(answer)["rigs"]}
-
-
-FAKE = ["--use-fake-device-for-media-stream", "--autoplay-policy=no-user-gesture-required"]
-GRANT = "--use-fake-ui-for-media-stream"  # Chromium's flags of a fake microphone, allowed
 
 
 def fake_clip(folder, source, rate=44100, seconds=None):
