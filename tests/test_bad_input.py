@@ -11,6 +11,9 @@ import math
 import os
 import re
 import socket
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pygltflib
@@ -23,7 +26,7 @@ from eigendance.cli import build_parser, main
 from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.harmonic.mesh import Mesh
 from eigendance.music.spectrogram import Spectrogram
-from helpers import fixture_path
+from helpers import fixture_path, start
 
 KNIGHT = fixture_path("meshes", "decimated-knight.off")
 SR = 8000
@@ -447,3 +450,44 @@ def test_demo_with_a_cache_folder_that_is_a_file_makes_its_music_for_the_run(tmp
     assert os.path.isfile(mesh) and soundfile.info(song).duration > 10
     assert err.startswith("eigendance: warning: ") and err.count("\n") == 1, err
     assert "cannot write (Not a directory)" in err and cache.read_text() == "not a folder"
+
+
+DEMO_RUN = ("import sys, time; from eigendance.server.serve import demo_paths; "
+            "print(demo_paths()[1], flush=True); time.sleep(float(sys.argv[1]))")
+
+
+def test_the_demo_music_folder_of_a_killed_run_is_swept_by_the_next_run(tmp_path):
+    """A cache that cannot be written: each run makes the demo's music in a folder of its own,
+    which a run killed outright (SIGKILL) cannot remove; the next run removes it (its lock is no
+    longer held), not the folder of a run still going, nor a folder that is not ours."""
+    cache, temporary = tmp_path / "cache", tmp_path / "tmp"
+    cache.write_text("not a folder")
+    temporary.mkdir()
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache), TMPDIR=str(temporary))
+
+    def run_for(seconds):
+        process = start([sys.executable, "-c", DEMO_RUN, str(seconds)], env=env,
+                        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        folder = os.path.dirname(process.stdout.readline().strip())
+        assert os.path.basename(folder).startswith("eigendance-demo-"), folder
+        return process, folder
+
+    killed, killed_folder = run_for(600)
+    killed.kill()
+    killed.wait(10)
+    running, running_folder = run_for(600)
+    foreign = temporary / "eigendance-demo-notours"  # no lock file: not ours to judge
+    foreign.mkdir()
+    hour_ago = time.time() - 3600  # past the minute a new run has to take its lock
+    for folder in (killed_folder, running_folder, foreign):
+        os.utime(folder, (hour_ago, hour_ago))
+    try:
+        assert os.path.isdir(killed_folder)  # SIGKILL: nothing removed it
+        ended, ended_folder = run_for(0)
+        assert ended.wait(60) == 0
+        assert not os.path.exists(killed_folder)
+        assert os.path.isdir(running_folder) and foreign.is_dir()
+        assert not os.path.exists(ended_folder)  # its own, removed at its end
+    finally:
+        running.kill()
+        running.wait(10)

@@ -23,7 +23,6 @@ import shutil
 import signal
 import socket
 import sys
-import tempfile
 import threading
 import time
 from collections.abc import Iterator
@@ -39,10 +38,11 @@ from eigendance.server.connections import MAX_CONNECTIONS, Connection
 from eigendance.server.guard import DEFAULT_HOST
 from eigendance.server.library import Library
 from eigendance.server.workers import warm
-from eigendance.writes import LOCK_NAME, sweep_locked_folders, swept_locked_folder
+from eigendance.writes import LOCK_NAME, locked_folder, sweep_locked_folders, swept_locked_folder
 
 DEFAULT_PORT = 8765
 FOLDER_PREFIX = "eigendance-library-"
+DEMO_PREFIX = "eigendance-demo-"  # the demo's music where the cache cannot hold it
 GRACE_SECONDS = 1.0  # how long open connections may take to finish once the server stops
 # glibc's mallopt parameters (malloc.h) and our values (`return_freed_memory`).
 M_MMAP_THRESHOLD, M_ARENA_MAX = -3, -8
@@ -318,7 +318,9 @@ def terminal_progress(library) -> None:
 
 
 def demo_paths() -> list[str]:
-    """The built-in mesh and the procedural track (written once as WAV into the cache folder).
+    """The built-in mesh and the procedural track (written once as WAV into the cache folder;
+    where it cannot be written, into a `writes.locked_folder` for this run, removed at its end
+    or, after a kill, by the next run's `writes.sweep_locked_folders`).
 
     Returns
     -------
@@ -326,6 +328,7 @@ def demo_paths() -> list[str]:
     """
     mesh = os.fspath(resources.files("eigendance") / "data" / "cat_lowres.obj")
     song = os.path.join(cache_folder(), "demo-music", "eigendance-demo-music.wav")
+    sweep_locked_folders(DEMO_PREFIX)  # those of killed runs
     if os.path.isfile(song):
         return [mesh, song]
     try:
@@ -334,7 +337,8 @@ def demo_paths() -> list[str]:
     except (OSError, InputError) as error:  # a cache folder that is a file, read-only, full
         reason = one_line(error) if isinstance(error, InputError) else \
             f"{os.path.dirname(song)}: cannot write ({error.strerror or one_line(error)})"
-        folder = tempfile.mkdtemp(prefix="eigendance-demo-")
+        folder, lock = locked_folder(DEMO_PREFIX)
+        atexit.register(os.close, lock)  # atexit runs last first: the folder goes, then its lock
         atexit.register(shutil.rmtree, folder, True)
         print(f"eigendance: warning: {reason}; the demo's music is made for this run only "
               "(the cache folder cannot be written)", file=sys.stderr)
