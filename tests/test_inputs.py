@@ -168,6 +168,13 @@ def test_one_basis_for_several_mappings_is_the_one_they_record():
     with pytest.raises(InputError, match=r"different constructions \(exact, reduced\); set "
                                          "construction"):
         shared_choice([*made, *reduced])
+    # and the samples asked: the first mapping's, the others made on other samples said
+    other = Mapping([0.5], [1.0], name="r2000.json", basis=BasisRecord(24, "reduced", 2000))
+    choice, notes = shared_choice([*reduced, other])
+    assert choice == BasisChoice(24, "reduced", 96) and notes == [
+        "r2000.json was made on k = 24 harmonics (reduced, 2000 samples asked); the basis danced "
+        "on has k = 24 harmonics (reduced, 96 samples asked), and the dance differs from the one "
+        "it was made on"]
 
 
 def test_the_problem_is_built_once_and_answers_each_k(monkeypatch, tmp_path):

@@ -7,32 +7,21 @@ Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
 from __future__ import annotations
 
 import base64
-import json
 import os
-import urllib.request
 
 import numpy as np
 import pygltflib
 import pytest
-from web_helpers import CAT, open_app, running_server
+from web_helpers import CAT, library_at, open_app, rig_ids_at, running_server
 
 from helpers import fixture_path
 
 pytestmark = pytest.mark.web
 
 
-def library(url: str) -> dict:
-    with urllib.request.urlopen(url + "api/library") as answer:
-        return json.load(answer)
-
-
-def rig_id(url: str, name: str) -> str:
-    return next(rig["id"] for rig in library(url)["rigs"] if rig["name"] == name)
-
-
 def open_rig_from_menu(page, url: str, name: str) -> None:
     """Choose the rig in the model menu, as a person does, and wait for its mode tiles."""
-    page.select_option("#mesh", f"rig:{rig_id(url, name)}")
+    page.select_option("#mesh", f"rig:{rig_ids_at(url)[name]}")
     page.wait_for_function("document.querySelectorAll('#rig-tiles .rig-tile').length > 0",
                            timeout=60_000)
     page.wait_for_function(f"window.eigendance.rig.info().name === {name!r} && "
@@ -124,7 +113,7 @@ def test_x_while_a_model_computes_removes_that_model(browser, web_files, tmp_pat
             page.wait_for_function("document.getElementById('loading').hidden", timeout=60_000)
             page.wait_for_timeout(500)
             assert page.locator("#error").is_hidden(), page.locator("#error-text").text_content()
-            assert [m["name"] for m in library(server["url"])["meshes"]] == ["cat_lowres.obj"]
+            assert [m["name"] for m in library_at(server["url"])["meshes"]] == ["cat_lowres.obj"]
             assert page.locator("#mesh option:checked").text_content() == "cat_lowres.obj"
             assert not page.errors, page.errors
         finally:
@@ -170,7 +159,7 @@ def test_every_tile_of_every_page_of_every_shared_rig_moves(browser, web_files, 
     with running_server([*files, web_files["song"]], tmp_path, web_files["cache"]) as server:
         page = open_app(browser, server["url"], "?test", 1280, 800)
         try:
-            rigs = {rig["name"]: rig["id"] for rig in library(server["url"])["rigs"]}
+            rigs = rig_ids_at(server["url"])
             still = []
             for path in files:
                 name = os.path.basename(path)
@@ -268,7 +257,7 @@ def test_each_rig_fills_its_mode_tiles(browser, web_files, tmp_path):
         try:
             for path in paths:
                 name = os.path.basename(path)
-                page.select_option("#mesh", f"rig:{rig_id(server['url'], name)}")
+                page.select_option("#mesh", f"rig:{rig_ids_at(server['url'])[name]}")
                 page.wait_for_function(f"window.eigendance.rig.info().name === '{name}' && "
                                        "document.getElementById('loading').hidden",
                                        timeout=60_000)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import time
 import urllib.request
 
 import numpy as np
@@ -17,7 +18,7 @@ import pytest
 from test_look_page import MODEL as LOOK_MODEL
 from test_look_page import page_picture
 from test_web_mapping_basis import assert_player_shows
-from web_helpers import CAT, E2E_K, open_app, running_server
+from web_helpers import CAT, E2E_K, library_at, open_app, running_server
 
 from eigendance.cli import main
 from eigendance.harmonic.basis import HarmonicBasis
@@ -123,6 +124,24 @@ def test_a_mapping_saved_on_a_reduced_basis_dances_the_same_under_animate(
     assert "note" not in capsys.readouterr().err  # the mapping's own basis, solved the same
     assert_player_shows(reduced_page, load_animation(output), basis)
     reduced_page.evaluate("window.eigendance.setView('gallery')")
+
+
+def test_serve_solves_on_the_samples_a_mapping_records(web_files, tmp_path):
+    """`basis --samples N` → `gallery` → a mapping recording N samples: `serve` with it asks the
+    reduced basis for those samples, as it follows the k and the construction it records."""
+    recorded = 1500  # not the default for k = 24 (SAMPLES)
+    path = tmp_path / "made-on-1500.json"
+    Mapping(np.linspace(0, 0.5, 64), np.full(E2E_K, 0.5),
+            basis=BasisRecord(E2E_K, "reduced", recorded)).save(path)
+    with running_server([CAT, web_files["song"], str(path)], tmp_path, web_files["cache"]) \
+            as server:
+        while not (mesh := library_at(server["url"])["meshes"][0])["ready"]:
+            time.sleep(0.5)
+        with urllib.request.urlopen(server["url"] + f"api/meshes/{mesh['id']}/basis.bin") \
+                as answer:
+            meta, _ = unpack(answer.read())
+    assert (meta["k"], meta["construction"], meta["samples"]) == (E2E_K, "reduced", recorded)
+    assert abs(meta["placed"] - recorded) <= 0.05 * recorded  # the grid places about as many
 
 
 @pytest.fixture(scope="module")

@@ -3,12 +3,9 @@ lose it, the page moves on to a model or song that is left, and the last one can
 
 from __future__ import annotations
 
-import json
-import urllib.request
-
 import numpy as np
 import pytest
-from web_helpers import CAT, E2E_K, open_app, running_server
+from web_helpers import CAT, E2E_K, library_at, open_app, running_server
 
 from eigendance.music.mapping import Mapping
 
@@ -23,11 +20,6 @@ def own_server(web_files, tmp_path):
     with running_server([CAT, web_files["sphere"], web_files["song"], str(mapping), "-k",
                          str(E2E_K)], tmp_path, web_files["cache"]) as server:
         yield server
-
-
-def library(url: str) -> dict:
-    with urllib.request.urlopen(url + "api/library") as answer:
-        return json.load(answer)
 
 
 def menu(page, select_id: str) -> list[str]:
@@ -48,7 +40,7 @@ def test_remove_buttons_take_items_out_of_the_library_and_the_menus(browser, own
                                ".includes('removed from the library')", timeout=60_000)
         assert page.evaluate("window.eigendance.info().meshId") != first
         assert menu(page, "mesh") == ["sphere.obj"]
-        assert [m["name"] for m in library(url)["meshes"]] == ["sphere.obj"]
+        assert [m["name"] for m in library_at(url)["meshes"]] == ["sphere.obj"]
         assert page.evaluate("window.eigendance.info().tiles") == 2
         # The last model and the only song stay: their buttons are disabled and say why.
         for kind in ("mesh", "song"):
@@ -60,7 +52,7 @@ def test_remove_buttons_take_items_out_of_the_library_and_the_menus(browser, own
         page.click("#remove-mapping")
         page.wait_for_function("document.getElementById('remove-mapping').hidden",
                                timeout=10_000)
-        assert library(url)["mappings"] == []
+        assert library_at(url)["mappings"] == []
         assert page.evaluate("window.eigendance.info().error") is None
         assert page.errors == []
     finally:

@@ -7,26 +7,16 @@ test_web_recording.py.)"""
 from __future__ import annotations
 
 import json
-import urllib.request
 
 import numpy as np
 import pytest
-from web_helpers import CAT, E2E_K, open_app, running_server
+from web_helpers import CAT, E2E_K, open_app, rig_ids_at, running_server
 
 from eigendance.modal.rig import Rig
 from eigendance.modal.sample_rigs import sample_rig
 from eigendance.music.mapping import Mapping
 
 pytestmark = pytest.mark.web
-
-
-def library_of(url: str) -> dict:
-    with urllib.request.urlopen(url + "api/library") as answer:
-        return json.load(answer)
-
-
-def rig_id(url: str, name: str) -> str:
-    return next(rig["id"] for rig in library_of(url)["rigs"] if rig["name"] == name)
 
 
 def test_the_status_line_stops_saying_press_play_once_the_song_plays(browser, live_server):
@@ -96,7 +86,7 @@ def test_rig_frequencies_are_shown_as_played_everywhere(browser, live_server):
     time scale, on its tile, in the palette and in the rig's line (loop16: s = 1.77)."""
     url = live_server["url"]
     page = open_app(browser, url, "?test&path=cpu", 1100, 760)
-    page.evaluate(f"window.eigendance.rig.open('{rig_id(url, 'loop16')}')")
+    page.evaluate(f"window.eigendance.rig.open('{rig_ids_at(url)['loop16']}')")
     mapping = page.evaluate("window.eigendance.rig.playerMapping()")
     scale = mapping["modes"]["time_scale"]
     rig = Rig.from_skeleton(sample_rig("loop16"))
@@ -116,7 +106,7 @@ def test_rig_frequencies_are_shown_as_played_everywhere(browser, live_server):
 def test_each_dance_says_what_it_drives_and_loop4s_dances_differ(browser, live_server):
     url = live_server["url"]
     page = open_app(browser, url, "?test&path=cpu", 1100, 760)
-    page.evaluate(f"window.eigendance.rig.open('{rig_id(url, 'loop8')}')")
+    page.evaluate(f"window.eigendance.rig.open('{rig_ids_at(url)['loop8']}')")
     page.evaluate("window.eigendance.rig.setMode('dances')")
     labels = page.evaluate("window.eigendance.rig.labels()")
     dances = page.evaluate("window.eigendance.rig.info().tiles")
@@ -135,7 +125,7 @@ def test_each_dance_says_what_it_drives_and_loop4s_dances_differ(browser, live_s
         assert numbers == driven, (label, driven)
     assert len(set(labels)) > 1, labels  # not every dance "modes 1–5"
     # loop4 has one mode: its dances must still differ (their own tempo and phase).
-    page.evaluate(f"window.eigendance.rig.open('{rig_id(url, 'loop4')}')")
+    page.evaluate(f"window.eigendance.rig.open('{rig_ids_at(url)['loop4']}')")
     page.evaluate("window.eigendance.rig.setMode('dances')")
     # (the ring stands on its floor, which holds its sway small: docs/design.md#the-floor)
     times = [[np.array(p) for p in page.evaluate(f"window.eigendance.rig.readTiles({t})")]
@@ -199,7 +189,7 @@ def test_a_reload_starts_in_the_gallery_after_a_mapping_was_dropped(browser, own
 
 def test_a_reload_says_that_a_rigs_pose_edits_were_kept(browser, own_server):
     url = own_server["url"]
-    chain = rig_id(url, "chain")
+    chain = rig_ids_at(url)["chain"]
     page = open_app(browser, url, "?test&size=2&path=cpu")
     page.evaluate(f"window.eigendance.rig.open('{chain}')")
     assert page.evaluate("window.eigendance.rig.pose(0, [0, 0, 0.5])") is None

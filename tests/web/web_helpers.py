@@ -108,10 +108,15 @@ def pinned_gpu_app(browser, url):
     page.close()
 
 
+def library_at(url) -> dict:
+    """GET api/library of the server at url."""
+    with urllib.request.urlopen(url + "api/library") as answer:
+        return json.load(answer)
+
+
 def rig_ids_at(url) -> dict:
     """{rig name: id} of the library of the server at url."""
-    with urllib.request.urlopen(url + "api/library") as answer:
-        return {rig["name"]: rig["id"] for rig in json.load(answer)["rigs"]}
+    return {rig["name"]: rig["id"] for rig in library_at(url)["rigs"]}
 
 
 def fake_clip(folder, source, rate=44100, seconds=None):

@@ -118,7 +118,7 @@ def serve(args, paths, announce: str, setlist=None) -> None:
         print(warning, file=sys.stderr)
     with library_session(k=choice.k, max_upload_bytes=args.max_upload_mb << 20,
                          memory_budget=args.max_memory_mb << 20,
-                         construction=choice.construction) as library:
+                         construction=choice.construction, samples=choice.samples) as library:
         terminal_progress(library)
         for path in files:
             library.add_path(path)

@@ -191,8 +191,9 @@ def shared_choice(mappings, k: int | None = None, construction: str | None = Non
 
     Returns
     -------
-    (BasisChoice without its note, notes): one line (`basis_choice`'s) for each mapping made
-    on another basis than the one chosen.
+    (BasisChoice without its note, notes): one line (`basis_choice`'s, or `record_note`'s for
+    other samples asked: the first mapping's are followed) for each mapping made on another
+    basis than the one chosen.
 
     Raises
     ------
@@ -219,5 +220,7 @@ def shared_choice(mappings, k: int | None = None, construction: str | None = Non
     choices = [basis_choice(mapping, k, construction) for mapping in recorded] or \
         [basis_choice(None, k, construction)]
     first = choices[0]
-    notes = [choice.note for choice in choices if choice.note]
-    return BasisChoice(first.k, first.construction, first.samples), notes
+    chosen = BasisRecord(first.k, first.construction, first.samples)  # the first's samples
+    notes = [choice.note or record_note(mapping, chosen)
+             for mapping, choice in zip(recorded, choices, strict=False)]
+    return BasisChoice(first.k, first.construction, first.samples), [note for note in notes if note]

@@ -64,7 +64,7 @@ class ReadMesh:
 
 
 def read_file(path: str, name: str, parsed: str, k: int, construction: str = "auto",
-              as_mesh: bool = False) -> tuple[str, object]:
+              as_mesh: bool = False, samples: int | None = None) -> tuple[str, object]:
     """A library file classified by its content and read once (`inputs.model`): a mapping's
     document, a rig's skeleton, or a mesh, whose `HarmonicProblem` is saved to `parsed` (its
     construction for k decided) and summarised (`ReadMesh`). A glTF whose skin cannot be read
@@ -78,6 +78,7 @@ def read_file(path: str, name: str, parsed: str, k: int, construction: str = "au
     k : the harmonics asked for a mesh's basis.
     construction : "auto", "exact" or "reduced": the mesh's basis.
     as_mesh : read a skinned glTF as a mesh (its skin could not be analysed).
+    samples : the samples a reduced basis asks for (None: `reduced.sample_count`).
 
     Returns
     -------
@@ -97,7 +98,7 @@ def read_file(path: str, name: str, parsed: str, k: int, construction: str = "au
         except InputError:
             if suffix_of(name) not in GLTF_SUFFIXES:
                 raise
-    problem = read_model(path, name, "mesh", construction=construction).problem
+    problem = read_model(path, name, "mesh", construction=construction, samples=samples).problem
     mesh = problem.mesh
     k = max(2, min(k, mesh.n - 2))
     chosen = problem.construction_for(k)

@@ -55,6 +55,7 @@ class Intake:
     k : harmonics per mesh basis.
     spectrogram_options : options of `Spectrogram.from_file`.
     construction : "auto", "exact" or "reduced": how each mesh's basis is solved.
+    samples : the samples a reduced basis asks for (None: `reduced.sample_count`).
     unpacked_limit : the most bytes a model's zip may unpack to.
     run : how to call `server.analysis` (`Library.run`: in a worker process; default
         `rigs.direct`: here).
@@ -62,9 +63,10 @@ class Intake:
 
     def __init__(self, shelf: Shelf, solver: BasisSolver, k: int,
                  spectrogram_options: dict | None = None, construction: str = "auto",
-                 unpacked_limit: int = 256 << 20, run: rigs.Run = rigs.direct):
+                 unpacked_limit: int = 256 << 20, run: rigs.Run = rigs.direct,
+                 samples: int | None = None):
         self.shelf, self.solver, self.k, self.run = shelf, solver, k, run
-        self.construction = construction
+        self.construction, self.samples = construction, samples
         self.spectrogram_options = spectrogram_options or {}
         self.unpacked_limit = unpacked_limit
 
@@ -196,7 +198,7 @@ class Intake:
         parsed = os.path.join(self.shelf.folder, f"parsed-{new_id()}.npz")  # a mesh's problem
         try:
             kind, value = self.analysed(analysis.read_file, path, name, parsed, k or self.k,
-                                        self.construction)
+                                        self.construction, False, self.samples)
             if kind == "mapping":
                 return self.add_mapping(value, name, origin)
             if kind == "mesh":
@@ -208,7 +210,7 @@ class Intake:
                     raise
             # a skin that cannot be analysed: the glTF dances as a mesh
             _, mesh = self.analysed(analysis.read_file, path, name, parsed, k or self.k,
-                                    self.construction, True)
+                                    self.construction, True, self.samples)
             return self.add_mesh(mesh, path, key), True
         except BaseException:
             self.shelf.discard(parsed)  # no solve queued: nobody else removes it

@@ -46,6 +46,7 @@ class Library:
     spectrogram_options : options of `Spectrogram.from_file`.
     construction : how mesh bases are solved: "auto" (docs/design.md#reduced-basis), "exact" or
         "reduced".
+    samples : the samples a reduced basis asks for (None: `reduced.sample_count`).
 
     Attributes: shelf, intake, solver (the parts); folder, k, max_upload_bytes;
     meshes, songs, mappings, rigs ({id: item}) and budget, as the shelf holds them.
@@ -53,14 +54,14 @@ class Library:
 
     def __init__(self, folder: str, k: int = DEFAULT_K, max_upload_bytes: int = 64 << 20,
                  memory_budget: int = DEFAULT_BUDGET, spectrogram_options: dict | None = None,
-                 construction: str = "auto"):
+                 construction: str = "auto", samples: int | None = None):
         os.makedirs(folder, exist_ok=True)
         self.folder, self.k, self.max_upload_bytes = folder, k, max_upload_bytes
         self.shelf = Shelf(folder, Budget(memory_budget))
         self.solver = BasisSolver(self.shelf.recharge, self.shelf.public, self.shelf.discard)
         self.shelf.removed = self.solver.forget
         self.intake = Intake(self.shelf, self.solver, k, spectrogram_options, construction,
-                             UNPACKED_FACTOR * max_upload_bytes, self.run)
+                             UNPACKED_FACTOR * max_upload_bytes, self.run, samples)
         self.meshes, self.songs = self.shelf.meshes, self.shelf.songs
         self.mappings, self.rigs, self.budget = self.shelf.mappings, self.shelf.rigs, \
             self.shelf.budget
