@@ -261,4 +261,18 @@ def test_the_control_page_lists_the_cues_and_moves_the_show(show, chromium):
     page.keyboard.press("k")
     page.wait_for_function("document.getElementById('show-blackout').classList.contains('active')")
     control(show["url"], "blackout", False)
+    # C loops the cue, L the song: each key does one thing (L once did both)
+    loop_cue = "document.getElementById('show-loop-cue').classList.contains('active')"
+    page.keyboard.press("c")
+    page.wait_for_function(loop_cue)
+    page.keyboard.press("l")
+    page.wait_for_function("document.getElementById('loop').ariaPressed === 'true'")
+    page.keyboard.press("c")
+    page.wait_for_function(f"!{loop_cue}")
+    assert state(show["url"])["loop_cue"] is False  # toggled twice, by C alone
+    page.keyboard.press("?")
+    help_rows = page.locator("#help tr").all_inner_texts()
+    assert any(row.split() == ["L", "loop", "the", "song"] for row in help_rows), help_rows
+    assert any(row.split() == ["C", "loop", "this", "cue"] for row in help_rows), help_rows
+    page.keyboard.press("Escape")
     page.close()

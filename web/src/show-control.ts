@@ -3,14 +3,19 @@
 // control goes to the server (`POST api/show/control`), which the output page (/show, here or
 // in another browser) follows; the panel follows the server too.
 import * as api from "./api";
+import { addKeysToHelp, forThePage, keyName } from "./keys";
+import type { KeyRow } from "./keys";
 import type { ShowState } from "./show-timing";
 
-/** The performer's keys, listed in the help (they leave the page's own keys alone). */
-export const SHOW_KEYS: [string, string, string][] = [
-  ["PageDown", ".", "next cue"], ["PageUp", ",", "previous cue"],
-  ["1", "9", "preset slots 1–9"], ["T", "", "tap tempo (the show's beats)"],
-  ["A", "", "auto: the song's own beats again"], ["K", "", "blackout"],
-  ["L", "", "loop this cue"], ["O", "", "the output page (/show)"],
+/** The performer's keys (as keys.ts's rows) and the control each sends ("slot": the key's
+ * number; "output": the output page opens); the help lists them. They leave the page's own
+ * keys alone (keys.ts; test/keys.test.ts). */
+export const SHOW_KEYS: readonly (readonly [...KeyRow, string])[] = [
+  [["PageDown", "."], "next cue", "next"], [["PageUp", ","], "previous cue", "prev"],
+  [["1", "2", "3", "4", "5", "6", "7", "8", "9"], "preset slots 1–9", "slot"],
+  [["t"], "tap tempo (the show's beats)", "tap"], [["a"], "auto: the song's own beats again", "auto"],
+  [["k"], "blackout", "blackout"], [["c"], "loop this cue", "loop_cue"],
+  [["o"], "the output page (/show)", "output"],
 ];
 
 export async function control(action: string, value?: unknown): Promise<ShowState | null> {
@@ -39,7 +44,7 @@ export class ShowPanel {
       <div class="row">
         <button id="show-prev" title="previous cue (PageUp or ,)">◀ cue</button>
         <button id="show-next" title="next cue, on the next downbeat (PageDown or .)">cue ▶</button>
-        <button id="show-loop-cue" title="stay on this cue when it ends (L)">loop cue</button>
+        <button id="show-loop-cue" title="stay on this cue when it ends (C)">loop cue</button>
         <button id="show-loop-set" title="after the last cue, the first again">loop set</button>
       </div>
       <div class="row">
@@ -116,33 +121,17 @@ export class ShowPanel {
 
   /** The performer's keys (not while typing, not with a modifier). */
   private key(e: KeyboardEvent): void {
-    const target = e.target as HTMLElement;
-    if (e.ctrlKey || e.metaKey || e.altKey || target instanceof HTMLTextAreaElement
-      || (target instanceof HTMLInputElement && !["range", "checkbox", "button"].includes(target.type))) {
-      return;
-    }
-    const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
-    const actions: Record<string, () => void> = {
-      PageDown: () => void control("next"), ".": () => void control("next"),
-      PageUp: () => void control("prev"), ",": () => void control("prev"),
-      t: () => void control("tap"), a: () => void control("auto"),
-      k: () => void control("blackout"),
-      l: () => void control("loop_cue"), o: () => void window.open("show", "eigendance-show"),
-    };
-    const action = /^[1-9]$/.test(key) ? () => void control("slot", Number(key)) : actions[key];
+    if (!forThePage(e)) return;
+    const key = keyName(e);
+    const action = SHOW_KEYS.find(([keys]) => keys.includes(key))?.[2];
     if (!action) return;
     e.preventDefault();
-    action();
+    if (action === "output") window.open("show", "eigendance-show");
+    else void control(action, action === "slot" ? Number(key) : undefined);
   }
 }
 
 /** The show's keys as rows of the help's table. */
-export function addKeysToHelp(): void {
-  const table = document.querySelector("#help table");
-  if (!table) return;
-  for (const [a, b, what] of SHOW_KEYS) {
-    const row = document.createElement("tr");
-    row.innerHTML = `<td><kbd>${a}</kbd>${b ? ` <kbd>${b}</kbd>` : ""}</td><td>${what}</td>`;
-    table.append(row);
-  }
+export function addShowKeysToHelp(): void {
+  addKeysToHelp(SHOW_KEYS.map(([keys, what]) => [keys, what] as const));
 }

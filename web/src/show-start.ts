@@ -4,7 +4,7 @@ import { App } from "./app";
 import * as api from "./api";
 import type { Options } from "./options";
 import { PresetsPanel } from "./presets-panel";
-import { ShowPanel, addKeysToHelp } from "./show-control";
+import { ShowPanel, addShowKeysToHelp } from "./show-control";
 import { MidiLearn } from "./show-midi";
 import { ShowOutput, readOutputOptions } from "./show-output";
 import type { ShowState } from "./show-timing";
@@ -39,7 +39,7 @@ export function startControl(app: App): void {
   const presets = new PresetsPanel(app);
   const midi = new MidiLearn();
   window.eigendanceShow = { panel, presets, midi };
-  addKeysToHelp();
+  addShowKeysToHelp();
   // the studio previews what the show plays: a new preset (a slot key, OSC) in its player
   panel.onPreset = (name) => { if (name) void presets.play(name).catch(() => {}); };
   void panel.start();
