@@ -187,3 +187,47 @@ def test_rig_dances_breed_with_their_surface_genes_as_python_does(page, live_ser
     page.wait_for_function("document.getElementById('rig-surface-dance').disabled")
     assert page.evaluate(f"{hooks}.playerMapping()").get("surface") is None
     assert page.evaluate(f"{hooks}.dance({crossed})").get("surface") is None
+
+
+def test_a_preset_reopens_with_its_rippling_skin(page, live_server):
+    """A rig's dance saved as a preset while its skin ripples plays again rippling by the same
+    genes, the surface turned on for them (the presets panel's ▶; a show's cue opens its preset
+    the same way); a preset of the bones alone plays with the skin still."""
+    hooks = "window.eigendance.rig"
+    assert page.evaluate(f"{hooks}.open('{rig_ids_at(live_server['url'])['hand']}')") is None
+    page.evaluate(f"{hooks}.setView('player')")
+    diagonal = page.evaluate(f"{hooks}.info()")["diagonal"]
+    surface_on = "document.getElementById('rig-surface').checked"
+    enabled = "!document.getElementById('rig-surface-dance').disabled"
+
+    def positions():
+        return np.array(page.evaluate(f"{hooks}.readPositions('player', {TIMES[1]})"))
+
+    def save(name):
+        page.fill("#preset-name", name)
+        page.click("#preset-save")
+        page.wait_for_selector(f'#preset-list .preset[data-name="{name}"]')
+
+    page.click("#presets-button")
+    save("Still hand")
+    still = positions()
+    page.evaluate(SWITCH, True)
+    page.wait_for_function(enabled)
+    page.select_option("#rig-surface-dance", "2")  # the surface's third dance, not the first
+    rippling, rippled = page.evaluate(f"{hooks}.playerMapping()"), positions()
+    assert np.abs(rippled - still).max() > 1e-3 * diagonal
+    save("Rippling hand")
+    page.evaluate(SWITCH, False)
+    page.wait_for_function(f"!{enabled}")
+
+    page.click('#preset-list .preset[data-name="Rippling hand"] .play')
+    page.wait_for_function(f"{surface_on} && {enabled}")
+    reopened = page.evaluate(f"{hooks}.playerMapping()")
+    assert Mapping.from_json(reopened["surface"]).to_json() == \
+        Mapping.from_json(rippling["surface"]).to_json()
+    np.testing.assert_allclose(positions(), rippled, atol=1e-5 * diagonal)
+    page.click('#preset-list .preset[data-name="Still hand"] .play')
+    page.wait_for_function(f"!{surface_on} && !{enabled}")
+    assert page.evaluate(f"{hooks}.playerMapping()").get("surface") is None
+    np.testing.assert_allclose(positions(), still, atol=1e-5 * diagonal)
+    page.click("#presets-button")

@@ -81,7 +81,7 @@ export class PresetsPanel {
     const app = this.app;
     const query = app.rigs.active && app.rigs.rig ? `rig=${app.rigs.rig.id}` : `mesh=${app.library.meshId}`;
     const preset = await api.getJSON<{ mapping: Mapping }>(`${path(name)}?${query}`);
-    if (app.rigs.active) app.rigs.player.show(preset.mapping, name);
+    if (app.rigs.active) await app.rigs.openDance(preset.mapping, name); // with its surface
     else app.open(preset.mapping, `preset ${name}`);
   }
 

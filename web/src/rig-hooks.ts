@@ -82,8 +82,9 @@ function rigControlHooks(app: App) {
     combine: () => rigs.combine(rigs.gallery.selection),
     breed: (seed?: number) => app.messages.guard("Breeding failed", () => rigs.gallery.breed(seed)),
     openDance: (index: number) => {
-      rigs.openDance(rigs.gallery.dance(index), `dance ${index + 1}`);
+      const opened = rigs.openDance(rigs.gallery.dance(index), `dance ${index + 1}`);
       app.setView("player");
+      return opened;
     },
     /** Dance `index` as its tile's *save* writes it (with its surface genes while on). */
     dance: (index: number) => rigs.gallery.dance(index),

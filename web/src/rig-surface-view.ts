@@ -87,10 +87,18 @@ export class RigSurfaceView {
     this.events.dances(this.dances);
   }
 
-  /** The player opened a dance: while on, the skin ripples by its surface genes (a bred one
-   * joins the menu). */
-  playGenes(genes: Mapping | null): void {
-    if (!this.current || !genes) return;
+  /** The player opened a dance: the skin ripples by its surface genes, the surface turned on
+   * for them (a bred one joins the menu); without genes the surface is turned off. */
+  async follow(genes: Mapping | null): Promise<void> {
+    if ((genes !== null) !== (this.current !== null)) {
+      $<HTMLInputElement>("rig-surface").checked = genes !== null;
+      await this.switchTo(genes !== null);
+    }
+    if (genes) this.playGenes(genes);
+  }
+
+  private playGenes(genes: Mapping): void {
+    if (!this.current) return;
     let index = this.menu.indexOf(genes);
     if (index < 0) {
       index = this.menu.push(genes) - 1;

@@ -66,7 +66,8 @@ export class RigStage {
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,
       songId: () => events.songId(),
       combine: (modes) => this.combine(modes),
-      open: (mapping, source) => this.openDance(mapping, source),
+      open: (mapping, source) => void events.guard("Could not open the dance",
+        () => this.openDance(mapping, source)),
       timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1,
       changed: () => this.keep() });
     this.player = new RigPlayerView({ requestDraw, guard: events.guard,
@@ -183,12 +184,13 @@ export class RigStage {
       explorer: { harmonic: -1, scale: 1 } };
   }
 
-  /** Play a dance in the player: its bones' mapping, and its surface genes while the surface
-   * is on. */
-  openDance(mapping: RigDance, source: string): void {
+  /** Play a dance in the player (a tile, a preset, a show's cue) as it was made: its bones'
+   * mapping, and its skin rippling by its surface genes (the surface turned on for them) or
+   * still (the surface off) when it has none. */
+  async openDance(mapping: RigDance, source: string): Promise<void> {
     this.player.show(mapping, source);
-    this.surface.playGenes(mapping.surface ?? null);
     this.setView("player");
+    await this.surface.follow(mapping.surface ?? null);
   }
 
   /** What ripples the skin of the player (the surface section's choice) or of a dance tile

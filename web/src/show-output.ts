@@ -255,7 +255,7 @@ export class ShowOutput {
       if (state.playing) app.play();
     }
     if (app.rigs.active) { // a rig: its own player (cut at the bar: no crossfade, no gain)
-      if (change.mapping) app.rigs.player.show(change.mapping, change.preset ?? "");
+      if (change.mapping) await app.rigs.openDance(change.mapping, change.preset ?? "");
     } else {
       const mapping = change.mapping ?? app.gallery.mappings()[0] ?? null;
       if (mapping) app.open(mapping, change.preset ?? "");
