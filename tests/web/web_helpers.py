@@ -33,9 +33,12 @@ def free_port() -> int:
 def running_server(arguments, folder, cache, command="serve", ready="serving on"):
     """`eigendance serve ARGUMENTS --port P` (or another COMMAND announcing READY) as a
     subprocess on a free port of 127.0.0.1, its log in FOLDER/server.log and its basis cache in
-    CACHE: {url, port, process, announce}."""
+    CACHE, its presets in FOLDER/presets unless ARGUMENTS say --presets (never the user's: a
+    session's server starts before a test's own folders are set): {url, port, process,
+    announce}."""
     port = free_port()
-    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache))
+    env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache),
+               EIGENDANCE_PRESETS_DIR=os.path.join(folder, "presets"))
     command = [sys.executable, "-m", "eigendance.cli", command, *arguments, "--port", str(port)]
     log_path = os.path.join(folder, "server.log")
     with open(log_path, "w") as log:
