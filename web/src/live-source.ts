@@ -72,7 +72,11 @@ export class LiveSource {
     }
     if (offersTabAudio()) group.appendChild(new Option("tab or system audio", `${LIVE_PREFIX}tab`));
     menu.appendChild(group);
-    if (this.input) menu.value = this.menuValue(this.input.choice);
+    if (!this.input) return;
+    menu.value = this.menuValue(this.input.choice);
+    // the menu names what plays, as it names a song (the live bar beside it: tempo, latency)
+    const chosen = menu.selectedOptions[0];
+    if (chosen) chosen.textContent = `● ${this.input.name}`;
   }
 
   async listDevices(): Promise<void> {
@@ -146,19 +150,23 @@ export class LiveSource {
       this.host.transport.onChange(input.playing);
     }
     const take = input.take.spectrum;
-    const tempo = take.tempo > 0 ? `${take.tempo.toFixed(0)} BPM` : "listening for a beat";
+    const tempo = take.tempo > 0 ? `${take.tempo.toFixed(0)} BPM` : "no beat";
     const frame = this.host.fps() > 0 ? 1 / this.host.fps() : 0;
     const latency = input.latency + frame;
-    const silent = input.stats.firstSound < 0 && input.stats.samples > input.take.spectrum.rate
-      ? " · no sound yet" : "";
-    const dropouts = input.stats.dropouts ? ` · ${input.stats.dropouts} dropouts` : "";
-    $("live-info").textContent = `● ${input.name} · ${tempo} · latency ${(latency * 1000)
-      .toFixed(0)} ms${silent}${dropouts}`;
-    $("live-info").title = `input ${(input.inputLatency * 1000).toFixed(0)} ms + analysis `
+    const silent = input.stats.firstSound < 0 && input.stats.samples > input.take.spectrum.rate;
+    const dropouts = input.stats.dropouts ? `; ${input.stats.dropouts} dropouts: the input fell `
+      + "behind and gave silence (a busy machine or device)" : "";
+    // one width in the header's row (style.css): the input's name is in the song menu, the
+    // breakdown and any dropouts in the tooltip (dropouts underline the readout)
+    const info = $("live-info");
+    info.textContent = `● ${silent ? "silent" : tempo} · latency ${(latency * 1000)
+      .toFixed(0)} ms`;
+    info.classList.toggle("warn", silent);
+    info.classList.toggle("dropouts", dropouts !== "");
+    info.title = `${input.name}: input ${(input.inputLatency * 1000).toFixed(0)} ms + analysis `
       + `${(input.analysisDelay * 1000).toFixed(0)} ms + offset ${(input.offset * 1000)
         .toFixed(0)} ms + one frame ${(frame * 1000).toFixed(0)} ms; ${take.duration.toFixed(1)} s `
-      + "heard" + (dropouts ? "; dropouts: the input fell behind and gave silence (a busy "
-        + "machine or device)" : "");
+      + `heard${silent ? " (no sound yet)" : ""}${dropouts}`;
     $("live-offset-out").textContent = `${(input.offset * 1000).toFixed(0)} ms`;
   }
 
