@@ -4,7 +4,7 @@
 // latency, the latency-offset slider remembered per device), the take's recording and *save
 // take* (a song of the library).
 import * as api from "./api";
-import { $, messageOf } from "./dom";
+import { $, fileName, messageOf, saveBlob } from "./dom";
 import { LiveInput, audioInputs, offersTabAudio } from "./live-input";
 import type { LiveChoice } from "./live-input";
 import type { Motion } from "./motion";
@@ -179,13 +179,16 @@ export class LiveSource {
     this.refresh();
   }
 
-  /** The take so far as a song of the library (the server checks it as any upload). */
+  /** The take so far: downloaded at once (`live-take-DATE-TIME.webm`), and kept as a song of
+   * the library (the server checks and analyses it as any upload: about a tenth of the take's
+   * length on two busy cores, so the status counts the seconds). */
   async saveTake(): Promise<string | null> {
     const input = this.input;
     if (!input || !this.recorder) {
       this.host.error("Live input: there is no take to save (choose a live input first)");
       return null;
     }
+    let ticker = 0;
     try {
       await new Promise<void>((resolve) => {
         this.recorder!.addEventListener("dataavailable", () => resolve(), { once: true });
@@ -193,15 +196,26 @@ export class LiveSource {
       });
       const type = this.recorder.mimeType || "audio/webm";
       const stamp = new Date().toISOString().slice(0, 19).replace("T", " ").replace(/:/g, "-");
-      const name = `live take ${stamp}.${type.includes("ogg") ? "ogg" : "webm"}`;
-      this.host.status(`${name}: saving…`);
-      const reply = await api.saveTake(new Blob(this.chunks, { type }), name);
+      const suffix = type.includes("ogg") ? "ogg" : "webm";
+      const name = `live take ${stamp}.${suffix}`;
+      const file = fileName("live take", stamp, suffix);
+      const audio = new Blob(this.chunks, { type });
+      saveBlob(audio, file);
+      const started = performance.now();
+      const say = () => this.host.status(`${file} downloaded; analysing it for the song menu… `
+        + `${((performance.now() - started) / 1000).toFixed(0)} s`);
+      say();
+      ticker = window.setInterval(say, 1000);
+      const reply = await api.saveTake(audio, name);
+      window.clearInterval(ticker);
       await this.host.songAdded(reply.item.id);
-      this.host.status(`${name} is in the song menu: play it, breed on it, export it`);
+      this.host.status(`${file} downloaded; “${name}” is in the song menu`);
       return reply.item.id;
     } catch (error) {
       this.host.error(`Live input: the take could not be saved (${messageOf(error)})`);
       return null;
+    } finally {
+      window.clearInterval(ticker);
     }
   }
 
