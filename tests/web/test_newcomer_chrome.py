@@ -91,7 +91,8 @@ ONE_ROW = """() => { const bar = document.getElementById('bar');
     .map((e) => e.textContent);
   return {height: bar.getBoundingClientRect().height,
           middles: boxes.map((b) => Math.round(b.top + b.height / 2)),
-          outside: shown.filter((e, i) => boxes[i].right > innerWidth).map((e) => e.id || e.tagName),
+          outside: shown.filter((e, i) => boxes[i].right > innerWidth)
+            .map((e) => e.id || e.tagName),
           cut, fps: document.getElementById('fps').textContent}; }"""
 
 
