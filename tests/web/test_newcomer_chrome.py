@@ -1,6 +1,7 @@
 """The page's chrome as a newcomer finds it (issue 30 items 5 and 8), from the user's side: the
 FBX advice on one line, a header whose height does not change as the page goes from loading to
-ready to playing, a textured model at 25% of its triangles that looks as at 100%. Each test
+ready to playing, one row wide enough to read its frame-rate readout whole (with a song and
+with a live input), a textured model at 25% of its triangles that looks as at 100%. Each test
 failed on the build before its fix.
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
@@ -14,11 +15,12 @@ import time
 import numpy as np
 import pytest
 from PIL import Image
-from web_helpers import open_app, running_server
+from web_helpers import CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip, open_app, running_server
 
 from helpers import fixture_path
 
 pytestmark = pytest.mark.web
+CLIP = fixture_path("audio", "kevin_macleod_vibe_ace_0s-21s.ogg")
 
 LINES = """id => { const text = document.getElementById(id);
   const line = parseFloat(getComputedStyle(text).lineHeight);
@@ -75,6 +77,72 @@ def test_the_header_keeps_its_height_from_loading_to_playing(browser, live_serve
         assert max(h for h, *_ in heights) - min(h for h, *_ in heights) <= 1, heights
     finally:
         page.close()
+
+
+# Whether the header is one row that holds everything it shows: every control's middle within
+# 3 px of the others', every control inside the page's width, and each readout's text whole (not cut
+# by its ellipsis); and the header's height.
+ONE_ROW = """() => { const bar = document.getElementById('bar');
+  const shown = [...bar.children].filter((e) => e.id !== 'status' && e.offsetParent !== null
+    && e.getBoundingClientRect().width > 0);
+  const boxes = shown.map((e) => e.getBoundingClientRect());
+  const cut = ['fps', 'live-info'].map((id) => document.getElementById(id))
+    .filter((e) => e.offsetParent !== null && e.scrollWidth > e.clientWidth + 1)
+    .map((e) => e.textContent);
+  return {height: bar.getBoundingClientRect().height,
+          middles: boxes.map((b) => Math.round(b.top + b.height / 2)),
+          outside: shown.filter((e, i) => boxes[i].right > innerWidth)
+            .map((e) => e.id || e.tagName),
+          cut, fps: document.getElementById('fps').textContent}; }"""
+
+
+@pytest.mark.parametrize("width", [1100, 1280, 1440])
+def test_the_header_is_one_row_with_its_frame_rate_readable(browser, live_server, width):
+    """Item 8 (round 3): at 1100, 1280 and 1440 px, a page drawing at 65% of its resolution and
+    a quarter of the triangles while it plays says both in its frame-rate readout, whole (it
+    once read "6.4 fps at 65% resoluti…" on a second row at 1280 px), on one header row."""
+    page = open_app(browser, live_server["url"], "?test&size=4&scale=0.65", width=width)
+    try:
+        page.evaluate("window.eigendance.setDetail(0.25)")
+        page.click("#play")
+        page.wait_for_function("document.getElementById('fps').textContent.includes('25%')",
+                               timeout=60_000)
+        row = page.evaluate(ONE_ROW)
+        page.click("#play")
+        assert "65%" in row["fps"] and not row["cut"], row
+        assert max(row["middles"]) - min(row["middles"]) <= 3, row
+        assert not row["outside"], row
+    finally:
+        page.close()
+
+
+@pytest.mark.parametrize("width", [1280, 1440])
+def test_the_live_input_header_is_one_row(browser, live_server, tmp_path, width):
+    """Use (round 3): with `?source=mic` the header took three rows (94 px) at 1100 px and two
+    at 1280; now it is one row, as high as the song's header at the same width, with the live
+    readout (tempo, latency) whole and the input's name in the song menu."""
+    song = open_app(browser, live_server["url"], "?test&size=2", width=width)
+    song_height = song.evaluate(ONE_ROW)["height"]
+    song.close()
+    clip = fake_clip(str(tmp_path), CLIP, seconds=8)
+    launched = browser.browser_type.launch(
+        executable_path=CHROMIUM,
+        args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"])
+    try:
+        page = launched.new_page(viewport={"width": width, "height": 760})
+        page.goto(live_server["url"] + "?test&size=2&source=mic")
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
+        page.evaluate("window.eigendance.ready")
+        page.wait_for_function("document.getElementById('live-info').textContent.includes("
+                               "'latency')", timeout=60_000)
+        row = page.evaluate(ONE_ROW)
+        menu = page.eval_on_selector("#song", "menu => menu.selectedOptions[0].textContent")
+        assert max(row["middles"]) - min(row["middles"]) <= 3 and not row["outside"], row
+        assert not row["cut"], row
+        assert abs(row["height"] - song_height) <= 1, (row, song_height)
+        assert "Fake" in menu, menu  # Chromium's fake device's name
+    finally:
+        launched.close()
 
 
 def test_a_textured_model_at_a_quarter_of_its_triangles_looks_as_it_does_whole(

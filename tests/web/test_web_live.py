@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -304,3 +305,30 @@ def test_a_live_take_becomes_a_song(browser, live_server, clip, tmp_path):
         with pytest.raises(urllib.error.HTTPError) as refused:
             urllib.request.urlopen(request)
         assert refused.value.code == status
+
+
+def test_save_take_downloads_the_take_and_says_where_it_is(browser, live_server, clip, tmp_path):
+    """Use (round 3): *save take* said "saving…" for as long as the server analysed the take, and
+    no file reached the person. Clicking it now downloads the take at once under a name that
+    says what and when (live-take-DATE-TIME.webm), a recording as long as what was heard; the
+    status says it was downloaded, then that the take is in the song menu, which lists it."""
+    with chromium(browser, FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"],
+                  live_server["url"], "?test&size=1&source=mic") as page:
+        heard = wait_for(page, lambda s: s["seconds"] > 4)["seconds"]
+        with page.expect_download(timeout=30_000) as download:
+            page.click("#live-save")
+        said = page.text_content("#status")
+        name = download.value.suggested_filename
+        download.value.save_as(tmp_path / name)
+        page.wait_for_function("document.getElementById('status').textContent"
+                               ".includes('is in the song menu')", timeout=120_000)
+        done = page.text_content("#status")
+        listed = page.eval_on_selector_all("#song option", "options => options.map("
+                                           "o => o.textContent)")
+    assert re.fullmatch(r"live-take-\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d\.(webm|ogg)", name), name
+    assert "downloaded" in said and name in said, said
+    assert "is in the song menu" in done, done
+    assert any(option.startswith("live take ") for option in listed), listed
+    with av.open(str(tmp_path / name)) as container:
+        seconds = sum(frame.samples / frame.sample_rate for frame in container.decode(audio=0))
+    assert abs(seconds - heard) < 2, (seconds, heard)

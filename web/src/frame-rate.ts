@@ -57,11 +57,14 @@ export class FrameRateWatch {
     const readout = $("fps");
     const scale = viewer.resolution.scale;
     const detail = viewer.resolution.detail;
+    // Short enough to read whole in the header's one row ("6.4 fps · 65% · 25% △"); the
+    // tooltip says it in words.
     readout.textContent = fps > 0 ? `${fps.toFixed(fps < 10 ? 1 : 0)} fps`
-      + (scale < 1 ? ` at ${Math.round(100 * scale)}% resolution` : "")
-      + (detail < 1 ? ` · ${Math.round(100 * detail)}% triangles` : "") : "";
-    readout.title = viewer.resolution.describe() ?? "frames the page draws per second while "
-      + "the song plays";
+      + (scale < 1 ? ` · ${Math.round(100 * scale)}%` : "")
+      + (detail < 1 ? ` · ${Math.round(100 * detail)}% △` : "") : "";
+    const lowered = viewer.resolution.describe();
+    readout.title = "frames the page draws per second while the song plays"
+      + (lowered ? `; now ${lowered}` : "") + (detail < 1 ? " (△: of the triangles)" : "");
     readout.classList.toggle("slow", fps > 0 && fps < viewer.resolution.rule.target);
     this.check(viewer, fps, now);
     if (!$("notice").hidden && fps > 0) this.sayRate(fps); // one number: the readout's

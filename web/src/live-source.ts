@@ -4,7 +4,7 @@
 // latency, the latency-offset slider remembered per device), the take's recording and *save
 // take* (a song of the library).
 import * as api from "./api";
-import { $, messageOf } from "./dom";
+import { $, fileName, messageOf, saveBlob } from "./dom";
 import { LiveInput, audioInputs, offersTabAudio } from "./live-input";
 import type { LiveChoice } from "./live-input";
 import type { Motion } from "./motion";
@@ -72,7 +72,11 @@ export class LiveSource {
     }
     if (offersTabAudio()) group.appendChild(new Option("tab or system audio", `${LIVE_PREFIX}tab`));
     menu.appendChild(group);
-    if (this.input) menu.value = this.menuValue(this.input.choice);
+    if (!this.input) return;
+    menu.value = this.menuValue(this.input.choice);
+    // the menu names what plays, as it names a song (the live bar beside it: tempo, latency)
+    const chosen = menu.selectedOptions[0];
+    if (chosen) chosen.textContent = `● ${this.input.name}`;
   }
 
   async listDevices(): Promise<void> {
@@ -146,19 +150,23 @@ export class LiveSource {
       this.host.transport.onChange(input.playing);
     }
     const take = input.take.spectrum;
-    const tempo = take.tempo > 0 ? `${take.tempo.toFixed(0)} BPM` : "listening for a beat";
+    const tempo = take.tempo > 0 ? `${take.tempo.toFixed(0)} BPM` : "no beat";
     const frame = this.host.fps() > 0 ? 1 / this.host.fps() : 0;
     const latency = input.latency + frame;
-    const silent = input.stats.firstSound < 0 && input.stats.samples > input.take.spectrum.rate
-      ? " · no sound yet" : "";
-    const dropouts = input.stats.dropouts ? ` · ${input.stats.dropouts} dropouts` : "";
-    $("live-info").textContent = `● ${input.name} · ${tempo} · latency ${(latency * 1000)
-      .toFixed(0)} ms${silent}${dropouts}`;
-    $("live-info").title = `input ${(input.inputLatency * 1000).toFixed(0)} ms + analysis `
+    const silent = input.stats.firstSound < 0 && input.stats.samples > input.take.spectrum.rate;
+    const dropouts = input.stats.dropouts ? `; ${input.stats.dropouts} dropouts: the input fell `
+      + "behind and gave silence (a busy machine or device)" : "";
+    // one width in the header's row (style.css): the input's name is in the song menu, the
+    // breakdown and any dropouts in the tooltip (dropouts underline the readout)
+    const info = $("live-info");
+    info.textContent = `● ${silent ? "silent" : tempo} · latency ${(latency * 1000)
+      .toFixed(0)} ms`;
+    info.classList.toggle("warn", silent);
+    info.classList.toggle("dropouts", dropouts !== "");
+    info.title = `${input.name}: input ${(input.inputLatency * 1000).toFixed(0)} ms + analysis `
       + `${(input.analysisDelay * 1000).toFixed(0)} ms + offset ${(input.offset * 1000)
         .toFixed(0)} ms + one frame ${(frame * 1000).toFixed(0)} ms; ${take.duration.toFixed(1)} s `
-      + "heard" + (dropouts ? "; dropouts: the input fell behind and gave silence (a busy "
-        + "machine or device)" : "");
+      + `heard${silent ? " (no sound yet)" : ""}${dropouts}`;
     $("live-offset-out").textContent = `${(input.offset * 1000).toFixed(0)} ms`;
   }
 
@@ -171,13 +179,16 @@ export class LiveSource {
     this.refresh();
   }
 
-  /** The take so far as a song of the library (the server checks it as any upload). */
+  /** The take so far: downloaded at once (`live-take-DATE-TIME.webm`), and kept as a song of
+   * the library (the server checks and analyses it as any upload: about a tenth of the take's
+   * length on two busy cores, so the status counts the seconds). */
   async saveTake(): Promise<string | null> {
     const input = this.input;
     if (!input || !this.recorder) {
       this.host.error("Live input: there is no take to save (choose a live input first)");
       return null;
     }
+    let ticker = 0;
     try {
       await new Promise<void>((resolve) => {
         this.recorder!.addEventListener("dataavailable", () => resolve(), { once: true });
@@ -185,15 +196,26 @@ export class LiveSource {
       });
       const type = this.recorder.mimeType || "audio/webm";
       const stamp = new Date().toISOString().slice(0, 19).replace("T", " ").replace(/:/g, "-");
-      const name = `live take ${stamp}.${type.includes("ogg") ? "ogg" : "webm"}`;
-      this.host.status(`${name}: saving…`);
-      const reply = await api.saveTake(new Blob(this.chunks, { type }), name);
+      const suffix = type.includes("ogg") ? "ogg" : "webm";
+      const name = `live take ${stamp}.${suffix}`;
+      const file = fileName("live take", stamp, suffix);
+      const audio = new Blob(this.chunks, { type });
+      saveBlob(audio, file);
+      const started = performance.now();
+      const say = () => this.host.status(`${file} downloaded; analysing it for the song menu… `
+        + `${((performance.now() - started) / 1000).toFixed(0)} s`);
+      say();
+      ticker = window.setInterval(say, 1000);
+      const reply = await api.saveTake(audio, name);
+      window.clearInterval(ticker);
       await this.host.songAdded(reply.item.id);
-      this.host.status(`${name} is in the song menu: play it, breed on it, export it`);
+      this.host.status(`${file} downloaded; “${name}” is in the song menu`);
       return reply.item.id;
     } catch (error) {
       this.host.error(`Live input: the take could not be saved (${messageOf(error)})`);
       return null;
+    } finally {
+      window.clearInterval(ticker);
     }
   }
 

@@ -49,6 +49,8 @@ export class ResolutionGovernor {
   private lowSince: number | null = null;
   private highSince: number | null = null;
   private settledAt = -Infinity;
+  /** whether the scale went down before (the first step is not capped) */
+  private lowered = false;
 
   constructor(readonly rule: ResolutionRule = RESOLUTION) {}
 
@@ -78,7 +80,11 @@ export class ResolutionGovernor {
       this.lowSince ??= now;
       if (now - this.lowSince < rule.lowerAfterMs) return false;
       if (this.atFloor) return this.setDetail(+1, now);
-      const aimed = this.scale * Math.min(0.9, Math.max(0.6, 0.95 * Math.sqrt(fps / rule.target)));
+      // The page's first step goes straight to the aim (a big model without a GPU drew 1.4 fps
+      // for seconds while the steps came); later ones move at most to 0.6×.
+      const least = this.lowered ? 0.6 : 0;
+      this.lowered = true;
+      const aimed = this.scale * Math.min(0.9, Math.max(least, 0.95 * Math.sqrt(fps / rule.target)));
       return this.set(Math.max(rule.floor, Math.min(this.scale - QUANTUM, quantised(aimed))), now);
     }
     this.lowSince = null;
@@ -100,6 +106,7 @@ export class ResolutionGovernor {
     this.detail = 1;
     this.lowSince = this.highSince = null;
     this.settledAt = -Infinity;
+    this.lowered = false;
   }
 
   /** What the page says: null at full resolution and detail. */

@@ -10,6 +10,7 @@ import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
 import type { Prepared } from "./filter";
 import type { Appearance } from "./look";
+import { fasterOnCPU } from "./path-choice";
 import { ResolutionGovernor } from "./resolution";
 import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
 import type { Silhouette } from "./studio";
@@ -194,7 +195,7 @@ export class Viewer {
   }
 
   /** Pick the deformation path (docs/design.md#rendering): the CPU when k does not fit the
-   * shader's uniforms, else the one `forced`, else the faster of the two timed on a few frames. */
+   * shader's uniforms, else the one `forced`, else the faster of the two timed (path-choice.ts). */
   choosePath(forced: DeformationPath | null): void {
     const deformer = this.deformer!;
     if (deformer.basis.k > maxHarmonicsOnGPU(this.renderer)) {
@@ -202,10 +203,13 @@ export class Viewer {
     } else if (forced) {
       deformer.useCPU = forced === "cpu";
     } else {
-      const gpu = this.timeFrames(false), cpu = this.timeFrames(true);
-      deformer.useCPU = cpu < gpu;
-      console.info(`eigendance: deformation ${gpu.toFixed(1)} ms on the GPU, ${cpu.toFixed(1)} ms `
-        + "on the CPU per frame");
+      deformer.useCPU = fasterOnCPU({ draw: (t, useCPU) => {
+        deformer.useCPU = useCPU;
+        return this.draw(t, true);
+      }, scale: (scale) => {
+        this.resolution.scale = scale;
+        this.applyScale();
+      }, floor: this.resolution.rule.floor, scaleNow: this.resolution.scale });
     }
     this.path = deformer.useCPU ? "cpu" : "gpu";
     this.frameMs = 0;
@@ -271,17 +275,6 @@ export class Viewer {
       this.renderer.setPixelRatio(ratio);
       this.requestDraw();
     }
-  }
-
-  /** Mean time (ms) of the deformation of a frame on one path (waited for on the GPU), after
-   * a warm-up (shader compile, uploads): drawing costs the same on both paths, and measured
-   * with it the choice followed the rasteriser's noise. */
-  private timeFrames(useCPU: boolean): number {
-    this.deformer!.useCPU = useCPU;
-    this.draw(1, true);
-    let total = 0;
-    for (let i = 0; i < 3; i++) total += this.draw(1.5 + i, true)?.deformation ?? 0;
-    return total / 3;
   }
 
   /** Draw one model into its element's rectangle of the canvas (skipped when off screen). */

@@ -17,9 +17,12 @@ function run(governor: ResolutionGovernor, fps: number, seconds: number, start =
 describe("dynamic resolution", () => {
   it("goes down to the floor, then draws fewer triangles, and says so", () => {
     const governor = new ResolutionGovernor();
-    let now = run(governor, 3, 1.1);
-    expect(governor.scale).toBe(0.6); // at most from 1 to 0.6 at once
-    expect(governor.describe()).toBe("drawing at 60% resolution to keep 12 fps");
+    let now = run(governor, 2, 1.1);
+    // the first step straight to the aim (it was 0.6 at most): 0.95 √(2 / 12) = 0.39, in 5% steps
+    expect(governor.scale).toBe(0.4);
+    expect(governor.describe()).toBe("drawing at 40% resolution to keep 12 fps");
+    now = run(governor, 3, 2.3, now); // then 0.4 × 0.6 = 0.24: the floor
+    expect(governor.scale).toBeCloseTo(RESOLUTION.floor, 12);
     now = run(governor, 3, 10, now);
     expect(governor.scale).toBeCloseTo(RESOLUTION.floor, 12);
     expect(governor.detail).toBe(0.25);
