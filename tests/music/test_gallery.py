@@ -16,6 +16,7 @@ from eigendance.harmonic.basis import HarmonicBasis
 from eigendance.music.breeding import Mulberry32, breed, cross
 from eigendance.music.dancer import gallery_correlations, gallery_motion
 from eigendance.music.demo_music import demo_track
+from eigendance.music.envelope import Pulse
 from eigendance.music.filter import harmonic_indices
 from eigendance.music.gallery import (
     MAX_GALLERY,
@@ -358,6 +359,40 @@ def test_children_keep_the_settings_of_their_first_drawn_parent(rng):
     children = breed([loud, calm], 12, seed=5)
     settings = {(c.gain, c.smoothing, c.offset, c.shading) for c in children}
     assert settings == {(2.0, 0.0, 1.0, "flat"), (1.0, 0.3, 0.0, "smooth")}
+
+
+def test_an_inactive_parents_pulse_range_never_reaches_a_child(rng):
+    """Issue 30: a parent without a pulse (amount 0, range 0–1) crossed its range into children
+    whose pulse is active, which then kicked about 135 of 150 harmonics. The active parent's
+    range [0.1, 0.3] holds the harmonics ν whose centre (ν + ½)/150 lies in it: ν = 15…44, 30."""
+    kicks = Pulse(3.0, 0.2, 0.1, 0.3, "onsets")
+    active = Mapping(rng.uniform(0, 1, 8), rng.normal(size=150), pulse=kicks, name="active")
+    still = Mapping(rng.uniform(0, 1, 8), rng.normal(size=150), name="still")
+    assert still.pulse.amount == 0 and (still.pulse.low, still.pulse.high) == (0, 1)
+    crossed = 0
+    for seed in range(1, 21):
+        for child in breed([active, still], 8, seed) + breed([still, active], 8, seed):
+            pulse = child.pulse
+            assert 0 <= pulse.amount <= 3.0
+            if pulse.amount > 0:
+                assert (pulse.low, pulse.high, pulse.decay, pulse.source) == \
+                    (0.1, 0.3, 0.2, "onsets"), (seed, pulse)
+                assert pulse.routed(150).sum() == 30
+                crossed += pulse.amount < 3.0
+        assert all(c.pulse.amount == 0 for c in breed([still, still], 8, seed))
+    assert crossed  # some amounts were crossed with the still parent's 0, and kept the range
+
+
+def test_active_parents_cross_their_pulse_ranges_within_their_hull(rng):
+    first = Mapping(rng.uniform(0, 1, 8), rng.normal(size=20), pulse=Pulse(2.0, 0.1, 0.1, 0.3))
+    second = Mapping(rng.uniform(0, 1, 8), rng.normal(size=20), pulse=Pulse(1.0, 0.3, 0.5, 0.9))
+    ranges = set()
+    for seed in range(1, 21):
+        for child in breed([first, second], 8, seed):
+            assert 1.0 <= child.pulse.amount <= 2.0 and 0.1 <= child.pulse.decay <= 0.3
+            assert 0.1 <= child.pulse.low <= child.pulse.high <= 0.9
+            ranges.add((child.pulse.low, child.pulse.high))
+    assert {(0.1, 0.3), (0.5, 0.9)} < ranges  # copied from either, and crossed
 
 
 def test_the_kernel_of_a_model_of_coupled_pieces_is_never_driven():

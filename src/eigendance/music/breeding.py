@@ -148,7 +148,10 @@ def breed(parents, size: int = 8, seed: int = 0,
       4. envelope: the same as 2 with the vector [attack, release, threshold] (3B values);
          auto-range is parent i's;
       5. pulse: the same as 2 with [amount, decay, low, high] (low and high sorted after);
-         the source is parent i's.
+         the source is parent i's. When only one parent's pulse is active (amount > 0), the
+         draws are the same but the child takes decay, range and source from that parent (an
+         inactive pulse's range, 0–1 by default, would widen the kicks to every harmonic);
+         only the amount is crossed with the inactive parent's 0.
     A rig's dance with a rippling skin carries surface genes (`Mapping.surface`,
     docs/design.md#surface-of-a-rig): when both parents have them (of one band count), the
     child's are `breed([surface_i, surface_j], 1, seed + SURFACE_STREAM + c)` (steps 1–5 on
@@ -239,7 +242,8 @@ def with_rhythm_genes(child: Mapping, first: Mapping, second: Mapping, random: M
     Parameters
     ----------
     child : the child with its transfer and amplification genes.
-    first, second : its parents i and j (the first gives auto-range and the pulse's source).
+    first, second : its parents i and j (the first gives auto-range and the pulse's source,
+        unless only the second's pulse is active).
     random : the rhythm genes' generator (Mulberry32(seed + RHYTHM_STREAM)).
     mean_segment : the crossing's mean segment length, as for the other genes.
 
@@ -265,10 +269,14 @@ def with_rhythm_genes(child: Mapping, first: Mapping, second: Mapping, random: M
     shape = gene(envelope_vector(first), envelope_vector(second))
     amount, decay, low, high = gene(pulse_vector(first), pulse_vector(second))
     low, high = sorted((float(np.clip(low, 0, 1)), float(np.clip(high, 0, 1))))
+    source = first.pulse.source
+    active = [p.pulse for p in (first, second) if p.pulse.amount > 0]
+    if len(active) == 1:  # an inactive parent's decay, range and source are not expressed
+        only = active[0]
+        decay, low, high, source = only.decay, only.low, only.high, only.source
     envelope = Envelope(shape[:bands], shape[bands:2 * bands], np.clip(shape[2 * bands:], 0, 1),
                         first.envelope.auto_range)
-    pulse = Pulse(max(0.0, float(amount)), max(1e-3, float(decay)), low, high,
-                  first.pulse.source)
+    pulse = Pulse(max(0.0, float(amount)), max(1e-3, float(decay)), low, high, source)
     return replace(child, envelope=envelope, pulse=pulse)
 
 
