@@ -2,7 +2,8 @@
 stopped or misled there. The export panel offered the file of the dance exported before (another
 model's), and a 0.1-s clip of a song nobody heard while a live input played; a paused rig
 gallery left its pictures where they were when a banner moved its tiles; a reload and a saved
-session came back to the library's first model, not the one on screen. Each test failed on the
+session came back to the library's first model, not the one on screen; and a saved session
+brought nothing back once `serve` was started again (new ids). Each test failed on the
 build before its fix.
 
 Select with `pytest -m web`; skipped where /usr/bin/chromium is missing.
@@ -17,7 +18,7 @@ import pytest
 from PIL import Image
 from test_newcomer_page import open_rig_from_menu
 from test_web_live import chromium
-from web_helpers import FAKE, GRANT, open_app
+from web_helpers import CAT, FAKE, GRANT, open_app, running_server
 
 pytestmark = pytest.mark.web
 
@@ -155,3 +156,39 @@ def test_a_reload_and_a_session_file_come_back_to_the_model_on_screen(browser, l
         assert not fresh.errors, fresh.errors
     finally:
         fresh.close()
+
+
+def test_a_session_file_opens_in_the_same_server_started_again(browser, web_files, tmp_path):
+    """`serve` run again with the same files gives its models and songs new ids: *open
+    session* still brings the bred generation back on its song (it said "1 model(s) restored;
+    its song is no longer in the library" and showed only a first generation)."""
+    arguments = [CAT, web_files["song"], "-k", "12"]
+    with running_server(arguments, tmp_path, web_files["cache"]) as first:
+        page = open_app(browser, first["url"], "?test&size=4")
+        try:
+            tiles = page.locator("#tiles > *")
+            tiles.nth(0).click()
+            tiles.nth(1).click()
+            page.click("#breed")
+            page.wait_for_function("document.querySelectorAll('#generation option').length == 2",
+                                   timeout=60_000)
+            with page.expect_download() as download:
+                page.click("#save-session")
+            saved = tmp_path / download.value.suggested_filename
+            download.value.save_as(saved)
+        finally:
+            page.close()
+    with running_server(arguments, tmp_path, web_files["cache"]) as again:
+        page = open_app(browser, again["url"], "?test&size=4")
+        try:
+            page.set_input_files("#open-session", str(saved))
+            page.wait_for_function("document.getElementById('status').textContent"
+                                   ".includes('restored')", timeout=60_000)
+            status = page.text_content("#status")
+            assert "no longer in the library" not in status, status
+            generations = page.locator("#generation option").all_text_contents()
+            assert len(generations) == 2 and "bred from 1" in generations[1], generations
+            assert page.locator("#generation option:checked").text_content() == generations[1]
+            assert not page.errors, page.errors
+        finally:
+            page.close()

@@ -30,7 +30,9 @@ export interface SavedModel { kind: "mesh" | "rig"; id: string; }
 /** The session file: the gallery history of each model and the galleries of each rig (by the
  * library's ids), the song, and the model on screen. */
 export interface Session { format: string; version: 1; histories: Record<string, SavedHistory>;
-  rigs?: Record<string, SavedRig>; song?: SavedSong; model?: SavedModel; }
+  rigs?: Record<string, SavedRig>; song?: SavedSong; model?: SavedModel;
+  /** the names of the library's models and songs by id, in a file (namesOf) */
+  names?: Record<string, string>; }
 
 export function sessionOf(histories: Record<string, SavedHistory>,
                           rigs: Record<string, SavedRig> = {}, song?: SavedSong,
@@ -45,6 +47,37 @@ export function keepInSession(part: { histories?: Record<string, SavedHistory>;
   const kept = storedSession();
   storeSession(sessionOf(part.histories ?? kept?.histories ?? {}, part.rigs ?? kept?.rigs ?? {},
     part.song ?? kept?.song, part.model ?? kept?.model));
+}
+
+/** The names of the library's models, rigs and songs by id, written in a session file: a server
+ * started again gives its items new ids, and *open session* finds them by these names. */
+export function namesOf(library: api.Library): Record<string, string> {
+  const names: Record<string, string> = {};
+  for (const item of [...library.meshes, ...library.rigs ?? [], ...library.songs]) {
+    names[item.id] = item.name;
+  }
+  return names;
+}
+
+/** A session file's models, rigs and songs that the library no longer has by their ids (a
+ * server started again), found by the name the file gives them: the library's one item of
+ * that kind with that name, where there is exactly one. */
+export function translated(session: Session, library: api.Library): Session {
+  const names = session.names ?? {};
+  const finder = (items: { id: string; name: string }[]) => (id: string): string => {
+    if (items.some((item) => item.id === id) || !(id in names)) return id;
+    const same = items.filter((item) => item.name === names[id]);
+    return same.length === 1 ? same[0].id : id;
+  };
+  const mesh = finder(library.meshes), rig = finder(library.rigs ?? []);
+  const song = finder(library.songs);
+  const rekeyed = <T>(record: Record<string, T>, find: (id: string) => string) =>
+    Object.fromEntries(Object.entries(record).map(([id, value]) => [find(id), value]));
+  const model = session.model;
+  return { ...session, histories: rekeyed(session.histories, mesh),
+    rigs: rekeyed(session.rigs ?? {}, rig),
+    ...(session.song ? { song: { ...session.song, id: song(session.song.id) } } : {}),
+    ...(model ? { model: { ...model, id: (model.kind === "rig" ? rig : mesh)(model.id) } } : {}) };
 }
 
 /** The model on screen: the rig shown, else the mesh (undefined before one is loaded). */
@@ -154,6 +187,10 @@ export function readSession(text: string): Session {
   if (model !== undefined && (typeof model?.id !== "string"
       || (model.kind !== "mesh" && model.kind !== "rig"))) {
     throw new Error("the model of this session is not readable");
+  }
+  if (session.names !== undefined && (typeof session.names !== "object" || session.names === null
+      || !Object.values(session.names).every((name) => typeof name === "string"))) {
+    throw new Error("the names of this session are not readable");
   }
   return session;
 }
