@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 from PIL import Image
 from test_newcomer_page import open_rig_from_menu
-from test_web_live import chromium
-from web_helpers import CAT, FAKE, GRANT, open_app, running_server
+from test_web_live import FAKE, GRANT, chromium  # the fake microphone's flags, where they live
+from web_helpers import CAT, open_app, running_server
 
 pytestmark = pytest.mark.web
 
