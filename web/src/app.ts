@@ -20,7 +20,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
-import { loadStartSong, storedSession } from "./session";
+import { loadStartSong, startModel, storedSession } from "./session";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { Viewer, softwareRenderer } from "./viewer";
@@ -112,7 +112,7 @@ export class App {
       newGallery: (size) => this.newGallery(size) });
     this.exporter = new ExportPanel(messages, {
       dance: () => this.exportedDance(), now: () => this.viewer.time(),
-      duration: () => this.motion.duration });
+      duration: () => this.motion.duration, live: () => this.transport.following });
     this.transport.onChange = (playing) => {
       $("play").textContent = playing ? "❚❚" : "▶";
       this.frameRate.restart();
@@ -343,14 +343,14 @@ export class App {
   }
 
   /** Load the first mesh and song and show the gallery (at start, or once uploads complete the
-   * library). What a start (or a reload) shows: the first model of the library, the session's
-   * song or the first (or `?mesh=`, `?song=`), the gallery — or the player with a mapping given to `serve` (or
+   * library). What a start (or a reload) shows: the session's model, else the library's first,
+   * the session's song or the first (or `?mesh=`, `?song=`), the gallery — or the player with a mapping given to `serve` (or
    * `?mapping=`); mappings added in the page stay in the menu, and do not open by themselves.
    * A rig given first to `serve` (a skinned glTF), or the only kind of model there, opens in
    * its gallery of modes instead. Returns false while the library lacks a model or a song. */
   private async loadFirst(library: api.Library): Promise<boolean> {
-    const rig = firstRig(library, this.options.mesh);
-    if (rig && library.songs.length) return this.loadFirstRig(library, rig);
+    const start = startModel(library, this.options.mesh); // the session's model, or the first
+    if (start.rig && library.songs.length) return this.loadFirstRig(library, start.rig);
     if (!library.meshes.length || !library.songs.length) {
       const missing = library.meshes.length ? "a song" : "a model";
       this.messages.status(`the library needs ${missing}: drop a file here`);
@@ -358,7 +358,7 @@ export class App {
     }
     const { options } = this;
     await loadStartSong(this, library); // the session's song, paused where it was left
-    await this.library.loadMesh(options.mesh ?? library.meshes[0].id);
+    await this.library.loadMesh(options.mesh ?? start.mesh ?? library.meshes[0].id);
     this.started = true;
     // The session kept in the browser (session.ts): the generations come back after a reload.
     let failure = this.gallery.showMesh(this.library.meshId) ? null : await this.newGallery();
@@ -384,16 +384,4 @@ export class App {
     await this.startAskedSource();
     return true;
   }
-}
-
-/** The rig the page opens first: the first model given to `serve` when it is a rig (a skinned
- * glTF), or, in a library without meshes, the last rig added from a file; none with `?mesh=`. */
-export function firstRig(library: api.Library, meshOption: string | null): string | null {
-  if (meshOption) return null;
-  const rigs = library.rigs ?? [];
-  const first = library.first;
-  if (first?.kind === "rig" && rigs.some((rig) => rig.id === first.id)) return first.id;
-  if (library.meshes.length) return null;
-  const added = rigs.filter((rig) => rig.origin === "file" || rig.origin === "upload");
-  return added.length ? added[added.length - 1].id : null;
 }

@@ -27,7 +27,13 @@ export interface ExportEvents {
   now(): number;
   /** the song's length (s) */
   duration(): number;
+  /** a live input plays instead of a song: nothing the server could render with its sound */
+  live(): boolean;
 }
+
+/** What the panel says while a live input plays (the server has no recording of it). */
+export const LIVE_EXPORT = "a live input plays, not a song: “save take” keeps what was heard as "
+  + "one; choose it in the song menu to export its dance";
 
 /** The request body of `POST api/export` (docs/web.md#http-api). */
 export interface ExportRequest {
@@ -62,6 +68,8 @@ export function clipName(model: string, start: number, duration: number, format:
 
 export class ExportPanel {
   private running = false;
+  /** the dance (model, song, mapping) whose file the download link offers */
+  private made = "";
 
   constructor(private readonly messages: Messages, private readonly events: ExportEvents) {
     for (const id of ["export-open", "rig-export-open"]) {
@@ -95,11 +103,17 @@ export class ExportPanel {
 
   /** Something changed (the view, the model): the panel says whether it can export. */
   refresh(): void {
-    const dance = this.events.dance();
+    const dance = this.events.dance(), live = this.events.live();
     const button = $<HTMLButtonElement>("export-go");
-    button.disabled = this.running || dance === null;
-    $("export-what").textContent = dance ? `${dance.name}, the player's mapping`
-      : "open a tile in the player to export it";
+    button.disabled = this.running || dance === null || live;
+    $("export-what").textContent = live ? LIVE_EXPORT : dance
+      ? `${dance.name}, the player's mapping` : "open a tile in the player to export it";
+    // The link and its "done" belong to the dance exported: another one (a model, a tile, a
+    // palette changed) does not offer that file as its own.
+    if (!this.running && this.made !== keyOf(dance)) {
+      $("export-download").hidden = true;
+      $("export-state").textContent = "";
+    }
     $("export-size-label").hidden = $<HTMLSelectElement>("export-format").value !== "mp4";
     if (dance === null && !this.running) $("export-panel").hidden = true;
   }
@@ -119,12 +133,13 @@ export class ExportPanel {
   private async run(): Promise<void> {
     const request = this.request();
     const dance = this.events.dance();
-    if (!request || !dance || this.running) return;
+    if (!request || !dance || this.running || this.events.live()) { this.refresh(); return; }
     this.running = true;
     this.refresh();
     const bar = $<HTMLProgressElement>("export-progress");
     const link = $<HTMLAnchorElement>("export-download");
     link.hidden = true;
+    this.made = "";
     bar.hidden = false;
     bar.removeAttribute("value");
     const say = (text: string) => { $("export-state").textContent = text; };
@@ -143,6 +158,7 @@ export class ExportPanel {
       link.download = clipName(dance.name, request.start, request.duration, request.format);
       link.textContent = `download ${link.download}`;
       link.hidden = false;
+      this.made = keyOf(dance);
       say("done");
       link.click();
     });
@@ -151,4 +167,9 @@ export class ExportPanel {
     this.running = false;
     this.refresh();
   }
+}
+
+/** What identifies a dance's file: the model, the song and the mapping ("" for none). */
+function keyOf(dance: ExportedDance | null): string {
+  return dance ? JSON.stringify([dance.kind, dance.id, dance.song, dance.mapping]) : "";
 }

@@ -7,7 +7,8 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
-import { keepInSession, readSession, resumeSong, sessionOf, songOf } from "./session";
+import { keepInSession, modelOf, namesOf, readSession, resumeModel, resumeSong, sessionOf,
+  songOf, translated } from "./session";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -51,11 +52,14 @@ export function wireHeader(app: App): void {
   // cause); the hint goes when ▶ plays it again.
   transport.onEnd = () => messages.hint("the song ended: ▶ plays it again (↻ repeats it)", false);
   for (const id of ["save-session", "rig-save-session"]) { // the harmonics' and a rig's bar
-    $(id).addEventListener("click", () => {
-      saveJSON(sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot(), songOf(app)),
-        fileName(app.rigs.active ? app.rigs.rig?.name ?? "" : app.library.meshName, "session",
-          "json"));
-    });
+    $(id).addEventListener("click", () => void messages.guard("Could not save the session",
+      async () => {
+        const session = sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot(),
+          songOf(app), modelOf(app));
+        const names = namesOf(await library.refresh()); // found by name by a server run again
+        saveJSON({ ...session, names }, fileName(app.rigs.active ? app.rigs.rig?.name ?? ""
+          : app.library.meshName, "session", "json"));
+      }));
   }
   for (const id of ["open-session", "rig-open-session"]) {
     $(id).addEventListener("change", (e) => {
@@ -64,20 +68,24 @@ export function wireHeader(app: App): void {
       input.value = "";
       if (!file) return;
       void messages.guard(`Could not open ${file.name}`, async () => {
-        const session = readSession(await file.text());
         // The song first: choosing it calibrates a new first generation, which the file replaces.
-        const known = await resumeSong(app, session.song, await library.refresh());
+        const held = await library.refresh();
+        const session = translated(readSession(await file.text()), held); // ids of another run
+        const known = await resumeSong(app, session.song, held);
         app.gallery.restore(session.histories);
         app.rigs.restore(session.rigs ?? {});
         if (!app.rigs.active) app.gallery.showMesh(library.meshId);
+        await resumeModel(app, session.model, held); // the model it was saved on
         const count = Object.keys(session.histories).length + Object.keys(session.rigs ?? {}).length;
         messages.status(`${file.name}: ${count} model(s) restored`
           + (known ? "" : "; its song is no longer in the library"));
       });
     });
   }
-  // The song chosen and where it plays stay in the session: a reload comes back to them.
-  window.addEventListener("pagehide", () => keepInSession({ song: songOf(app) }));
+  // The song chosen, where it plays and the model on screen stay in the session: a reload
+  // comes back to them.
+  window.addEventListener("pagehide",
+    () => keepInSession({ song: songOf(app), model: modelOf(app) }));
   for (const id of ["reset-view", "rig-reset-view"]) {
     $(id).addEventListener("click", () => resetView(app));
   }

@@ -82,6 +82,8 @@ export class RigStage {
       share: () => this.surfaceShare(), dances: (dances) => this.gallery.setSurfaces(dances) });
     $("rig-player-area").addEventListener("click", (event) => this.pickAt(event));
     window.addEventListener("resize", () => { if (this.active) this.gallery.layout(); });
+    // A banner or a wrapped header moves the views: draw again where they are now (paused too).
+    for (const id of ["rig-tiles", "rig-player-area"]) new ResizeObserver(requestDraw).observe($(id));
     if (live) this.viewer.start(); // not in `?render` mode: the caller draws the frames
   }
 

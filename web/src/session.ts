@@ -1,8 +1,9 @@
 // The session (issue 30): every model's gallery history — its generations, the one on screen and
 // the tiles selected — and every rig's (its dances' generations, the one shown, the dances
 // selected, and the player's mapping with its palette), and the song chosen with where it was
-// left, kept in the browser's storage, so that a reload shows them again (the song paused where
-// it was), and written to a file (*save session*) that *open session* reads back.
+// left, and the model on screen, kept in the browser's storage, so that a reload shows them again
+// (the song paused where it was), and written to a file (*save session*) that *open session*
+// reads back.
 import type * as api from "./api";
 import type { App } from "./app";
 import type { Mapping } from "./filter";
@@ -23,22 +24,103 @@ export interface SavedRig { generations: Mapping[][]; generation: number; select
 /** The song chosen (the library's id) and where it was left (s). */
 export interface SavedSong { id: string; time: number; }
 
+/** The model on screen: a mesh or a rig (the library's id). */
+export interface SavedModel { kind: "mesh" | "rig"; id: string; }
+
 /** The session file: the gallery history of each model and the galleries of each rig (by the
- * library's ids), and the song. */
+ * library's ids), the song, and the model on screen. */
 export interface Session { format: string; version: 1; histories: Record<string, SavedHistory>;
-  rigs?: Record<string, SavedRig>; song?: SavedSong; }
+  rigs?: Record<string, SavedRig>; song?: SavedSong; model?: SavedModel;
+  /** the names of the library's models and songs by id, in a file (namesOf) */
+  names?: Record<string, string>; }
 
 export function sessionOf(histories: Record<string, SavedHistory>,
-                          rigs: Record<string, SavedRig> = {}, song?: SavedSong): Session {
-  return { format: SESSION_FORMAT, version: 1, histories, rigs, ...(song ? { song } : {}) };
+                          rigs: Record<string, SavedRig> = {}, song?: SavedSong,
+                          model?: SavedModel): Session {
+  return { format: SESSION_FORMAT, version: 1, histories, rigs, ...(song ? { song } : {}),
+    ...(model ? { model } : {}) };
 }
 
-/** Keep one part of the session in the browser, the others as they are kept. */
+/** Keep parts of the session in the browser, the others as they are kept. */
 export function keepInSession(part: { histories?: Record<string, SavedHistory>;
-  rigs?: Record<string, SavedRig>; song?: SavedSong }): void {
+  rigs?: Record<string, SavedRig>; song?: SavedSong; model?: SavedModel }): void {
   const kept = storedSession();
   storeSession(sessionOf(part.histories ?? kept?.histories ?? {}, part.rigs ?? kept?.rigs ?? {},
-    part.song ?? kept?.song));
+    part.song ?? kept?.song, part.model ?? kept?.model));
+}
+
+/** The names of the library's models, rigs and songs by id, written in a session file: a server
+ * started again gives its items new ids, and *open session* finds them by these names. */
+export function namesOf(library: api.Library): Record<string, string> {
+  const names: Record<string, string> = {};
+  for (const item of [...library.meshes, ...library.rigs ?? [], ...library.songs]) {
+    names[item.id] = item.name;
+  }
+  return names;
+}
+
+/** A session file's models, rigs and songs that the library no longer has by their ids (a
+ * server started again), found by the name the file gives them: the library's one item of
+ * that kind with that name, where there is exactly one. */
+export function translated(session: Session, library: api.Library): Session {
+  const names = session.names ?? {};
+  const finder = (items: { id: string; name: string }[]) => (id: string): string => {
+    if (items.some((item) => item.id === id) || !(id in names)) return id;
+    const same = items.filter((item) => item.name === names[id]);
+    return same.length === 1 ? same[0].id : id;
+  };
+  const mesh = finder(library.meshes), rig = finder(library.rigs ?? []);
+  const song = finder(library.songs);
+  const rekeyed = <T>(record: Record<string, T>, find: (id: string) => string) =>
+    Object.fromEntries(Object.entries(record).map(([id, value]) => [find(id), value]));
+  const model = session.model;
+  return { ...session, histories: rekeyed(session.histories, mesh),
+    rigs: rekeyed(session.rigs ?? {}, rig),
+    ...(session.song ? { song: { ...session.song, id: song(session.song.id) } } : {}),
+    ...(model ? { model: { ...model, id: (model.kind === "rig" ? rig : mesh)(model.id) } } : {}) };
+}
+
+/** The model on screen: the rig shown, else the mesh (undefined before one is loaded). */
+export function modelOf(app: App): SavedModel | undefined {
+  if (app.rigs.active) return app.rigs.rig ? { kind: "rig", id: app.rigs.rig.id } : undefined;
+  return app.library.meshId ? { kind: "mesh", id: app.library.meshId } : undefined;
+}
+
+/** What a start (or a reload) shows: `?mesh=` (a mesh); else the session's model while the
+ * library has it; else the rig `firstRig` opens, or the library's first mesh (mesh: null). */
+export function startModel(library: api.Library, meshOption: string | null):
+    { rig: string | null; mesh: string | null } {
+  const kept = meshOption ? undefined : storedSession()?.model;
+  if (kept && inLibrary(library, kept)) {
+    return kept.kind === "rig" ? { rig: kept.id, mesh: null } : { rig: null, mesh: kept.id };
+  }
+  return { rig: firstRig(library, meshOption), mesh: null };
+}
+
+/** The rig the page opens first: the first model given to `serve` when it is a rig (a skinned
+ * glTF), or, in a library without meshes, the last rig added from a file; none with `?mesh=`. */
+export function firstRig(library: api.Library, meshOption: string | null): string | null {
+  if (meshOption) return null;
+  const rigs = library.rigs ?? [];
+  const first = library.first;
+  if (first?.kind === "rig" && rigs.some((rig) => rig.id === first.id)) return first.id;
+  if (library.meshes.length) return null;
+  const added = rigs.filter((rig) => rig.origin === "file" || rig.origin === "upload");
+  return added.length ? added[added.length - 1].id : null;
+}
+
+/** A session file's model shown, when the library has it and another is on screen. */
+export async function resumeModel(app: App, model: SavedModel | undefined,
+                                  library: api.Library): Promise<void> {
+  const shown = modelOf(app);
+  if (!model || !inLibrary(library, model)
+      || (shown?.kind === model.kind && shown.id === model.id)) return;
+  if (model.kind === "rig") await app.openRig(model.id); else await app.showMesh(model.id);
+}
+
+function inLibrary(library: api.Library, model: SavedModel): boolean {
+  const items = model.kind === "rig" ? library.rigs ?? [] : library.meshes;
+  return items.some((item) => item.id === model.id);
 }
 
 /** The page's song and where it is now (undefined before a song is loaded; its start while a
@@ -100,6 +182,15 @@ export function readSession(text: string): Session {
   const song = session.song;
   if (song !== undefined && (typeof song?.id !== "string" || !Number.isFinite(song.time))) {
     throw new Error("the song of this session is not readable");
+  }
+  const model = session.model;
+  if (model !== undefined && (typeof model?.id !== "string"
+      || (model.kind !== "mesh" && model.kind !== "rig"))) {
+    throw new Error("the model of this session is not readable");
+  }
+  if (session.names !== undefined && (typeof session.names !== "object" || session.names === null
+      || !Object.values(session.names).every((name) => typeof name === "string"))) {
+    throw new Error("the names of this session are not readable");
   }
   return session;
 }

@@ -3,7 +3,7 @@
 // to `serve` opens as a rig).
 import { describe, expect, it } from "vitest";
 import { unzipSync } from "three/examples/jsm/libs/fflate.module.js";
-import { firstRig } from "../src/app";
+import { firstRig } from "../src/session";
 import type { Library } from "../src/api";
 import { suffixesOf, together } from "../src/files";
 
