@@ -4,6 +4,7 @@
 // get one (`closeUp`), where the close-up goes, and its drawing (`CloseUpDrawer`).
 import * as THREE from "three";
 import type { Basis } from "./bundle";
+import type { Deformer } from "./deform";
 import { deformCPU } from "./filter";
 import { VIEW_DIRECTION, framing, silhouette } from "./studio";
 import type { Silhouette, Studio } from "./studio";
@@ -29,6 +30,9 @@ const SMALLEST = 0.08;
 /** The grid over the model's silhouette on which corners are compared. */
 const CELLS = 20;
 const CUTAWAY = 0.8;
+/** The close-up draws the triangles within this many framed spans of the part's middle (a
+ * close-up 1:3 as wide as tall shows 1.5 of them up). */
+const WINDOW = 1.6;
 /** The close-up turns from the tiles' view when another sees the part move this many times more. */
 const TURN = 1.5;
 
@@ -49,6 +53,9 @@ export interface Region {
    * about the vertical */
   direction: THREE.Vector3;
   turn: number;
+  /** per vertex, 1 where it lies (at rest) within WINDOW framed spans of the part across and up
+   * the close-up: the triangles touching these are all it draws */
+  visible: Uint8Array;
   /** its span over the model's (the larger of across and up of each) */
   share: number;
   /** its box within the model's silhouette box, 0–1, x right and y up: [x0, y0, x1, y1] */
@@ -135,9 +142,10 @@ function regionBox(views: Silhouette[], indices: Int32Array): Box {
 }
 
 /** The close-up's framing of the points `indices` in `views` (at rest and posed): enlarged by
- * CONTEXT, to `smallest` across at least, their depth from the middle of theirs. */
+ * CONTEXT, to `smallest` across at least, their depth from the middle of theirs; and the
+ * vertices it may see (WINDOW). */
 function framed(views: Silhouette[], indices: Int32Array, smallest: number):
-    { shapes: Silhouette[]; depth: number; front: number } {
+    { shapes: Silhouette[]; depth: number; front: number; visible: Uint8Array } {
   const box = regionBox(views, indices);
   let near = -Infinity, far = Infinity;
   for (const view of views) {
@@ -147,8 +155,11 @@ function framed(views: Silhouette[], indices: Int32Array, smallest: number):
   const cx = (box[0] + box[2]) / 2, cy = (box[1] + box[3]) / 2;
   const span = Math.max(box[2] - box[0], box[3] - box[1], 1e-9);
   const factor = Math.max(CONTEXT, smallest / span);
+  const reach = WINDOW * factor * span, [rest] = views;
+  const visible = Uint8Array.from(rest.x, (x, i) =>
+    Number(Math.abs(x - cx) < reach && Math.abs(rest.y[i] - cy) < reach));
   return { shapes: views.map((view) => part(view, indices, cx, cy, factor, depth)), depth,
-    front: near - depth };
+    front: near - depth, visible };
 }
 
 /** `direction` turned by `turn` × 90° about the vertical. */
@@ -300,8 +311,9 @@ export class CloseUpDrawer {
     this.camera = new THREE.PerspectiveCamera(fieldOfView, 1, 0.001, 100);
   }
 
-  /** Draw `scene` into the shot's close-up (canvas `height` CSS px; the tile just drawn). */
-  draw(renderer: THREE.WebGLRenderer, scene: THREE.Scene, studio: Studio, shot: CloseUpShot,
+  /** Draw the deformer's scene into the shot's close-up, its visible triangles only (canvas
+   * `height` CSS px; the tile just drawn). */
+  draw(renderer: THREE.WebGLRenderer, deformer: Deformer, studio: Studio, shot: CloseUpShot,
        height: number): void {
     const rect = shot.element.getBoundingClientRect();
     if (rect.width < 2 || rect.height < 2) return;
@@ -327,6 +339,8 @@ export class CloseUpDrawer {
     camera.lookAt(target);
     camera.updateProjectionMatrix();
     studio.setAspect(aspect);
-    renderer.render(scene, camera);
+    deformer.drawOnly(shot.closeUp.visible);
+    renderer.render(deformer.scene, camera);
+    deformer.drawOnly(null);
   }
 }

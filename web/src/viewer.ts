@@ -312,7 +312,7 @@ export class Viewer {
       materials: look.materials,
     }, positions);
     renderer.render(deformer.scene, camera);
-    if (shot.closeUp) this.closeUps.draw(renderer, deformer.scene, this.studio, shot.closeUp, height);
+    if (shot.closeUp) this.closeUps.draw(renderer, deformer, this.studio, shot.closeUp, height);
   }
 
   /** Frame the model for a view of this size: a tile at every frame (its framing is cached),

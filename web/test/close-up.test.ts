@@ -3,6 +3,7 @@
 // (direction +z: the view's x and y are the points' x and y).
 import * as THREE from "three";
 import { describe, expect, it } from "vitest";
+import { trianglesTouching } from "../src/detail";
 import { CORNERS, INSET, LOCALISED, MOVING, PARTS_GRID, closeUpOf, freeCorner, lookingAt,
   movingRegion } from "../src/close-up";
 
@@ -44,6 +45,16 @@ describe("close-up", () => {
     const close = closeUpOf(rest, poses, FRONT)!;
     expect(close).not.toBeNull();
     expect(close.corner).toBe("top-right"); // every corner as full: the first, not reached
+    // It draws the triangles within 1.6 framed spans (1.7 × 0.14 across) of the finger's middle
+    // (0.95, 0.95): the slab's corner (0, 0) is out, the finger in.
+    expect(close.visible[0]).toBe(0);
+    for (const i of finger) expect(close.visible[i]).toBe(1);
+    const reach = 1.6 * 1.7 * 0.14;
+    const inside = Array.from({ length: rest.length / 3 }, (_, i) => i).filter((i) =>
+      Math.abs(rest[3 * i] - 0.95) < reach - 1e-6 && Math.abs(rest[3 * i + 1] - 0.95) < reach - 1e-6);
+    expect(close.visible.reduce((a, b) => a + b, 0)).toBeGreaterThanOrEqual(inside.length);
+    expect(trianglesTouching(Uint32Array.of(0, 1, 2, finger[0], 1, 2), close.visible))
+      .toEqual(Uint32Array.of(finger[0], 1, 2));
     // The close-up frames the finger 1.7 times larger than it spans (context around it).
     const xs = Array.from(close.shapes[0].x);
     expect(Math.max(...xs) - Math.min(...xs)).toBeCloseTo(1.7 * 0.1, 4);
