@@ -346,11 +346,12 @@ export class RigGalleryView {
 function closeUpFrame(view: HTMLElement, closeUp: CloseUp): CloseUpShot {
   const element = document.createElement("div");
   element.className = `close-up ${closeUp.corner}`;
-  const side = ["", "from the side", "from the far side", "from the side"][closeUp.turn];
+  const side = ["", "side", "behind", "side"][closeUp.turn];
   element.title = "close-up of the part this mode moves (it spans "
     + `${Math.round(100 * closeUp.share)}% of the model): the same skin, seen nearer`
-    + (side ? `, ${side} (where its motion shows), cut away before it` : "");
-  element.innerHTML = `<span class="tag">close-up${side ? `: ${side.slice(9)}` : ""}</span>`;
+    + (side ? `, from ${side === "side" ? "the side" : "the far side"} (where its motion `
+      + "shows), cut away before it" : "");
+  element.innerHTML = `<span class="tag">close-up${side ? `: ${side}` : ""}</span>`;
   view.appendChild(element);
   return { element, closeUp };
 }
