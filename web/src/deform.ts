@@ -8,7 +8,7 @@
 import * as THREE from "three";
 import { harmonicRows } from "./bundle";
 import type { Basis } from "./bundle";
-import { simplifiedFaces } from "./detail";
+import { simplifiedFaces, trianglesTouching } from "./detail";
 import { DrawnLook } from "./look";
 import type { Appearance } from "./look";
 import { PositionsPass, TARGET_WIDTH } from "./positions-pass";
@@ -63,6 +63,9 @@ export class Deformer implements HarmonicsSource {
   private gather: GatherPass | null = null;
   /** the triangles of each detail level drawn so far (detail.ts); 1 is the mesh's own */
   private readonly detailIndex = new Map<number, THREE.BufferAttribute>();
+  /** the detail level drawn (`useDetail`), and the triangles of each close-up (`drawOnly`) */
+  private detail = 1;
+  private readonly partIndex = new WeakMap<Uint8Array, THREE.BufferAttribute>();
   useCPU = false;
 
   constructor(readonly basis: Basis, readonly renderer: THREE.WebGLRenderer, maxBatch = 8) {
@@ -187,7 +190,21 @@ export class Deformer implements HarmonicsSource {
     }
     if (this.geometry.index !== index) this.geometry.setIndex(index);
     this.look?.useDetail(fraction);
+    this.detail = fraction;
     return fraction;
+  }
+
+  /** Draw only the mesh's triangles with a vertex where `mask` (n) is 1 (a close-up's,
+   * close-up.ts), all of them there; null: the detail level's triangles again. */
+  drawOnly(mask: Uint8Array | null): void {
+    if (!mask) { this.useDetail(this.detail); return; }
+    let index = this.partIndex.get(mask);
+    if (!index) {
+      index = new THREE.BufferAttribute(trianglesTouching(this.basis.faces, mask), 1);
+      this.partIndex.set(mask, index);
+    }
+    this.geometry.setIndex(index);
+    this.look?.drawOnly(mask);
   }
 
   /** GPU pass 1: deformed positions of every tile into float render targets, `batch` tiles per

@@ -34,3 +34,15 @@ export function simplifiedFaces(faces: Uint32Array, vertices: Float32Array, frac
     DETAIL_ERROR);
   return indices.length >= 3 ? indices : faces;
 }
+
+/** The triangles of `faces` (m*3) with a vertex i where mask[welded[i]] is 1 (welded: the
+ * identity when absent). */
+export function trianglesTouching(faces: ArrayLike<number>, mask: Uint8Array,
+                                  welded?: ArrayLike<number>): Uint32Array {
+  const kept: number[] = [];
+  const on = (v: number) => mask[welded ? welded[v] : v] === 1;
+  for (let t = 0; t < faces.length; t += 3) {
+    if (on(faces[t]) || on(faces[t + 1]) || on(faces[t + 2])) kept.push(faces[t], faces[t + 1], faces[t + 2]);
+  }
+  return Uint32Array.from(kept);
+}

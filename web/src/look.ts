@@ -7,7 +7,7 @@ import * as THREE from "three";
 import * as api from "./api";
 import type { Basis } from "./bundle";
 import { parseBundle } from "./bundle";
-import { DETAIL_ERROR, simplifierReady } from "./detail";
+import { DETAIL_ERROR, simplifierReady, trianglesTouching } from "./detail";
 import { MeshoptSimplifier } from "meshoptimizer";
 import { gatherAttributes } from "./reduced";
 import { SURFACE_FRAGMENT, SURFACE_VERTEX } from "./shaders";
@@ -83,6 +83,7 @@ export class DrawnLook {
   private readonly shared: Record<string, THREE.IUniform>;
   /** each detail level's triangles (all parts, one after the other) and each part's count */
   private readonly detail = new Map<number, { index: THREE.BufferAttribute; counts: number[] }>();
+  private readonly only = new WeakMap<Uint8Array, { index: THREE.BufferAttribute; counts: number[] }>();
   /** REDUCED for a reduced basis: each drawn vertex gathers its welded vertex's samples */
   private readonly reduced: Record<string, number>;
 
@@ -181,6 +182,31 @@ export class DrawnLook {
         Float32Array);
       this.detail.set(fraction, level);
     }
+    this.useLevel(level);
+  }
+
+  /** Draw only the triangles with a vertex whose welded vertex is 1 in `mask` (a close-up's:
+   * `Deformer.drawOnly`), of every part, at full detail. */
+  drawOnly(mask: Uint8Array): void {
+    let level = this.only.get(mask);
+    if (!level) {
+      const full = this.detail.get(1)!, index = full.index.array as Uint32Array;
+      const parts: Uint32Array[] = [];
+      let start = 0;
+      for (const count of full.counts) {
+        parts.push(trianglesTouching(index.subarray(start, start + count), mask,
+          this.appearance.welded));
+        start += count;
+      }
+      const all = new Uint32Array(parts.reduce((total, part) => total + part.length, 0));
+      parts.reduce((at, part) => { all.set(part, at); return at + part.length; }, 0);
+      level = { index: new THREE.BufferAttribute(all, 1), counts: parts.map((part) => part.length) };
+      this.only.set(mask, level);
+    }
+    this.useLevel(level);
+  }
+
+  private useLevel(level: { index: THREE.BufferAttribute; counts: number[] }): void {
     if (this.geometry.index === level.index) return;
     this.geometry.setIndex(level.index);
     this.geometry.clearGroups();

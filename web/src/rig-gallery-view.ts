@@ -6,6 +6,7 @@
 // surface genes (docs/design.md#surface-of-a-rig): its tile ripples by them, and breeding
 // crosses them as Python's `breed` does.
 import * as api from "./api";
+import type { CloseUp, CloseUpShot } from "./close-up";
 import { $, fileName, saveJSON } from "./dom";
 import { fittedColumns } from "./grid";
 import { drivenHarmonics } from "./filter";
@@ -35,7 +36,7 @@ export function danceLabel(rig: Rig, prepared: RigPrepared): string {
  * unless the rig player's switch says clay (one switch for the rig's tiles and player). */
 export const RIG_LOOK: Look = { shading: "smooth", deformedNormalWeight: 1, materials: true };
 
-interface Tile { element: HTMLElement; view: HTMLElement; label: HTMLElement; }
+interface Tile { element: HTMLElement; view: HTMLElement; label: HTMLElement; closeUp?: CloseUpShot; }
 
 export interface RigGalleryEvents {
   status(text: string): void;
@@ -50,6 +51,8 @@ export interface RigGalleryEvents {
   timeScale(): number;
   /** the dances' generations or selection changed (the session keeps them) */
   changed?(): void;
+  /** a mode tile's close-up of the part that moves, or null: the mode is not localised */
+  closeUp?(prepared: RigPrepared): CloseUp | null;
 }
 
 export class RigGalleryView {
@@ -68,6 +71,8 @@ export class RigGalleryView {
   /** the surface section's dances while it is on (null: off, the dances are the bones' alone) */
   private surfaces: Mapping[] | null = null;
   private shape: { rig: Rig; aspect: number } | null = null;
+  /** the close-ups of the rig's modes (null: none), computed once per mode */
+  private readonly closeUps = new Map<number, CloseUp | null>();
 
   constructor(private readonly events: RigGalleryEvents) {
     $("rig-show-modes").addEventListener("click", () => this.setMode("modes"));
@@ -126,16 +131,26 @@ export class RigGalleryView {
 
   shots(): Shot[] {
     return this.tiles.map((tile, i) => ({ element: tile.view, prepared: this.prepared[i],
-      look: RIG_LOOK }));
+      look: RIG_LOOK, closeUp: tile.closeUp }));
   }
 
   views(): HTMLElement[] { return this.tiles.map((tile) => tile.view); }
 
   labels(): string[] { return this.tiles.map((tile) => tile.label.textContent ?? ""); }
 
+  /** Each tile's close-up (its corner, the moving part's vertices, share of the model and box
+   * in it, its turn from the tile's view and its tag), or null. */
+  closeUpsShown(): ({ corner: string; count: number; share: number; box: number[];
+    turn: number; tag: string } | null)[] {
+    return this.tiles.map(({ closeUp }) => closeUp ? { corner: closeUp.closeUp.corner,
+      count: closeUp.closeUp.count, share: closeUp.closeUp.share, box: closeUp.closeUp.box,
+      turn: closeUp.closeUp.turn, tag: closeUp.element.textContent ?? "" } : null);
+  }
+
   /** A new rig (or the same one edited: same modes kept selected when they still exist). */
   setRig(rig: Rig, fresh: boolean): void {
     this.rig = rig;
+    this.closeUps.clear(); // a new rest pose or stiffness: new modes
     if (fresh) {
       this.page = 0;
       this.selectedModes.clear();
@@ -314,6 +329,29 @@ export class RigGalleryView {
       }
       this.toggle(index);
     });
-    return { element, view: element.querySelector(".view") as HTMLElement, label };
+    const view = element.querySelector(".view") as HTMLElement;
+    const closeUp = this.mode === "modes" ? this.closeUpOf(prepared) : null;
+    return { element, view, label, closeUp: closeUp ? closeUpFrame(view, closeUp) : undefined };
   }
+
+  /** Mode `prepared`'s close-up (computed once per mode of the rig). */
+  private closeUpOf(prepared: RigPrepared): CloseUp | null {
+    const mode = prepared.selected[0];
+    if (!this.closeUps.has(mode)) this.closeUps.set(mode, this.events.closeUp?.(prepared) ?? null);
+    return this.closeUps.get(mode)!;
+  }
+}
+
+/** The close-up's frame in its corner of a mode tile's view, tagged (close-up.ts draws it). */
+function closeUpFrame(view: HTMLElement, closeUp: CloseUp): CloseUpShot {
+  const element = document.createElement("div");
+  element.className = `close-up ${closeUp.corner}`;
+  const side = ["", "side", "behind", "side"][closeUp.turn];
+  element.title = "close-up of the part this mode moves (it spans "
+    + `${Math.round(100 * closeUp.share)}% of the model): the same skin, seen nearer`
+    + (side ? `, from ${side === "side" ? "the side" : "the far side"} (where its motion `
+      + "shows), cut away before it" : "");
+  element.innerHTML = `<span class="tag">close-up${side ? `: ${side}` : ""}</span>`;
+  view.appendChild(element);
+  return { element, closeUp };
 }

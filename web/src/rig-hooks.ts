@@ -62,6 +62,8 @@ function rigReadHooks(app: App) {
     playerPixels: (step = 4): number[] => pixelsOf(rigs.viewer, [document.getElementById(
       "rig-player-area")!], step)[0],
     labels: () => rigs.gallery.labels(),
+    /** Each mode tile's close-up ({corner, share}) or null (close-up.ts). */
+    closeUps: () => rigs.gallery.closeUpsShown(),
   };
 }
 

@@ -3,6 +3,7 @@
 // own canvas) drawing the rig's modal skin through the harmonics' deformation machinery, the
 // rig's galleries and player, and the edits (pose, stiffness) that answer a new rig bundle.
 import * as api from "./api";
+import { closeUp } from "./close-up";
 import { $, messageOf } from "./dom";
 import { loadAppearance } from "./look";
 import type { Appearance } from "./look";
@@ -69,7 +70,8 @@ export class RigStage {
       open: (mapping, source) => void events.guard("Could not open the dance",
         () => this.openDance(mapping, source)),
       timeScale: () => this.player.palette?.time_scale ?? this.rig?.palette?.time_scale ?? 1,
-      changed: () => this.keep() });
+      changed: () => this.keep(),
+      closeUp: (prepared) => closeUp(this.viewer.deformer!.basis, this.motion.framingWeights(prepared)) });
     this.player = new RigPlayerView({ requestDraw, guard: events.guard,
       timeScaleChanged: () => { if (this.gallery.mode === "modes") this.gallery.refresh(); },
       pose: (joint, rotation) => this.poseJoint(joint, rotation),

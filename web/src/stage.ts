@@ -1,5 +1,6 @@
 // What a Viewer draws (viewer.ts): the views, the shots (a model, where, moved how, in which
 // look) and what moves them; types only, shared by the views and the viewers.
+import type { CloseUpShot } from "./close-up";
 import type { Prepared, Shading } from "./filter";
 
 export type View = "gallery" | "player";
@@ -15,8 +16,11 @@ export interface Look {
 }
 
 /** One model to draw: where on the page, moved by which (prepared) mapping, with which look;
- * `source` (the mapping) says when the player shows another one. */
-export interface Shot { element: HTMLElement; prepared: Prepared; look: Look; source?: object; }
+ * `source` (the mapping) says when the player shows another one; `closeUp`: a mode tile's
+ * close-up of the part that moves (close-up.ts). */
+export interface Shot {
+  element: HTMLElement; prepared: Prepared; look: Look; source?: object; closeUp?: CloseUpShot;
+}
 
 /** The harmonics explorer: colour the player's model by eigenvector `harmonic` (−1: off). */
 export interface Explorer { harmonic: number; scale: number; }

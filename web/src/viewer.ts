@@ -6,6 +6,7 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Basis } from "./bundle";
+import { CloseUpDrawer } from "./close-up";
 import { CLAY, Deformer, maxHarmonicsOnGPU } from "./deform";
 import { deformCPU } from "./filter";
 import type { Prepared } from "./filter";
@@ -68,6 +69,7 @@ export class Viewer {
   private readonly tileCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   private readonly controls: OrbitControls;
+  private readonly closeUps = new CloseUpDrawer(FIELD_OF_VIEW);
   private shape: Silhouette | null = null;
   private rim: Int32Array | null = null;
   /** each mapping's rim in its loudest poses, and its framings by view aspect */
@@ -303,6 +305,7 @@ export class Viewer {
       materials: look.materials,
     }, positions);
     renderer.render(deformer.scene, camera);
+    if (shot.closeUp) this.closeUps.draw(renderer, deformer, this.studio, shot.closeUp, height);
   }
 
   /** Frame the model for a view of this size: a tile at every frame (its framing is cached),
