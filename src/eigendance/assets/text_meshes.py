@@ -25,7 +25,17 @@ OBJ_ELEMENTS = (b"v", b"vt", b"vn")
 
 
 def read_text(path: str, name: str) -> bytes:
-    """The bytes of a mesh file, an unreadable one an InputError naming it."""
+    """The bytes of a mesh file, an unreadable one an InputError naming it.
+
+    Parameters
+    ----------
+    path : the file.
+    name : how messages call it.
+
+    Returns
+    -------
+    bytes.
+    """
     try:
         with open(path, "rb") as file:
             return file.read()
