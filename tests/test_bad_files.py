@@ -19,6 +19,14 @@ from helpers import fixture_path
 KNIGHT = fixture_path("meshes", "decimated-knight.off")  # OFF: 502 vertices, 1000 faces
 TETRA_OFF = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 0 2 3\n3 1 2 3\n"
 
+TETRA_PLY = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+             "end_header\n" + TETRA_OFF.split("\n", 2)[2])
+TETRA_STL = "solid t\n" + "".join(
+    f"facet normal 0 0 0\nouter loop\n{corners}endloop\nendfacet\n" for corners in
+    ["vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n", "vertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\n"]
+) + "endsolid t\n"
+
 
 def run(argv, capfd) -> tuple[int, str]:
     """(exit status, stderr) of one command run in-process."""
@@ -56,6 +64,12 @@ def knight_cut(fraction: float) -> bytes:
     ("counts.off", "OFF\n999999999999 1 0\n0 0 0\n",
      "the OFF header declares 999999999999 vertices and 1 faces; the file holds 1 vertices"),
     ("header.off", "OFF\n\n", "the OFF header must give the numbers of vertices and faces"),
+    # an ASCII PLY cut in its faces: trimesh read the faces there were (548 of the knight's
+    # 1000 at 80 % of its bytes)
+    ("faces.ply", TETRA_PLY.rsplit("3 0 2 3", 1)[0], "the PLY header declares 4 vertex and 4 "
+                                                     "face elements; the file holds 4 and 2"),
+    ("cut.stl", TETRA_STL.rsplit("facet", 1)[0], "an ASCII STL cut short (it does not end in "
+                                                 "endsolid)"),
     ("past.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 2 3 99\n",
      "line 6: a face uses vertex 99, but the file holds 4 vertices"),
     ("before.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\nv 0 0 1\n",
@@ -139,3 +153,14 @@ def test_a_read_only_output_folder_is_refused_before_the_work(tmp_path, capfd, m
     refused([*argv, "-o", folder / f"out{suffix}"], capfd,
             f"{folder}/out{suffix}: cannot write (Permission denied)")
     assert os.listdir(folder) == []
+
+
+@pytest.mark.parametrize("name, content", [("tetra.off", TETRA_OFF), ("tetra.ply", TETRA_PLY),
+                                           ("tetra.stl", TETRA_STL)])
+def test_the_whole_files_read(tmp_path, name, content):
+    """The files the tests above cut short are read whole: the checks refuse only the cut."""
+    path = tmp_path / name
+    path.write_text(content)
+    mesh = load_mesh(path)
+    # an STL's corners are welded: two triangles on one edge, 4 vertices
+    assert len(mesh.faces) == (2 if name.endswith(".stl") else 4) and len(mesh.vertices) == 4

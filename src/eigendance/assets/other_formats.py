@@ -21,6 +21,7 @@ from eigendance.assets.model import Model, combine
 from eigendance.assets.primitives import Piece
 from eigendance.assets.text_meshes import (
     check_off,
+    check_ply,
     check_stl_length,
     checked_obj,
     obj_with_absolute_indices,
@@ -55,6 +56,8 @@ def read_with_trimesh(path: str, name: str) -> Model:
     text = checked_obj(path, name) if obj else None  # relative indices made absolute
     if path.lower().endswith(".off"):
         check_off(path, name)
+    if path.lower().endswith(".ply"):
+        check_ply(path, name)
 
     def source():
         return (io.BytesIO(text), "obj") if text is not None else (path, None)

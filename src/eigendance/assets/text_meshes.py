@@ -1,9 +1,10 @@
 """The checks of a mesh file's own structure before trimesh reads it (docs/design.md#errors):
-OBJ face indices, OFF counts, a binary STL's length.
+OBJ face indices, OFF and ASCII PLY counts, an STL's length.
 
 trimesh reads what these formats allow in ways that are wrong without a word: an OBJ's face
 index 0 as the last vertex, a relative (negative) index as counted from the end of the file,
-an OFF whose faces stop short of the count its header declares as a smaller mesh. Each check
+an OFF or ASCII PLY whose faces stop short of the count its header declares as a smaller
+mesh. Each check
 here turns such a file into one `InputError` naming the file, the line and what is wrong, or
 into the text trimesh reads right (relative indices made absolute).
 """
@@ -150,8 +151,43 @@ def check_off(path: str, name: str) -> None:
                          "(a file cut short?)")
 
 
+def check_ply(path: str, name: str) -> None:
+    """InputError for an ASCII PLY file that holds fewer lines than the elements its header
+    declares (a file cut short: trimesh reads the faces there are as a smaller mesh; a binary
+    PLY cut short is refused by trimesh).
+
+    Parameters
+    ----------
+    path : the .ply file.
+    name : how messages call it.
+    """
+    data = read_text(path, name)
+    end = data.find(b"end_header")
+    if not data.startswith(b"ply") or end < 0:
+        return  # not a header trimesh reads: its own message says so
+    header = [line.split() for line in data[:end].decode("ascii", "replace").splitlines()]
+    if ["format", "ascii", "1.0"] not in header:
+        return
+    try:
+        elements = [(words[1], int(words[2])) for words in header if words[:1] == ["element"]]
+    except (IndexError, ValueError):
+        raise InputError(f"{name}: a PLY element must give its name and count") from None
+    body = sum(1 for line in data[end:].split(b"\n")[1:] if line.strip())
+    declared = sum(max(0, count) for _, count in elements)
+    if body < declared:
+        held, left = [], body
+        for _, count in elements:
+            held.append(min(left, count))
+            left -= held[-1]
+        raise InputError(f"{name}: the PLY header declares "
+                         + " and ".join(f"{count} {kind}" for kind, count in elements)
+                         + " elements; the file holds " + " and ".join(map(str, held))
+                         + " (a file cut short?)")
+
+
 def check_stl_length(path: str, name: str) -> None:
-    """InputError for a binary STL shorter than the triangle count of its header says.
+    """InputError for a binary STL shorter than the triangle count of its header says, or an
+    ASCII STL without its closing `endsolid` (cut short: trimesh reads none of its triangles).
 
     Parameters
     ----------
@@ -161,7 +197,11 @@ def check_stl_length(path: str, name: str) -> None:
     size = os.path.getsize(path)
     with open(path, "rb") as file:
         head = file.read(84)
-    if len(head) < 84 or head.lstrip().startswith(b"solid") and b"facet" in head:
+    if head.lstrip().startswith(b"solid") and b"facet" in head:
+        if b"endsolid" not in read_text(path, name)[-4096:]:
+            raise InputError(f"{name}: an ASCII STL cut short (it does not end in endsolid)")
+        return
+    if len(head) < 84:
         return
     count = int.from_bytes(head[80:84], "little")
     if 84 + 50 * count > size:
