@@ -164,3 +164,20 @@ def test_the_whole_files_read(tmp_path, name, content):
     mesh = load_mesh(path)
     # an STL's corners are welded: two triangles on one edge, 4 vertices
     assert len(mesh.faces) == (2 if name.endswith(".stl") else 4) and len(mesh.vertices) == 4
+
+
+def test_a_presets_folder_that_is_a_file_is_one_line(tmp_path, capfd):
+    """`serve --presets FILE` answered GET /api/presets with a 500 (NotADirectoryError); the
+    command line said 'no preset named …'. Now the store refuses it where it starts."""
+    from eigendance.errors import InputError
+    from eigendance.presets.store import PresetStore
+
+    taken = tmp_path / "presets"
+    taken.write_text("the user's file")
+    with pytest.raises(InputError, match="presets: the presets folder is a file, not a folder"):
+        PresetStore(taken)
+    soundfile.write(tmp_path / "song.wav", np.zeros(8000), 8000)
+    refused(["animate", KNIGHT, tmp_path / "song.wav", "--presets", taken, "--preset", "Kick",
+             "-o", tmp_path / "a.npz"], capfd,
+            f"{taken}: the presets folder is a file, not a folder")
+    assert sorted(os.listdir(tmp_path)) == ["presets", "song.wav"]
