@@ -181,3 +181,24 @@ def test_a_presets_folder_that_is_a_file_is_one_line(tmp_path, capfd):
              "-o", tmp_path / "a.npz"], capfd,
             f"{taken}: the presets folder is a file, not a folder")
     assert sorted(os.listdir(tmp_path)) == ["presets", "song.wav"]
+
+
+def test_nan_skin_weights_are_one_line_naming_them(tmp_path, capfd):
+    """A NaN in a skin's weights blended the bind pose into NaN positions: the message named
+    the positions ('vertex positions must be finite'), which the file holds finite."""
+    import pygltflib
+
+    document = pygltflib.GLTF2().load(fixture_path("rigged", "RiggedSimple.glb"))
+    accessor = document.accessors[document.meshes[0].primitives[0].attributes.WEIGHTS_0]
+    view = document.bufferViews[accessor.bufferView]
+    blob = bytearray(document.binary_blob())
+    start = (view.byteOffset or 0) + (accessor.byteOffset or 0)
+    blob[start:start + 4] = np.float32(np.nan).tobytes()  # vertex 0's first weight
+    document.set_binary_blob(bytes(blob))
+    path = tmp_path / "weights.glb"
+    path.write_bytes(b"".join(document.save_to_bytes()))
+    for command in ("modes", "animate-rig"):
+        refused([command, path, "-o", tmp_path / "out.npz"], capfd,
+                "weights.glb: mesh 0 primitive 0: WEIGHTS_0 holds NaN or infinite weights "
+                "(1 vertices, the first 0)")
+    assert sorted(os.listdir(tmp_path)) == ["weights.glb"]
