@@ -202,3 +202,15 @@ def test_nan_skin_weights_are_one_line_naming_them(tmp_path, capfd):
                 "weights.glb: mesh 0 primitive 0: WEIGHTS_0 holds NaN or infinite weights "
                 "(1 vertices, the first 0)")
     assert sorted(os.listdir(tmp_path)) == ["weights.glb"]
+
+
+def test_a_single_triangle_at_the_default_k_names_the_file_and_the_k_that_fits(tmp_path, capfd):
+    """Was 'k = 150 harmonics need a mesh of more than 150 vertices; this one has 3': no file,
+    no way out. A triangle's 3 vertices hold at most 2 harmonics besides the constant."""
+    path = tmp_path / "triangle.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    refused(["basis", path, "-o", tmp_path / "b.npz"], capfd,
+            "triangle.obj: k = 150 harmonics need a mesh of more than 150 vertices; this one "
+            "has 3; try -k 2")
+    status, err = run(["basis", path, "-k", 2, "-o", tmp_path / "b.npz"], capfd)
+    assert status == 0, err
