@@ -62,6 +62,10 @@ def open_regular(path: str | os.PathLike, what: str | None = None) -> BinaryIO:
     return os.fdopen(descriptor, "rb")
 
 
+# The first bytes of a zip archive (an .npz): a local file header, or an empty one's end record.
+ZIP_MAGIC = (b"PK\x03\x04", b"PK\x05\x06")
+
+
 def read_npz(path: str | os.PathLike, what: str | None = None) -> dict[str, np.ndarray]:
     """Every array of an .npz file, each member's declared size checked first.
 
@@ -77,6 +81,11 @@ def read_npz(path: str | os.PathLike, what: str | None = None) -> dict[str, np.n
     """
     what = what or os.fspath(path)
     with open_regular(path, what) as file:
+        head = file.read(4)
+        if head not in ZIP_MAGIC:  # np.load would take it for an .npy or a pickle
+            raise InputError(f"{what}: not an .npz file (an .npz is a zip archive; this one "
+                             f"begins {head!r})")
+        file.seek(0)
         try:
             with np.load(file, allow_pickle=False) as data:
                 _check_declared(data.zip, what)

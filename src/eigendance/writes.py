@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import errno
 import fcntl
 import os
 import re
@@ -401,6 +402,31 @@ def refuse_overwrite(path, force: bool, inputs=()) -> None:
     refuse_input(path, inputs)
     if os.path.exists(path) and not force:
         raise InputError(f"{path} exists", remedy={"force": True})
+    check_writable(path)
+
+
+def check_writable(path) -> None:
+    """InputError unless a file can be made at `path`: the nearest folder above it that exists
+    (the write makes the rest) is a folder, and one this process may write in, on a file system
+    mounted for writing. Said before the work, not after it.
+
+    Parameters
+    ----------
+    path : the output.
+    """
+    path = os.path.abspath(os.fspath(path))
+    folder = os.path.dirname(path)
+    while not os.path.lexists(folder) and os.path.dirname(folder) != folder:
+        folder = os.path.dirname(folder)
+    if not os.path.isdir(folder):
+        raise InputError(f"{path}: cannot write ({folder} is a file, not a folder)")
+    if not os.access(folder, os.W_OK | os.X_OK):  # EROFS for a read-only mount, root too
+        try:
+            read_only = os.statvfs(folder).f_flag & os.ST_RDONLY
+        except OSError:
+            read_only = False
+        why = os.strerror(errno.EROFS if read_only else errno.EACCES)
+        raise InputError(f"{path}: cannot write ({why})")
 
 
 def refuse_input(path, inputs) -> None:

@@ -63,7 +63,7 @@ def test_load_rejects_other_files(tmp_path):
     with pytest.raises(EigendanceError, match="missing"):
         HarmonicBasis.load(path)
     (tmp_path / "junk.npz").write_bytes(b"not a zip")
-    with pytest.raises(EigendanceError, match="not a readable"):
+    with pytest.raises(EigendanceError, match="not an .npz file"):
         HarmonicBasis.load(tmp_path / "junk.npz")
 
 

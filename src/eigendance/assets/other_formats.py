@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import contextlib
 import importlib.util
+import io
 import os
-import re
 
 import numpy as np
 
@@ -19,6 +19,14 @@ from eigendance.assets.appearance import srgb_to_linear
 from eigendance.assets.materials import Images, check_image_header, trimesh_material
 from eigendance.assets.model import Model, combine
 from eigendance.assets.primitives import Piece
+from eigendance.assets.text_meshes import (
+    check_off,
+    check_ply,
+    check_stl_length,
+    checked_obj,
+    obj_with_absolute_indices,
+    read_text,
+)
 from eigendance.errors import InputError, one_line
 from eigendance.writes import swept_locked_folder
 
@@ -28,9 +36,6 @@ CONVERTIBLE = {".fbx": "import_scene.fbx", ".blend": None, ".dae": "wm.collada_i
 # The converter's temporary folders: each holds its lock while Blender converts; the next
 # conversion sweeps those that killed processes left (`writes.swept_locked_folder`).
 CONVERT_PREFIX = "eigendance-convert-"
-# An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
-# last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
-OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n]|$)", re.M)
 
 
 def read_with_trimesh(path: str, name: str) -> Model:
@@ -47,25 +52,35 @@ def read_with_trimesh(path: str, name: str) -> Model:
     """
     import trimesh  # heavy (≈0.8 s): imported when a mesh file is read
 
-    if path.lower().endswith(".obj"):
-        _check_obj_indices(path, name)
+    obj = path.lower().endswith(".obj")
+    text = checked_obj(path, name) if obj else None  # relative indices made absolute
+    if path.lower().endswith(".off"):
+        check_off(path, name)
+    if path.lower().endswith(".ply"):
+        check_ply(path, name)
+
+    def source():
+        return (io.BytesIO(text), "obj") if text is not None else (path, None)
+
     try:
         resolver = _FolderResolver(path, name)
-        loaded = trimesh.load(path, process=False, resolver=resolver)
+        loaded = trimesh.load(*source(), process=False, resolver=resolver)
         geometries = list(loaded.geometry.values()) if isinstance(loaded, trimesh.Scene) \
             else [loaded]
         styled = any(_styled(geometry) for geometry in geometries)
         if not styled:  # exactly the vertices and triangles eigendance has always read
-            geometries = [trimesh.load(path, force="mesh", process=False)]
+            geometries = [trimesh.load(*source(), force="mesh", process=False)]
     except InputError:
         raise
     except Exception as error:  # trimesh raises many types for malformed files
+        if obj:  # which line is at fault, where it is an index
+            obj_with_absolute_indices(read_text(path, name), name)
         raise InputError(f"{name}: cannot read the mesh ({one_line(error, 200)})") from None
     geometries = [g for g in geometries if len(getattr(g, "faces", None) if
                                                 hasattr(g, "faces") else []) > 0]
     if not geometries:
         if path.lower().endswith(".stl"):
-            _check_stl_length(path, name)
+            check_stl_length(path, name)
         raise InputError(f"{name}: the file holds no triangles (a point cloud or empty mesh)")
     images = Images()
     pieces, materials = [], []
@@ -137,32 +152,6 @@ class _FolderResolver:
 
     def write(self, name, data):
         raise PermissionError("read only")
-
-
-def _check_obj_indices(path: str, name: str) -> None:
-    """InputError for a face corner with vertex index 0, which OBJ does not have."""
-    try:
-        with open(path, "rb") as file:
-            found = OBJ_ZERO_INDEX.search(file.read())
-    except OSError as error:
-        raise InputError(f"{name}: cannot read ({error.strerror})") from None
-    if found:
-        line = found.string.count(b"\n", 0, found.start()) + 1
-        raise InputError(f"{name}: line {line}: a face uses vertex index 0 (OBJ counts vertices "
-                         "from 1)")
-
-
-def _check_stl_length(path: str, name: str) -> None:
-    """InputError for a binary STL shorter than the triangle count of its header says."""
-    size = os.path.getsize(path)
-    with open(path, "rb") as file:
-        head = file.read(84)
-    if len(head) < 84 or head.lstrip().startswith(b"solid") and b"facet" in head:
-        return
-    count = int.from_bytes(head[80:84], "little")
-    if 84 + 50 * count > size:
-        raise InputError(f"{name}: truncated binary STL: the header announces {count} "
-                         f"triangles, the file holds {(size - 84) // 50}")
 
 
 def blender_available() -> bool:

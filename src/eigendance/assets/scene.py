@@ -277,6 +277,10 @@ def _bind(gltf: GltfFile, piece: Piece, primitive, skinning, n_joints: int, what
         values = attributes.get(f"WEIGHTS_{set_index}")
         if values is None:
             raise gltf.message(f"{what}: JOINTS_{set_index} without WEIGHTS_{set_index}")
+        bad = np.flatnonzero(~np.isfinite(values).all(axis=-1))
+        if len(bad):  # it would blend the bind pose into NaN positions
+            raise gltf.message(f"{what}: WEIGHTS_{set_index} holds NaN or infinite weights "
+                               f"({len(bad)} vertices, the first {bad[0]})")
         if joints.min(initial=0) < 0 or joints.max(initial=0) >= len(columns):
             raise gltf.message(f"{what}: a vertex names joint {joints.max()} of a "
                                f"{len(columns)}-joint skin")

@@ -38,7 +38,7 @@ from eigendance.harmonic.construction import (
 )
 from eigendance.harmonic.contacts import Contacts, contacts
 from eigendance.harmonic.deform import Deformer
-from eigendance.harmonic.eigensolver import SOLVERS, solve
+from eigendance.harmonic.eigensolver import SOLVERS, check_request, solve
 from eigendance.harmonic.laplacian import LAPLACIANS, laplacian_for
 from eigendance.harmonic.laplacian import laplacian as build_laplacian
 from eigendance.harmonic.mesh import Mesh, load_mesh
@@ -549,6 +549,7 @@ class HarmonicProblem:
     def _exact(self, k: int, progress) -> tuple[dict, float]:
         """The eigenpairs on every vertex, planned against the memory available."""
         mesh = self.mesh
+        check_request(mesh.n, k, mesh.name)
         per_harmonic = SOLVE_BYTES_PER_VALUE * mesh.n
         fits = int(memory_budget() // per_harmonic)
         check_memory(per_harmonic * k, f"{mesh.name}: {k} harmonics of {mesh.n} vertices",

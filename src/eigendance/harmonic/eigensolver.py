@@ -36,19 +36,21 @@ SOLVER_VERSION = 3  # part of every cache key: a new version recomputes cached b
 DENSE_VERTICES = 600
 
 
-def check_request(n: int, k: int) -> None:
-    """InputError unless k harmonics of an n-vertex mesh can be asked for (1 ≤ k, k ≤ n − 1).
+def check_request(n: int, k: int, name: str = "the mesh") -> None:
+    """InputError unless k harmonics of an n-vertex mesh can be asked for (1 ≤ k, k ≤ n − 1);
+    its remedy the largest k that can.
 
     Parameters
     ----------
     n : vertices.
     k : harmonics.
+    name : how the message calls the mesh.
     """
     if k < 1:
         raise InputError(f"k must be at least 1, got {k}")
     if k >= n:
-        raise InputError(f"k = {k} harmonics need a mesh of more than {k} vertices; "
-                         f"this one has {n}")
+        raise InputError(f"{name}: k = {k} harmonics need a mesh of more than {k} vertices; "
+                         f"this one has {n}", remedy={"k": n - 1} if n > 1 else None)
 
 
 def solve_eigsh(stiffness: sp.spmatrix, mass: np.ndarray, k: int,

@@ -124,7 +124,9 @@ def _open_pyav(path: str):
     try:
         container = av.open(path)
     except Exception as error:
-        raise InputError(f"{name}: not a readable audio file ({one_line(error)})") from None
+        # FFmpeg's own words, without its error number and the file's path
+        why = getattr(error, "strerror", None) or one_line(error)
+        raise InputError(f"{name}: not a readable audio file ({why})") from None
     streams = [stream for stream in container.streams if stream.type == "audio"]
     if not streams:
         container.close()

@@ -212,6 +212,12 @@ class PresetStore:
     def __init__(self, folder: str | os.PathLike):
         self.folder = os.fspath(folder)
         self.lock = threading.Lock()
+        self._check_folder()
+
+    def _check_folder(self) -> None:
+        """InputError when something other than a folder stands where the presets live."""
+        if os.path.exists(self.folder) and not os.path.isdir(self.folder):
+            raise InputError(f"{self.folder}: the presets folder is a file, not a folder")
 
     def _path(self, name: str, suffix: str = ".json") -> str:
         return os.path.join(self.folder, check_name(name) + suffix)
@@ -227,6 +233,9 @@ class PresetStore:
             files = os.listdir(self.folder)
         except FileNotFoundError:
             return []
+        except NotADirectoryError:  # made a file since
+            self._check_folder()
+            raise
         names = [f[:-5] for f in files if f.endswith(".json") and NAME_PATTERN.fullmatch(f[:-5])]
         return sorted(names, key=str.casefold)
 

@@ -142,8 +142,12 @@ def _cue(table, index: int, folder: str, fade: float, path: str) -> Cue:
         raise InputError(f"{where}: until must be one of {', '.join(UNTIL)}")
     if until == "bars" and (bars is None or not 1 <= bars <= 10000):
         raise InputError(f"{where}: bars must be a whole number of bars, 1–10000")
-    model = model_source(model, folder)  # a file, or a built-in rig as the commands take it
-    song = None if song is None else os.path.abspath(check_readable(os.path.join(folder, song)))
+    try:
+        model = model_source(model, folder)  # a file, or a built-in rig as the commands take it
+        song = None if song is None else os.path.abspath(check_readable(os.path.join(folder,
+                                                                                     song)))
+    except InputError as error:  # which cue of which set names the file
+        raise InputError(f"{where}: {error}", status=error.status) from None
     name = _get(table, "name", str, where) or preset or os.path.basename(model)
     return Cue(one_line(name, 60), model, song, live, preset, until,
                bars or 0, bool(_get(table, "loop", bool, where, False)), _fade(table, where, fade))
