@@ -220,9 +220,10 @@ def test_a_rigs_palette_and_dances_survive_a_reload_and_a_file(browser, live_ser
         page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
         page.evaluate("window.eigendance.ready")
         open_rig_from_menu(page, url, "hand")
-        assert rig_state(page) == before
+        assert page.locator("#rig-show-modes.active").is_visible()  # the modes' bar
         with page.expect_download() as saved:
-            page.click("#rig-save-session")  # the rig's dances bar
+            page.click("#rig-save-session")  # there too, not only in the dances' bar
+        assert rig_state(page) == before
         session = tmp_path / saved.value.suggested_filename
         saved.value.save_as(session)
         assert saved.value.suggested_filename == "hand-session.json"

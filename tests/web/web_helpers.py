@@ -30,13 +30,14 @@ def free_port() -> int:
 
 
 @contextlib.contextmanager
-def running_server(arguments, folder, cache, command="serve", ready="serving on"):
+def running_server(arguments, folder, cache, command="serve", ready="serving on", port=None):
     """`eigendance serve ARGUMENTS --port P` (or another COMMAND announcing READY) as a
-    subprocess on a free port of 127.0.0.1, its log in FOLDER/server.log and its basis cache in
+    subprocess on PORT of 127.0.0.1 (a free one by default: the same PORT again is the same
+    origin, the page's storage with it), its log in FOLDER/server.log and its basis cache in
     CACHE, its presets in FOLDER/presets unless ARGUMENTS say --presets (never the user's: a
     session's server starts before a test's own folders are set): {url, port, process,
     announce}."""
-    port = free_port()
+    port = port or free_port()
     env = dict(os.environ, EIGENDANCE_CACHE_DIR=str(cache),
                EIGENDANCE_PRESETS_DIR=os.path.join(folder, "presets"))
     command = [sys.executable, "-m", "eigendance.cli", command, *arguments, "--port", str(port)]

@@ -20,7 +20,7 @@ import type { GalleryRule, Options } from "./options";
 import { PlayerView } from "./player-view";
 import { drawBeat, drawSpectrum } from "./plots";
 import { Recorder } from "./recorder";
-import { loadStartSong, startModel, storedSession } from "./session";
+import { keepInSession, loadStartSong, restoreStored, songOf, startModel } from "./session";
 import { RigStage } from "./rigs";
 import { AudioTransport } from "./transport";
 import { Viewer, softwareRenderer } from "./viewer";
@@ -83,8 +83,6 @@ export class App {
     this.library = new Library(options, this.motion, this.viewer, this.transport,
       (text, fraction) => messages.loading(text, fraction), (text) => messages.error(text));
     this.library.onBasis = () => { this.gallery.refresh(); this.player.basisChanged(); };
-    const stored = storedSession();
-    if (stored) this.gallery.restore(stored.histories);
     this.live = new LiveSource({ transport: this.transport, motion: this.motion,
       error: (text) => messages.error(text), status, requestDraw: () => this.requestDraws(),
       restoreSong: () => this.restoreSong(),
@@ -132,7 +130,7 @@ export class App {
     if (!hooks) this.messages.helpOnFirstVisit();
     try {
       await this.readConfig();
-      await this.loadFirst(await this.library.refresh());
+      await this.loadFirst(restoreStored(this, await this.library.refresh())); // a reload
     } catch (error) {
       this.messages.error(`The page could not start: ${messageOf(error)}`);
     }
@@ -218,6 +216,7 @@ export class App {
   async changeSong(songId: string): Promise<void> {
     this.live.stop();
     await this.library.loadSong(songId);
+    keepInSession({ song: songOf(this) }); // the song the galleries are calibrated on
     await this.newGallery();
     await this.rigs.songChanged();
     this.exporter.refresh();

@@ -7,8 +7,8 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
-import { keepInSession, modelOf, namesOf, readSession, resumeModel, resumeSong, sessionOf,
-  songOf, translated } from "./session";
+import { keepInSession, matched, modelOf, named, readSession, restoreSession, resumeModel,
+  resumeSong, sessionOf, songOf } from "./session";
 
 export function wireHeader(app: App): void {
   const valueOf = (event: Event) => (event.target as HTMLInputElement | HTMLSelectElement).value;
@@ -56,8 +56,8 @@ export function wireHeader(app: App): void {
       async () => {
         const session = sessionOf(app.gallery.snapshot(), app.rigs.sessions.snapshot(),
           songOf(app), modelOf(app));
-        const names = namesOf(await library.refresh()); // found by name by a server run again
-        saveJSON({ ...session, names }, fileName(app.rigs.active ? app.rigs.rig?.name ?? ""
+        await library.refresh(); // the names, found by name by a server run again
+        saveJSON(named(session), fileName(app.rigs.active ? app.rigs.rig?.name ?? ""
           : app.library.meshName, "session", "json"));
       }));
   }
@@ -70,15 +70,14 @@ export function wireHeader(app: App): void {
       void messages.guard(`Could not open ${file.name}`, async () => {
         // The song first: choosing it calibrates a new first generation, which the file replaces.
         const held = await library.refresh();
-        const session = translated(readSession(await file.text()), held); // ids of another run
-        const known = await resumeSong(app, session.song, held);
-        app.gallery.restore(session.histories);
-        app.rigs.restore(session.rigs ?? {});
+        const read = readSession(await file.text());
+        const match = matched(read, held); // ids of another run found by name
+        await resumeSong(app, match.session.song, held);
+        const line = restoreSession(app, match, read); // as a reload restores the stored one
         if (!app.rigs.active) app.gallery.showMesh(library.meshId);
-        await resumeModel(app, session.model, held); // the model it was saved on
-        const count = Object.keys(session.histories).length + Object.keys(session.rigs ?? {}).length;
-        messages.status(`${file.name}: ${count} model(s) restored`
-          + (known ? "" : "; its song is no longer in the library"));
+        await resumeModel(app, match.session.model, held); // the model it was saved on
+        keepInSession({ song: songOf(app), model: modelOf(app) }); // the song now playing
+        messages.status(`${file.name}: ${line}`);
       });
     });
   }

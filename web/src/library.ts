@@ -6,6 +6,7 @@ import { $, messageOf } from "./dom";
 import { loadAppearance } from "./look";
 import type { Motion } from "./motion";
 import type { Options } from "./options";
+import { rememberNames } from "./session";
 import type { AudioTransport } from "./transport";
 import type { Viewer } from "./viewer";
 
@@ -40,6 +41,7 @@ export class Library {
   async refresh(): Promise<api.Library> {
     const items = await api.library();
     this.items = items;
+    rememberNames(items); // the session names what it holds (session.ts)
     const models = $<HTMLSelectElement>("mesh");
     const shown = models.value; // a rig, while one is on screen
     fillSelect(models, items.meshes, this.loading ?? this.meshId);

@@ -1,13 +1,11 @@
 // The rigs' part of the session (session.ts, issue 30): per rig, its dances' generations, the one
 // shown, the dances selected and the player's mapping with its palette — kept in the browser
-// after every change, so that a reload (or *open session*) shows them again when the rig opens.
+// after every change, so that a reload (or *open session*) shows them again when the rig opens (restoreSession brings them).
 import type { SavedRig } from "./session";
-import { keepInSession, storedSession } from "./session";
+import { keepInSession } from "./session";
 
 export class RigSessions {
   private readonly saved = new Map<string, SavedRig>();
-
-  constructor() { this.restore(storedSession()?.rigs ?? {}); }
 
   /** Rigs of a saved session, in place of these rigs' (others stay). */
   restore(rigs: Record<string, SavedRig>): void {

@@ -41,43 +41,113 @@ export function sessionOf(histories: Record<string, SavedHistory>,
     ...(model ? { model } : {}) };
 }
 
-/** Keep parts of the session in the browser, the others as they are kept. */
+/** Keep parts of the session in the browser, the others as they are kept (with their names). */
 export function keepInSession(part: { histories?: Record<string, SavedHistory>;
   rigs?: Record<string, SavedRig>; song?: SavedSong; model?: SavedModel }): void {
   const kept = storedSession();
-  storeSession(sessionOf(part.histories ?? kept?.histories ?? {}, part.rigs ?? kept?.rigs ?? {},
-    part.song ?? kept?.song, part.model ?? kept?.model));
+  storeSession(named(sessionOf(part.histories ?? kept?.histories ?? {},
+    part.rigs ?? kept?.rigs ?? {}, part.song ?? kept?.song, part.model ?? kept?.model),
+  kept?.names));
 }
 
-/** The names of the library's models, rigs and songs by id, written in a session file: a server
- * started again gives its items new ids, and *open session* finds them by these names. */
-export function namesOf(library: api.Library): Record<string, string> {
-  const names: Record<string, string> = {};
+/** the library's names by id as last read (Library.refresh calls rememberNames) */
+let libraryNames: Record<string, string> = {};
+
+/** Remember the names of the library's models, rigs and songs: a session (kept in the browser
+ * or in a file) names what it holds, since a server started again gives its items new ids. */
+export function rememberNames(library: api.Library): void {
+  libraryNames = {};
   for (const item of [...library.meshes, ...library.rigs ?? [], ...library.songs]) {
-    names[item.id] = item.name;
+    libraryNames[item.id] = item.name;
   }
-  return names;
 }
 
-/** A session file's models, rigs and songs that the library no longer has by their ids (a
- * server started again), found by the name the file gives them: the library's one item of
- * that kind with that name, where there is exactly one. */
-export function translated(session: Session, library: api.Library): Session {
+/** `session` with `names` (`{id: name}`) for each model, rig and song it holds: the library's
+ * name, else the one it had (`older`: an item not served now keeps its name). */
+export function named(session: Session, older: Record<string, string> = {}): Session {
+  const names: Record<string, string> = {};
+  for (const id of heldIds(session)) {
+    const name = libraryNames[id] ?? older[id];
+    if (name !== undefined) names[id] = name;
+  }
+  return { ...session, names };
+}
+
+function heldIds(session: Session): string[] {
+  return [...Object.keys(session.histories), ...Object.keys(session.rigs ?? {}),
+    ...(session.song ? [session.song.id] : []), ...(session.model ? [session.model.id] : [])];
+}
+
+/** A session matched to the library: its ids that the library no longer has (a server started
+ * again) found by name, `count` models and rigs the library has, and `missing`: one line naming
+ * what is not served any more, or whose name several items share (never guessed), or "". */
+export interface Matched { session: Session; count: number; missing: string; }
+
+/** Match `session` to `library`: an id the library lacks becomes the id of the library's one
+ * item of that kind with the name the session gives it. */
+export function matched(session: Session, library: api.Library): Matched {
   const names = session.names ?? {};
+  const gone = new Set<string>(), shared = new Set<string>(), moved = new Map<string, string>();
   const finder = (items: { id: string; name: string }[]) => (id: string): string => {
-    if (items.some((item) => item.id === id) || !(id in names)) return id;
-    const same = items.filter((item) => item.name === names[id]);
-    return same.length === 1 ? same[0].id : id;
+    if (items.some((item) => item.id === id)) return id;
+    const same = items.filter((item) => id in names && item.name === names[id]);
+    if (same.length === 1) moved.set(id, same[0].id);
+    else (same.length ? shared : gone).add(names[id] ?? id);
+    return moved.get(id) ?? id;
   };
   const mesh = finder(library.meshes), rig = finder(library.rigs ?? []);
   const song = finder(library.songs);
   const rekeyed = <T>(record: Record<string, T>, find: (id: string) => string) =>
     Object.fromEntries(Object.entries(record).map(([id, value]) => [find(id), value]));
   const model = session.model;
-  return { ...session, histories: rekeyed(session.histories, mesh),
-    rigs: rekeyed(session.rigs ?? {}, rig),
+  const histories = rekeyed(session.histories, mesh), rigs = rekeyed(session.rigs ?? {}, rig);
+  const out: Session = { ...session, histories, rigs,
     ...(session.song ? { song: { ...session.song, id: song(session.song.id) } } : {}),
     ...(model ? { model: { ...model, id: (model.kind === "rig" ? rig : mesh)(model.id) } } : {}) };
+  out.names = Object.fromEntries(Object.entries(names).map(([id, name]) => [
+    moved.get(id) ?? id, name]));
+  const held = (items: { id: string }[]) => (id: string) => items.some((item) => item.id === id);
+  const count = Object.keys(histories).filter(held(library.meshes)).length
+    + Object.keys(rigs).filter(held(library.rigs ?? [])).length;
+  const missing = [gone.size ? `not served any more: ${[...gone].join(", ")}` : "",
+    shared.size ? `served twice, not guessed: ${[...shared].join(", ")}` : ""];
+  return { session: out, count, missing: missing.filter(Boolean).join("; ") };
+}
+
+/** Restore a matched session (kept in the browser, or a file opened): its models' and rigs'
+ * galleries in place of theirs (others stay), kept in the browser with this run's ids. The
+ * song and the model are the caller's to resume (startModel, loadStartSong; resumeSong,
+ * resumeModel). One line: "N models restored" and what is missing. */
+export function restoreSession(app: App, { session, count, missing }: Matched,
+                               original: Session): string {
+  app.gallery.restore(session.histories);
+  app.rigs.restore(session.rigs ?? {});
+  const kept = storedSession();
+  const others = <T>(record: Record<string, T> | undefined, ...replaced: Record<string, unknown>[]) =>
+    Object.fromEntries(Object.entries(record ?? {}).filter(
+      ([id]) => !replaced.some((ids) => id in ids)));
+  storeSession(named(sessionOf(
+    { ...others(kept?.histories, original.histories, session.histories), ...session.histories },
+    { ...others(kept?.rigs, original.rigs ?? {}, session.rigs ?? {}), ...session.rigs },
+    session.song ?? kept?.song, session.model ?? kept?.model),
+  { ...kept?.names, ...session.names }));
+  const restored = `${count} ${count === 1 ? "model" : "models"} restored`;
+  return missing ? `${restored}; ${missing}` : restored;
+}
+
+/** At start (a reload): the session kept in the browser restored as *open session* restores a
+ * file (matched to this run's library by name); what it holds that is not served any more, or
+ * whose name several items share, is said in one line. Returns `library`. */
+export function restoreStored(app: App, library: api.Library): api.Library {
+  const stored = storedSession();
+  if (!stored) return library;
+  const match = matched(stored, library);
+  restoreSession(app, match, stored);
+  if (match.missing) {
+    app.messages.error(`The session kept in this browser: ${match.missing} (kept for when `
+      + "it is served again); the rest is restored");
+  }
+  return library;
 }
 
 /** The model on screen: the rig shown, else the mesh (undefined before one is loaded). */
@@ -137,6 +207,7 @@ export async function loadStartSong(app: App, library: api.Library): Promise<voi
   const known = kept && library.songs.some((song) => song.id === kept.id);
   await app.library.loadSong(app.options.song ?? (known ? kept.id : library.songs[0].id));
   if (kept?.id === app.library.songId) seekTo(app, kept.time);
+  keepInSession({ song: songOf(app) }); // the session's song is the one playing
 }
 
 /** A session file's song: chosen as in the song menu (the galleries calibrated on it) when the

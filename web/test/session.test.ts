@@ -2,7 +2,7 @@
 // library's ids are new, and the file's models, rigs and songs are found by their names.
 import { describe, expect, it } from "vitest";
 import type { Library } from "../src/api";
-import { namesOf, sessionOf, translated } from "../src/session";
+import { matched, named, rememberNames, sessionOf } from "../src/session";
 
 const mesh = (id: string, name: string) => ({ id, name, k: 8, vertices: 9, ready: true,
   job: null });
@@ -12,29 +12,40 @@ describe("a session file in another run of the server", () => {
   const before: Library = { meshes: [mesh("old-cat", "cat.obj")], mappings: [],
     songs: [{ id: "old-song", name: "song.wav", duration: 6 }],
     rigs: [{ id: "old-hand", name: "hand", ready: true }] };
-  const file = { ...sessionOf({ "old-cat": history }, {}, { id: "old-song", time: 2 },
-    { kind: "rig", id: "old-hand" }), names: namesOf(before) };
+  rememberNames(before);
+  const file = named(sessionOf({ "old-cat": history }, {}, { id: "old-song", time: 2 },
+    { kind: "rig", id: "old-hand" }));
 
   it("finds each model, rig and song by its name", () => {
     const now: Library = { meshes: [mesh("new-cat", "cat.obj")], mappings: [],
       songs: [{ id: "new-song", name: "song.wav", duration: 6 }],
       rigs: [{ id: "new-hand", name: "hand", ready: true }] };
-    const session = translated(file, now);
+    const { session, count, missing } = matched(file, now);
     expect(Object.keys(session.histories)).toEqual(["new-cat"]);
+    expect([count, missing]).toEqual([1, ""]);
+    expect(session.names).toEqual({ "new-cat": "cat.obj", "new-song": "song.wav",
+      "new-hand": "hand" });
     expect(session.song).toEqual({ id: "new-song", time: 2 });
     expect(session.model).toEqual({ kind: "rig", id: "new-hand" });
+  });
+
+  it("names only what the session holds", () => {
+    expect(file.names).toEqual({ "old-cat": "cat.obj", "old-song": "song.wav",
+      "old-hand": "hand" });
   });
 
   it("keeps an id whose name is missing or twice in the library", () => {
     const now: Library = { meshes: [mesh("a", "cat.obj"), mesh("b", "cat.obj")], mappings: [],
       songs: [], rigs: [] };
-    const session = translated(file, now);
+    const { session, count, missing } = matched(file, now);
     expect(Object.keys(session.histories)).toEqual(["old-cat"]);
+    expect(count).toBe(0); // said, not guessed: one line
+    expect(missing).toBe("not served any more: song.wav, hand; served twice, not guessed: cat.obj");
     expect(session.song?.id).toBe("old-song");
     expect(session.model?.id).toBe("old-hand");
   });
 
   it("keeps the ids the library still has (a reload of the same run)", () => {
-    expect(translated(file, before)).toEqual(file);
+    expect(matched(file, before)).toEqual({ session: file, count: 1, missing: "" });
   });
 });
