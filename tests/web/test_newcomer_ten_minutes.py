@@ -73,8 +73,8 @@ def test_a_live_input_is_not_exported_as_the_song_before_it(browser, live_server
     (0.1 s from where the live clock was): the panel says why it cannot export instead."""
     with chromium(browser, FAKE + [GRANT], live_server["url"], "?test&size=2") as page:
         page.select_option("#song", label="microphone or line in (default input)")
-        page.wait_for_function("document.getElementById('live-info').textContent"
-                               ".includes('Fake')", timeout=30_000)
+        page.wait_for_function("document.getElementById('song').selectedOptions[0]"
+                               ".textContent.includes('Fake')", timeout=30_000)  # the input
         page.locator("#tiles .open").nth(0).click()
         page.click("#export-open")
         assert page.locator("#export-panel").is_visible()
