@@ -54,6 +54,12 @@ def test_remove_buttons_take_items_out_of_the_library_and_the_menus(browser, own
                                timeout=10_000)
         assert library_at(url)["mappings"] == []
         assert page.evaluate("window.eigendance.info().error") is None
+        # Removed on purpose, the model is not missed by a reload (the session forgot it).
+        page.reload()
+        page.wait_for_function("window.eigendance && window.eigendance.ready", timeout=60_000)
+        page.evaluate("window.eigendance.ready")
+        assert page.locator("#error").is_hidden(), page.text_content("#error")
+        assert menu(page, "mesh") == ["sphere.obj"]
         assert page.errors == []
     finally:
         page.close()

@@ -156,6 +156,12 @@ export class GalleryView {
     }
   }
 
+  /** Forget model `id`'s history (removed from the library on purpose). */
+  forget(id: string): void {
+    this.histories.delete(id);
+    this.restoredSelection.delete(id);
+  }
+
   /** Keep the session in the browser after every change. */
   private persist(): void { keepInSession({ histories: this.snapshot() }); }
 

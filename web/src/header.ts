@@ -7,7 +7,7 @@ import { $, fileName, saveJSON } from "./dom";
 import type { Mapping } from "./filter";
 import { wireKeys } from "./keys";
 import { choiceOf } from "./live-source";
-import { keepInSession, matched, modelOf, named, readSession, restoreSession, resumeModel,
+import { forgetInSession, keepInSession, matched, modelOf, named, readSession, restoreSession, resumeModel,
   resumeSong, sessionOf, songOf } from "./session";
 
 export function wireHeader(app: App): void {
@@ -156,6 +156,7 @@ async function remove(app: App, kind: "mesh" | "song" | "mapping"): Promise<void
   await app.messages.guard(`Could not remove ${name}`, async () => {
     if (kind === "mesh") app.library.drop(id); // its harmonics may be computing
     await api.remove(rig ? "rig" : kind, id);
+    forgetInSession(app, id); // removed on purpose: a reload does not miss it
     const library = await app.library.refresh();
     if (rig || (kind === "mesh" && id === app.library.meshId)) {
       const next = library.meshes.find((m) => m.id === app.library.meshId) ?? library.meshes[0];

@@ -14,6 +14,9 @@ export class RigSessions {
 
   get(id: string): SavedRig | undefined { return this.saved.get(id); }
 
+  /** Forget rig `id` (removed from the library on purpose). */
+  forget(id: string): void { this.saved.delete(id); }
+
   /** Keep rig `id`'s galleries (in the browser too). */
   set(id: string, rig: SavedRig): void {
     this.saved.set(id, structuredClone(rig));

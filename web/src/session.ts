@@ -271,6 +271,26 @@ export function storeSession(session: Session): void {
   try { localStorage.setItem(KEY, JSON.stringify(session)); } catch { /* private mode, full */ }
 }
 
+/** `session` without what it keeps of the library's item `id` (its gallery history or rig
+ * galleries, its name, and the song or model on screen when it is that item). */
+export function without(session: Session, id: string): Session {
+  const drop = <T>(record: Record<string, T> | undefined) =>
+    Object.fromEntries(Object.entries(record ?? {}).filter(([key]) => key !== id));
+  const { song, model, ...rest } = session;
+  return { ...rest, histories: drop(session.histories), rigs: drop(session.rigs),
+    names: drop(session.names), ...(song && song.id !== id ? { song } : {}),
+    ...(model && model.id !== id ? { model } : {}) };
+}
+
+/** Forget the library's item `id` in the session kept in the browser: removed on purpose (✕),
+ * a reload does not say it is "not served any more". */
+export function forgetInSession(app: App, id: string): void {
+  app.gallery.forget(id);
+  app.rigs.sessions.forget(id);
+  const kept = storedSession();
+  if (kept) storeSession(without(kept, id));
+}
+
 /** The session kept in the browser, or null. */
 export function storedSession(): Session | null {
   try {

@@ -2,7 +2,7 @@
 // library's ids are new, and the file's models, rigs and songs are found by their names.
 import { describe, expect, it } from "vitest";
 import type { Library } from "../src/api";
-import { matched, named, rememberNames, sessionOf } from "../src/session";
+import { matched, named, rememberNames, sessionOf, without } from "../src/session";
 
 const mesh = (id: string, name: string) => ({ id, name, k: 8, vertices: 9, ready: true,
   job: null });
@@ -47,5 +47,22 @@ describe("a session file in another run of the server", () => {
 
   it("keeps the ids the library still has (a reload of the same run)", () => {
     expect(matched(file, before)).toEqual({ session: file, count: 1, missing: "" });
+  });
+});
+
+describe("a model removed on purpose", () => {
+  it("leaves the session with nothing of it", () => {
+    const session = { ...sessionOf({ cat: history, bunny: history }, { hand: {
+      generations: [], generation: 0, selected: [], player: null } },
+    { id: "song", time: 1 }, { kind: "mesh", id: "cat" }),
+    names: { cat: "cat.obj", bunny: "bunny.obj", hand: "hand", song: "song.wav" } } as const;
+    const left = without(session, "cat");
+    expect(Object.keys(left.histories)).toEqual(["bunny"]);
+    expect(left.names).toEqual({ bunny: "bunny.obj", hand: "hand", song: "song.wav" });
+    expect(left.model).toBeUndefined();
+    expect(left.song).toEqual({ id: "song", time: 1 });
+    const noHand = without(left, "hand");
+    expect(noHand.rigs).toEqual({});
+    expect(without(noHand, "song").song).toBeUndefined();
   });
 });
