@@ -15,6 +15,7 @@ from eigendance.harmonic.contacts import closest_on_others, components
 from eigendance.harmonic.mesh import load_mesh
 from eigendance.harmonic.motion import positions_at
 from eigendance.inputs.defaults import DEFAULT_K
+from eigendance.music.dancer import edge_strain
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.spectrogram import Spectrogram
 from helpers import fixture_path
@@ -59,3 +60,23 @@ def test_no_tile_tears_or_flies_apart_over_the_whole_song(song, name):
             drift = np.linalg.norm(offset - (rest[touching.vertices] - touching.gather(rest)),
                                    axis=-1).max() / diagonal
             assert drift <= DRIFT, f"{name} tile #{number}: touching pieces part by {drift:.4f}"
+
+
+class Triangle:
+    """A dancer of one right triangle whose vertex 1 moves 0.5 along x per unit of φ − 1."""
+
+    vertices = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    faces = np.array([[0, 1, 2]])
+    diagonal = float(np.sqrt(2))
+
+    def displacements(self, phi):
+        moved = np.zeros((len(phi), 3, 3))
+        moved[:, 1, 0] = 0.5 * (np.asarray(phi)[:, 0] - 1)
+        return moved
+
+
+def test_edge_strain_is_the_largest_change_of_an_edge_over_its_length():
+    # Edge 0–1 (length 1) changes by 0.5 (φ − 1), edge 1–2 (√2) by 0.5 (φ − 1): the first rules.
+    assert edge_strain(Triangle(), [[2.0], [3.0], [1.0]]) == pytest.approx([0.5, 1.0, 0.0])
+    faceless = type("Faceless", (), {"vertices": Triangle.vertices})()
+    assert edge_strain(faceless, [[2.0]]).tolist() == [0.0]  # a rig's modes: not measured

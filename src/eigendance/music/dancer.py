@@ -141,9 +141,12 @@ def edge_strain(dancer: Dancer, phi) -> np.ndarray:
     rest = np.asarray(rest, dtype=np.float64)
     length = np.maximum(np.linalg.norm(rest[edges[:, 0]] - rest[edges[:, 1]], axis=1),
                         STRAIN_FLOOR * dancer.diagonal)
-    moved = dancer.displacements(phi)
-    change = np.linalg.norm(moved[:, edges[:, 0]] - moved[:, edges[:, 1]], axis=-1)
-    return (change / length).max(axis=1)
+    strain = np.zeros(len(phi))
+    for s, filter_ in enumerate(phi):  # one frame at a time: (n, 3) and (edges,) in memory
+        moved = dancer.displacements(filter_[None])[0]
+        strain[s] = (np.linalg.norm(moved[edges[:, 0]] - moved[edges[:, 1]], axis=-1)
+                     / length).max(initial=0.0)
+    return strain
 
 
 @dataclass
