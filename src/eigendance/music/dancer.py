@@ -16,11 +16,15 @@ from typing import Protocol
 
 import numpy as np
 
+from eigendance.geometry import face_edges
 from eigendance.music.filter import filters
 from eigendance.music.mapping import Mapping
 
 CALIBRATION_FRAMES = 6000  # at most this many evenly spaced frames of the song are measured
 MAIN_SHARE = 0.9  # the "main harmonic range" of an item holds this share of its motion energy
+# Edges shorter than this fraction of the diagonal count as this long in `edge_strain` (a
+# degenerate edge would otherwise strain without bound under any motion).
+STRAIN_FLOOR = 1e-3
 
 
 class Dancer(Protocol):
@@ -112,6 +116,37 @@ def frame_motion(w: np.ndarray, gram: np.ndarray) -> np.ndarray:
     (F,) in the displacements' units.
     """
     return np.sqrt(np.maximum(((w @ gram) * w).sum(axis=1), 0.0))
+
+
+def edge_strain(dancer: Dancer, phi) -> np.ndarray:
+    """The largest strain of any edge of the dancer's surface under each filter (S, k) → (S,):
+    max over the edges ij of |D_i − D_j| / |x_i − x_j| (the linearised change of the edge's
+    length over its rest length, rest lengths floored at STRAIN_FLOOR of the diagonal); zeros
+    for a dancer without `vertices` and `faces` (a rig's modes).
+
+    Parameters
+    ----------
+    dancer : the model.
+    phi : (S, k) filters.
+
+    Returns
+    -------
+    (S,) dimensionless: 1 lets an edge collapse to a point or double its length.
+    """
+    faces, rest = getattr(dancer, "faces", None), getattr(dancer, "vertices", None)
+    phi = np.atleast_2d(np.asarray(phi, dtype=np.float64))
+    if faces is None or rest is None or not len(faces):
+        return np.zeros(len(phi))
+    edges = face_edges(np.asarray(faces))
+    rest = np.asarray(rest, dtype=np.float64)
+    length = np.maximum(np.linalg.norm(rest[edges[:, 0]] - rest[edges[:, 1]], axis=1),
+                        STRAIN_FLOOR * dancer.diagonal)
+    strain = np.zeros(len(phi))
+    for s, filter_ in enumerate(phi):  # one frame at a time: (n, 3) and (edges,) in memory
+        moved = dancer.displacements(filter_[None])[0]
+        strain[s] = (np.linalg.norm(moved[edges[:, 0]] - moved[edges[:, 1]], axis=-1)
+                     / length).max(initial=0.0)
+    return strain
 
 
 @dataclass

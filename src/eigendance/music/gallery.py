@@ -4,8 +4,9 @@ Every item drives its own *part* of the model's spectrum, from the lowest harmon
 highest, and is calibrated on the song that will play so that it moves the model visibly:
 m = the 95th percentile over the song's frames of (RMS vertex displacement / bounding-box
 diagonal) is MOTION_LOWEST for the first item, falling geometrically to MOTION_HIGHEST for the
-last. Harmonics of eigenvalue 0 (translations) and harmonics that carry none of the shape (their
-coefficient is rounding noise) are never driven.
+last, unless that would stretch an edge of the surface more than PEAK_STRAIN (a coarse model's
+top harmonics: the item then moves less). Harmonics of eigenvalue 0 (translations) and
+harmonics that carry none of the shape (their coefficient is rounding noise) are never driven.
 
 A gallery works on any *dancer* — the harmonics of a mesh, the vibration modes of a rig —
 through the `Dancer` protocol (`music.dancer`, with the measures of motion on a song). Sizes
@@ -23,6 +24,7 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.music.dancer import (
     Dancer,
+    edge_strain,
     frame_motion,
     full_scale_motion,
     gallery_motion,
@@ -36,8 +38,15 @@ MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
 # Target m of the lowest and the highest item (fractions of the bounding-box diagonal); items in
 # between fall geometrically. High harmonics are fine ripples: at the same RMS they read as noise.
 MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.015
-MOTION_BOUNDS = (0.01, 0.08)  # what every initial item's m is promised to lie in
+# What every initial item's m is promised to lie in (its lower end gives way to PEAK_STRAIN).
+MOTION_BOUNDS = (0.01, 0.08)
 PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only for a moment)
+# Nor changes any edge's length by more than this many times its rest length (`edge_strain`),
+# measured on the STRAIN_FRAMES frames that move it most: on a coarse model (the low-poly cake
+# of 552 vertices, the speeder of 163, k = 150) the top harmonics are a vertex or two zig-zagging,
+# and an item calibrated on RMS motion alone flung them out to 16 and 14 times their edges (tiles
+# that tore into spikes and facets). The top items of the smooth shared meshes reach 2 to 4.3.
+PEAK_STRAIN, STRAIN_FRAMES = 3.0, 16
 # ω_ν ≤ this · ω_max (λ_ν ≤ 10⁻⁸ λ_max): eigenvalue 0, a translation of a component. At 10⁻⁶
 # the kernel of an operator stiffened by its contacts passed for a harmonic (the textured speeder:
 # λ₀ = 4.5·10⁻⁹, 3·10⁻¹² λ_max; its tile #1 slid the whole model); the smallest true ω₁ of the
@@ -295,8 +304,9 @@ def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
     at these times (F,) (its envelope and pulse included).
 
     m is linear in α: α = target·diagonal / (95th percentile of the unit motion), lowered so
-    that no frame moves more than PEAK_MOTION; a silent song is calibrated at full-scale input
-    (g̃ ≡ 1, the loudest it could be).
+    that no frame moves more than PEAK_MOTION and none of the STRAIN_FRAMES frames that move
+    it most strains an edge more than PEAK_STRAIN (`edge_strain`); a silent song is calibrated
+    at full-scale input (g̃ ≡ 1, the loudest it could be).
 
     Parameters
     ----------
@@ -314,11 +324,14 @@ def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
     k = len(dancer.frequencies)
     targets = np.flatnonzero(mapping.amplification)
     gram = motion_gram(dancer, targets)
-    rms = frame_motion(mapping.play(spectrogram, times, k)[:, targets] - 1.0, gram)
+    phi = mapping.play(spectrogram, times, k)
+    rms = frame_motion(phi[:, targets] - 1.0, gram)
     typical, peak = np.percentile(rms, 95), rms.max()
     if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
         return target * diagonal / full_scale_motion(dancer, [mapping])[0]
-    return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak)
+    strain = edge_strain(dancer, phi[np.argsort(rms)[-STRAIN_FRAMES:]]).max()
+    return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak,
+               PEAK_STRAIN / strain if strain > 0 else np.inf)
 
 
 def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
