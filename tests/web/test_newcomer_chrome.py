@@ -14,8 +14,9 @@ import time
 
 import numpy as np
 import pytest
+from chromium import FAKE, GRANT, launch
 from PIL import Image
-from web_helpers import CHROMIUM, CHROMIUM_ARGS, FAKE, GRANT, fake_clip, open_app, running_server
+from web_helpers import fake_clip, open_app, running_server
 
 from helpers import fixture_path
 
@@ -125,9 +126,8 @@ def test_the_live_input_header_is_one_row(browser, live_server, tmp_path, width)
     song_height = song.evaluate(ONE_ROW)["height"]
     song.close()
     clip = fake_clip(str(tmp_path), CLIP, seconds=8)
-    launched = browser.browser_type.launch(
-        executable_path=CHROMIUM,
-        args=CHROMIUM_ARGS + FAKE + [GRANT, f"--use-file-for-fake-audio-capture={clip}"])
+    launched = launch(browser.browser_type, *FAKE, GRANT,
+                      f"--use-file-for-fake-audio-capture={clip}")
     try:
         page = launched.new_page(viewport={"width": width, "height": 760})
         page.goto(live_server["url"] + "?test&size=2&source=mic")
