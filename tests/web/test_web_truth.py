@@ -111,7 +111,7 @@ def test_each_dance_says_what_it_drives_and_loop4s_dances_differ(browser, live_s
     labels = page.evaluate("window.eigendance.rig.labels()")
     dances = page.evaluate("window.eigendance.rig.info().tiles")
     mappings = [Mapping.from_json(page.evaluate(
-        f"window.eigendance.rig.openDance({i}) || window.eigendance.rig.playerMapping()"))
+        f"window.eigendance.rig.openDance({i}).then(() => window.eigendance.rig.playerMapping())"))
         for i in range(dances)]
     for label, mapping in zip(labels, mappings, strict=True):
         k = len(mapping.modes.selected)
