@@ -23,6 +23,8 @@ OBJ_ZERO_INDEX = re.compile(rb"^[ \t]*f[ \t](?:[^\n]*?[ \t])?[+-]?0+(?=[/ \t\r\n
 OBJ_RELATIVE = re.compile(rb"^[ \t]*f[ \t][^\n]*?[ \t/]-\d", re.M)
 # The statements an OBJ face's corner indices count: v, vt and vn.
 OBJ_ELEMENTS = (b"v", b"vt", b"vn")
+# A line that holds nothing once its comment is cut off (what OFF's counts do not count).
+OFF_EMPTY_LINE = re.compile(rb"^[ \t\r\x0b\x0c]*(?:#[^\n]*)?$", re.M)
 
 
 def read_text(path: str, name: str) -> bytes:
@@ -133,8 +135,13 @@ def check_off(path: str, name: str) -> None:
     name : how messages call it.
     """
     data = read_text(path, name)
-    lines = [words for words in (line.split(b"#", 1)[0].split() for line in data.split(b"\n"))
-             if words]
+    lines = []  # the first two lines that hold something (the header), read lazily
+    for found in re.finditer(rb"[^\n]+", data):
+        words = found.group().split(b"#", 1)[0].split()
+        if words:
+            lines.append(words)
+            if len(lines) == 2:
+                break
     if not lines or not lines[0][0].endswith(b"OFF"):
         return  # not a header trimesh reads: its own message says so
     counts = lines[0][1:] or (lines[1] if len(lines) > 1 else [])
@@ -143,7 +150,8 @@ def check_off(path: str, name: str) -> None:
     except (IndexError, ValueError):
         raise InputError(f"{name}: the OFF header must give the numbers of vertices and faces "
                          "after OFF") from None
-    body = len(lines) - (1 if lines[0][1:] else 2)
+    filled = data.count(b"\n") + 1 - sum(1 for _ in OFF_EMPTY_LINE.finditer(data))
+    body = filled - (1 if lines[0][1:] else 2)
     if vertices < 0 or faces < 0 or body < vertices + faces:
         held = max(0, min(body, vertices))
         raise InputError(f"{name}: the OFF header declares {vertices} vertices and {faces} faces; "
