@@ -15,6 +15,7 @@ import os
 import re
 
 from eigendance.errors import InputError
+from eigendance.reads import open_regular
 
 # An OBJ face corner whose vertex index is 0 (OBJ counts from 1; trimesh would read 0 as −1, the
 # last vertex). Only the vertex index, the first number of a corner v/vt/vn, is looked at.
@@ -28,7 +29,8 @@ OFF_EMPTY_LINE = re.compile(rb"^[ \t\r\x0b\x0c]*(?:#[^\n]*)?$", re.M)
 
 
 def read_text(path: str, name: str) -> bytes:
-    """The bytes of a mesh file, an unreadable one an InputError naming it.
+    """The bytes of a mesh file, an unreadable one (or not a file) an InputError naming it
+    (`reads.open_regular`).
 
     Parameters
     ----------
@@ -39,11 +41,8 @@ def read_text(path: str, name: str) -> bytes:
     -------
     bytes.
     """
-    try:
-        with open(path, "rb") as file:
-            return file.read()
-    except OSError as error:
-        raise InputError(f"{name}: cannot read ({error.strerror})") from None
+    with open_regular(path, name) as file:
+        return file.read()
 
 
 def checked_obj(path: str, name: str) -> bytes | None:
