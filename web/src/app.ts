@@ -59,7 +59,7 @@ export class App {
     const antialias = options.aa ?? (options.render || !softwareRenderer());
     const messages = this.messages;
     this.viewer = new Viewer($<HTMLCanvasElement>("gl"), $("player-area"), this.motion,
-      this.transport, () => this.stage(), antialias, options.scale);
+      this.transport, () => this.stage(), antialias, options.scale, options.fps);
     this.viewer.onFrame = (t) => {
       if (this.rigs?.active) this.rigs.viewer.requestDraw(); // a seek or a rewind moves rigs too
       this.showFrame(t);
@@ -92,7 +92,7 @@ export class App {
     this.rigs = new RigStage(this.motion, this.transport, antialias, {
       status, loading: (text) => messages.loading(text), guard,
       songId: () => this.library.songId }, options.path, options.batch, !options.render,
-    options.scale);
+    options.scale, options.fps);
     this.files = new FileIntake(messages, {
       refresh: async () => { await this.library.refresh(); },
       started: () => this.started,

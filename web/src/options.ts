@@ -31,6 +31,8 @@ export interface Options {
   batch: number;
   /** `?scale=S`: draw at this fixed render scale (0.1 … 1) instead of dynamic resolution. */
   scale: number | null;
+  /** `?fps=N`: the frame rate the page aims at (1 … 120; RESOLUTION.target when absent) */
+  fps: number | null;
   /** `?source=mic`: start on the default live input (docs/design.md#live); `tab`: tab audio */
   source: "mic" | "tab" | null;
   /** a `?source=` that names no live input (said, not ignored), or null */
@@ -42,6 +44,16 @@ export interface Options {
 export function fixedScale(raw: string | null): number | null {
   const value = raw === null || raw.trim() === "" ? NaN : Number(raw);
   return Number.isFinite(value) && value >= 0.1 && value <= 1 ? value : null;
+}
+
+/** The frame rates `?fps=` may ask for. */
+export const MIN_FPS = 1, MAX_FPS = 120;
+
+/** The frame rate `?fps=` asks the page to aim at (a projector's 30 or 60), or null (the
+ * default target) when absent or not a number in [MIN_FPS, MAX_FPS]. */
+export function targetFps(raw: string | null): number | null {
+  const value = raw === null || raw.trim() === "" ? NaN : Number(raw);
+  return Number.isFinite(value) && value >= MIN_FPS && value <= MAX_FPS ? value : null;
 }
 
 export function readOptions(search: string): Options {
@@ -62,6 +74,7 @@ export function readOptions(search: string): Options {
     path: path === "gpu" || path === "cpu" ? path : null,
     batch: Number(params.get("batch") ?? 8),
     scale: fixedScale(params.get("scale")),
+    fps: targetFps(params.get("fps")),
     source: params.get("source") === "mic" ? "mic" : params.get("source") === "tab" ? "tab" : null,
     badSource: params.has("source") && !["mic", "tab"].includes(params.get("source")!)
       ? params.get("source") : null,

@@ -55,13 +55,13 @@ export class RigStage {
 
   constructor(music: Motion, clock: Clock, antialias: boolean, private readonly events: RigEvents,
               private readonly path: DeformationPath | null, private readonly batch: number,
-              live: boolean, scale: number | null = null) {
+              live: boolean, scale: number | null = null, target: number | null = null) {
     this.motion = new RigMotion(music);
     // The page's own loop handles the end of the song (rewind, the seek bar); this one follows.
     const follower: Clock = { get playing() { return clock.playing; }, now: () => clock.now(),
       ended: () => false, rewind: () => {} };
     this.viewer = new Viewer($<HTMLCanvasElement>("rig-gl"), $("rig-player-area"), this.motion,
-      follower, () => this.stage(), antialias, scale);
+      follower, () => this.stage(), antialias, scale, target);
     this.viewer.onFrame = (t) => this.beforeFrame(t);
     const requestDraw = () => this.viewer.requestDraw();
     this.gallery = new RigGalleryView({ status: events.status, requestDraw, guard: events.guard,

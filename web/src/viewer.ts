@@ -12,7 +12,7 @@ import { deformCPU } from "./filter";
 import type { Prepared } from "./filter";
 import type { Appearance } from "./look";
 import { fasterOnCPU } from "./path-choice";
-import { ResolutionGovernor } from "./resolution";
+import { RESOLUTION, ResolutionGovernor } from "./resolution";
 import { Studio, VIEW_DIRECTION, framing, rim, silhouette } from "./studio";
 import type { Silhouette } from "./studio";
 import type { DeformationPath, MotionSource, Shot, Stage } from "./stage";
@@ -64,7 +64,7 @@ export class Viewer {
   /** Called after every frame is drawn (the recorder copies its view then). */
   onDrawn: () => void = () => {};
   /** the render scale that holds the target frame rate (resolution.ts) */
-  readonly resolution = new ResolutionGovernor();
+  readonly resolution: ResolutionGovernor;
 
   private readonly tileCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
   readonly playerCamera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.05, 100);
@@ -88,7 +88,11 @@ export class Viewer {
               private readonly motion: MotionSource, private readonly clock: Clock,
               private readonly stage: () => Stage, antialias: boolean,
               /** a fixed render scale (`?scale=`), or null: dynamic resolution */
-              private readonly fixedScale: number | null = null) {
+              private readonly fixedScale: number | null = null,
+              /** the frame rate it aims at (`?fps=`), or null: RESOLUTION's */
+              target: number | null = null) {
+    this.resolution = new ResolutionGovernor(target === null ? RESOLUTION
+      : { ...RESOLUTION, target });
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias,
       preserveDrawingBuffer: true, powerPreference: "high-performance" });
     if (fixedScale !== null) this.resolution.scale = fixedScale;

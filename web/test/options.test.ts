@@ -70,6 +70,16 @@ describe("URL options", () => {
     expect(readOptions("").aa).toBeNull();
   });
 
+  it("reads the frame rate to aim at, 1 to 120 fps, else the default's null", () => {
+    expect(readOptions("?fps=60").fps).toBe(60);
+    expect(readOptions("?fps=1").fps).toBe(1);
+    expect(readOptions("?fps=120").fps).toBe(120);
+    expect(readOptions("?fps=29.97").fps).toBe(29.97);
+    for (const bad of ["", "?fps", "?fps=0", "?fps=121", "?fps=-5", "?fps=fast", "?fps=NaN"]) {
+      expect(readOptions(bad).fps).toBeNull();
+    }
+  });
+
   it("installs the hooks only for ?render and ?test", () => {
     expect(wantsHooks(readOptions(""))).toBe(false);
     expect(wantsHooks(readOptions("?size=4&view=player"))).toBe(false);
