@@ -292,6 +292,9 @@ def kill_pool(pool: ProcessPoolExecutor, group: bool = False) -> None:
         results._writer.close()
 
 
+MANAGER_SECONDS = 5.0  # at most this long for a killed pool's own thread to end
+
+
 class Pool:
     """Calls `function` on each of a list of arguments, in `workers` separate processes when
     there are several (the eigen-solver's bands).
@@ -360,3 +363,10 @@ class Pool:
         if kind is not None:  # interrupted or failed: do not wait for results nobody needs
             kill_pool(self.pool)
         self.pool.shutdown(wait=kind is None, cancel_futures=True)
+        # The pool's own thread, seeing its workers gone, closes its wake-up pipe as it ends;
+        # if the interpreter's exit hook wakes it in that moment it writes to the closed pipe
+        # ("Exception ignored … Bad file descriptor" on a Ctrl-C'd run, 1 in about 30 under
+        # load). Its workers are dead and its result pipe at EOF, so it ends at once: wait.
+        thread = getattr(self.pool, "_executor_manager_thread", None)
+        if kind is not None and thread is not None:
+            thread.join(MANAGER_SECONDS)

@@ -149,6 +149,75 @@ def edge_strain(dancer: Dancer, phi) -> np.ndarray:
     return strain
 
 
+def fold_scale(dancer: Dancer, phi, share: float) -> float:
+    """The largest factor α by which these filters' motion may be scaled before faces holding
+    more than `share` of the surface's area fold over (turn past edge-on) in one of them; inf
+    for a dancer without `vertices` and `faces` (a rig's modes) or when none ever folds.
+
+    Displacements are affine in φ, so at α·(φ − b) a face's edges are e_i + α·d_i and its
+    normal is along c(α) = e₁×e₂ + α·(d₁×e₂ + e₁×d₂) + α²·(d₁×d₂): it folds over where
+    n₀·c(α) = 0 first, the smallest positive root of that quadratic (exact, not linearised).
+    A face folding under any filter counts at its smallest root; α is the area-weighted
+    `share`-quantile of those roots.
+
+    Parameters
+    ----------
+    dancer : the model.
+    phi : (S, k) filters (the frames measured).
+    share : fraction of the surface's area allowed to fold over, in [0, 1).
+
+    Returns
+    -------
+    float α > 0, or inf.
+    """
+    faces, rest = getattr(dancer, "faces", None), getattr(dancer, "vertices", None)
+    if faces is None or rest is None or not len(faces):
+        return np.inf
+    faces, rest = np.asarray(faces), np.asarray(rest, dtype=np.float64)
+    e1, e2 = rest[faces[:, 1]] - rest[faces[:, 0]], rest[faces[:, 2]] - rest[faces[:, 0]]
+    normal = np.cross(e1, e2)
+    area = np.linalg.norm(normal, axis=1)
+    kept = area > 0  # a degenerate face has no normal to fold
+    faces, e1, e2, normal, area = faces[kept], e1[kept], e2[kept], normal[kept], area[kept]
+    if not len(faces):
+        return np.inf
+    normal /= area[:, None]
+    folds = np.full(len(faces), np.inf)
+    for filter_ in np.atleast_2d(np.asarray(phi, dtype=np.float64)):  # one frame at a time
+        moved = dancer.displacements(filter_[None])[0]
+        d1, d2 = moved[faces[:, 1]] - moved[faces[:, 0]], moved[faces[:, 2]] - moved[faces[:, 0]]
+        linear = np.einsum("ij,ij->i", normal, np.cross(d1, e2) + np.cross(e1, d2))
+        square = np.einsum("ij,ij->i", normal, np.cross(d1, d2))
+        folds = np.minimum(folds, first_positive_root(area, linear, square))
+    order = np.argsort(folds)
+    reached = np.cumsum(area[order]) / area.sum()
+    first = int(np.searchsorted(reached, share, side="right"))
+    return float(folds[order[first]]) if first < len(order) else np.inf
+
+
+def first_positive_root(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """The smallest t > 0 with a + b·t + c·t² = 0 for each row (a > 0), inf where none is.
+
+    Parameters
+    ----------
+    a, b, c : (m,) coefficients, a > 0.
+
+    Returns
+    -------
+    (m,) float64.
+    """
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        flat = np.abs(c) <= 1e-12 * (np.abs(b) + a)  # a linear equation, to rounding
+        linear = np.where(b < 0, -a / b, np.inf)
+        root = np.sqrt(np.maximum(b * b - 4 * a * c, 0.0))
+        # Both roots without cancellation: q = −(b + sign(b)·√disc)/2, t = q/c and a/q.
+        q = -0.5 * (b + np.where(b < 0, -root, root))
+        pair = np.stack([q / c, a / q])
+        pair = np.where(pair > 0, pair, np.inf).min(axis=0)
+        quadratic = np.where(b * b - 4 * a * c >= 0, pair, np.inf)
+    return np.where(flat, linear, quadratic)
+
+
 @dataclass
 class ItemMotion:
     """How one mapping moves a model on a song: m (fraction of the diagonal), the largest frame's

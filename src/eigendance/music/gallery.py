@@ -5,7 +5,8 @@ highest, and is calibrated on the song that will play so that it moves the model
 m = the 95th percentile over the song's frames of (RMS vertex displacement / bounding-box
 diagonal) is MOTION_LOWEST for the first item, falling geometrically to MOTION_HIGHEST for the
 last, unless that would stretch an edge of the surface more than PEAK_STRAIN (a coarse model's
-top harmonics: the item then moves less). Harmonics of eigenvalue 0 (translations) and
+top harmonics) or fold more than FOLD_SHARE of its area over (a crumpled tile): the item then
+moves less. Harmonics of eigenvalue 0 (translations) and
 harmonics that carry none of the shape (their coefficient is rounding noise) are never driven.
 
 A gallery works on any *dancer* — the harmonics of a mesh, the vibration modes of a rig —
@@ -25,6 +26,7 @@ from eigendance.errors import InputError
 from eigendance.music.dancer import (
     Dancer,
     edge_strain,
+    fold_scale,
     frame_motion,
     full_scale_motion,
     gallery_motion,
@@ -47,6 +49,12 @@ PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only 
 # and an item calibrated on RMS motion alone flung them out to 16 and 14 times their edges (tiles
 # that tore into spikes and facets). The top items of the smooth shared meshes reach 2 to 4.3.
 PEAK_STRAIN, STRAIN_FRAMES = 3.0, 16
+# Nor, in those frames, fold over (turn a face past edge-on: `fold_scale`) more than this share
+# of the surface's area. The strain cap alone let triangles invert (a change of one rest length
+# collapses an edge): on vibe ace the items 6–8 folded 1–5% of the area of the cake, speeder,
+# teapot and cat past 90° (tiles that crumpled into facets); a share, not every face, because
+# slivers of a fan-triangulated low-poly model turn under any motion.
+FOLD_SHARE = 1e-3
 # ω_ν ≤ this · ω_max (λ_ν ≤ 10⁻⁸ λ_max): eigenvalue 0, a translation of a component. At 10⁻⁶
 # the kernel of an operator stiffened by its contacts passed for a harmonic (the textured speeder:
 # λ₀ = 4.5·10⁻⁹, 3·10⁻¹² λ_max; its tile #1 slid the whole model); the smallest true ω₁ of the
@@ -305,7 +313,8 @@ def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
 
     m is linear in α: α = target·diagonal / (95th percentile of the unit motion), lowered so
     that no frame moves more than PEAK_MOTION and none of the STRAIN_FRAMES frames that move
-    it most strains an edge more than PEAK_STRAIN (`edge_strain`); a silent song is calibrated
+    it most strains an edge more than PEAK_STRAIN (`edge_strain`) or folds more than FOLD_SHARE
+    of the surface's area over (`fold_scale`); a silent song is calibrated
     at full-scale input (g̃ ≡ 1, the loudest it could be).
 
     Parameters
@@ -329,9 +338,12 @@ def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
     typical, peak = np.percentile(rms, 95), rms.max()
     if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
         return target * diagonal / full_scale_motion(dancer, [mapping])[0]
-    strain = edge_strain(dancer, phi[np.argsort(rms)[-STRAIN_FRAMES:]]).max()
-    return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak,
-               PEAK_STRAIN / strain if strain > 0 else np.inf)
+    loudest = phi[np.argsort(rms)[-STRAIN_FRAMES:]]
+    strain = edge_strain(dancer, loudest).max()
+    scale = min(target * diagonal / typical, PEAK_MOTION * diagonal / peak,
+                PEAK_STRAIN / strain if strain > 0 else np.inf)
+    # fold_scale measures the frames as they are: scaled by α their φ − 1 scales by α
+    return min(scale, fold_scale(dancer, loudest, FOLD_SHARE))
 
 
 def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
