@@ -40,7 +40,8 @@ MIN_GALLERY, MAX_GALLERY, DEFAULT_GALLERY = 2, 16, 8
 # Target m of the lowest and the highest item (fractions of the bounding-box diagonal); items in
 # between fall geometrically. High harmonics are fine ripples: at the same RMS they read as noise.
 MOTION_LOWEST, MOTION_HIGHEST = 0.04, 0.015
-# What every initial item's m is promised to lie in (its lower end gives way to PEAK_STRAIN).
+# What every initial item's m is promised to lie in (its lower end gives way to PEAK_STRAIN and
+# FOLD_SHARE: an item capped by either moves less, at least a fifth of it in the tests).
 MOTION_BOUNDS = (0.01, 0.08)
 PEAK_MOTION = 0.15  # no frame of the song moves an item more (a song loud only for a moment)
 # Nor changes any edge's length by more than this many times its rest length (`edge_strain`),
