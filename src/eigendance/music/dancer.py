@@ -16,7 +16,6 @@ from typing import Protocol
 
 import numpy as np
 
-from eigendance.geometry import face_edges
 from eigendance.music.filter import filters
 from eigendance.music.mapping import Mapping
 
@@ -133,20 +132,7 @@ def edge_strain(dancer: Dancer, phi) -> np.ndarray:
     -------
     (S,) dimensionless: 1 lets an edge collapse to a point or double its length.
     """
-    faces, rest = getattr(dancer, "faces", None), getattr(dancer, "vertices", None)
-    phi = np.atleast_2d(np.asarray(phi, dtype=np.float64))
-    if faces is None or rest is None or not len(faces):
-        return np.zeros(len(phi))
-    edges = face_edges(np.asarray(faces))
-    rest = np.asarray(rest, dtype=np.float64)
-    length = np.maximum(np.linalg.norm(rest[edges[:, 0]] - rest[edges[:, 1]], axis=1),
-                        STRAIN_FLOOR * dancer.diagonal)
-    strain = np.zeros(len(phi))
-    for s, filter_ in enumerate(phi):  # one frame at a time: (n, 3) and (edges,) in memory
-        moved = dancer.displacements(filter_[None])[0]
-        strain[s] = (np.linalg.norm(moved[edges[:, 0]] - moved[edges[:, 1]], axis=-1)
-                     / length).max(initial=0.0)
-    return strain
+    return surface_caps(dancer, phi, None)[0]
 
 
 def fold_scale(dancer: Dancer, phi, share: float) -> float:
@@ -170,29 +156,76 @@ def fold_scale(dancer: Dancer, phi, share: float) -> float:
     -------
     float α > 0, or inf.
     """
+    return surface_caps(dancer, phi, share)[1]
+
+
+def surface_caps(dancer: Dancer, phi, share: float | None) -> tuple[np.ndarray, float]:
+    """`edge_strain` and `fold_scale` (when `share` is not None) in one pass over the filters:
+    one displacement and one gather of the faces' corners per filter serve both.
+
+    Parameters
+    ----------
+    dancer : the model.
+    phi : (S, k) filters.
+    share : as `fold_scale`'s, or None (no fold measured: inf).
+
+    Returns
+    -------
+    ((S,) strains, α).
+    """
     faces, rest = getattr(dancer, "faces", None), getattr(dancer, "vertices", None)
+    phi = np.atleast_2d(np.asarray(phi, dtype=np.float64))
     if faces is None or rest is None or not len(faces):
-        return np.inf
-    faces, rest = np.asarray(faces), np.asarray(rest, dtype=np.float64)
-    e1, e2 = rest[faces[:, 1]] - rest[faces[:, 0]], rest[faces[:, 2]] - rest[faces[:, 0]]
-    normal = np.cross(e1, e2)
+        return np.zeros(len(phi)), np.inf
+    faces = np.asarray(faces)
+    corners = np.asarray(rest, dtype=np.float64)[faces]  # (m, 3 corners, 3)
+    sides = np.roll(corners, -1, axis=1) - corners  # i→j, j→k, k→i: the faces' edges
+    length = np.maximum(np.linalg.norm(sides, axis=-1), STRAIN_FLOOR * dancer.diagonal)
+    e1, e2 = sides[:, 0], -sides[:, 2]  # corner 0 to corners 1 and 2
+    normal = cross(e1, e2)
     area = np.linalg.norm(normal, axis=1)
-    kept = area > 0  # a degenerate face has no normal to fold
-    faces, e1, e2, normal, area = faces[kept], e1[kept], e2[kept], normal[kept], area[kept]
-    if not len(faces):
-        return np.inf
-    normal /= area[:, None]
-    folds = np.full(len(faces), np.inf)
-    for filter_ in np.atleast_2d(np.asarray(phi, dtype=np.float64)):  # one frame at a time
-        moved = dancer.displacements(filter_[None])[0]
-        d1, d2 = moved[faces[:, 1]] - moved[faces[:, 0]], moved[faces[:, 2]] - moved[faces[:, 0]]
-        linear = np.einsum("ij,ij->i", normal, np.cross(d1, e2) + np.cross(e1, d2))
-        square = np.einsum("ij,ij->i", normal, np.cross(d1, d2))
-        folds = np.minimum(folds, first_positive_root(area, linear, square))
+    folding = share is not None and bool((area > 0).any())
+    if folding:  # a degenerate face has no normal to fold
+        normal = normal / np.where(area > 0, area, 1.0)[:, None]
+        # n·(d₁×e₂ + e₁×d₂) = d₁·(e₂×n) + d₂·(n×e₁): the rest shape's part once
+        lever1, lever2 = cross(e2, normal), cross(normal, e1)
+        folds = np.full(len(faces), np.inf)
+    strain = np.zeros(len(phi))
+    for s, filter_ in enumerate(phi):  # one frame at a time: (n, 3) and (m, 3, 3) in memory
+        moved = dancer.displacements(filter_[None])[0][faces]
+        changes = np.roll(moved, -1, axis=1) - moved
+        strain[s] = (np.linalg.norm(changes, axis=-1) / length).max(initial=0.0)
+        if folding:
+            d1, d2 = changes[:, 0], -changes[:, 2]
+            linear = np.einsum("ij,ij->i", d1, lever1) + np.einsum("ij,ij->i", d2, lever2)
+            square = np.einsum("ij,ij->i", normal, cross(d1, d2))
+            folds = np.minimum(folds, first_positive_root(area, linear, square))
+    if not folding:
+        return strain, np.inf
+    kept = area > 0
+    folds, area = folds[kept], area[kept]
     order = np.argsort(folds)
     reached = np.cumsum(area[order]) / area.sum()
     first = int(np.searchsorted(reached, share, side="right"))
-    return float(folds[order[first]]) if first < len(order) else np.inf
+    return strain, float(folds[order[first]]) if first < len(order) else np.inf
+
+
+def cross(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Row-wise u × v of (m, 3) arrays (np.cross without its axis handling: 3× faster here).
+
+    Parameters
+    ----------
+    u, v : (m, 3).
+
+    Returns
+    -------
+    (m, 3).
+    """
+    out = np.empty_like(u)
+    out[:, 0] = u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1]
+    out[:, 1] = u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2]
+    out[:, 2] = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    return out
 
 
 def first_positive_root(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:

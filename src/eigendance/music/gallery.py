@@ -25,13 +25,12 @@ import numpy as np
 from eigendance.errors import InputError
 from eigendance.music.dancer import (
     Dancer,
-    edge_strain,
-    fold_scale,
     frame_motion,
     full_scale_motion,
     gallery_motion,
     motion_gram,
     song_times,
+    surface_caps,
 )
 from eigendance.music.envelope import Envelope, Pulse
 from eigendance.music.mapping import Mapping
@@ -339,12 +338,11 @@ def calibrate(dancer: Dancer, spectrogram, times: np.ndarray, mapping: Mapping,
     typical, peak = np.percentile(rms, 95), rms.max()
     if not typical > 1e-12 * max(peak, 1e-300) or not peak > 0:
         return target * diagonal / full_scale_motion(dancer, [mapping])[0]
-    loudest = phi[np.argsort(rms)[-STRAIN_FRAMES:]]
-    strain = edge_strain(dancer, loudest).max()
-    scale = min(target * diagonal / typical, PEAK_MOTION * diagonal / peak,
-                PEAK_STRAIN / strain if strain > 0 else np.inf)
-    # fold_scale measures the frames as they are: scaled by α their φ − 1 scales by α
-    return min(scale, fold_scale(dancer, loudest, FOLD_SHARE))
+    # fold measured on the frames as they are: scaled by α, their φ − 1 scales by α
+    strains, fold = surface_caps(dancer, phi[np.argsort(rms)[-STRAIN_FRAMES:]], FOLD_SHARE)
+    strain = strains.max()
+    return min(target * diagonal / typical, PEAK_MOTION * diagonal / peak,
+               PEAK_STRAIN / strain if strain > 0 else np.inf, fold)
 
 
 def initial_gallery(dancer: Dancer, spectrogram, size: int = DEFAULT_GALLERY,
