@@ -168,3 +168,47 @@ def test_a_textured_model_at_a_quarter_of_its_triangles_looks_as_it_does_whole(
             assert 0 < difference < 0.45, difference
         finally:
             page.close()
+
+
+# The rows of a bar: its visible children's vertical centres, those within 10 px of one
+# another one row (a label's text sits a few pixels below a button's).
+ROWS = """id => { const rows = [];
+  for (const child of document.getElementById(id).querySelectorAll(':scope > *')) {
+    const box = child.getBoundingClientRect(), middle = box.top + box.height / 2;
+    if (box.width > 0 && !rows.some(row => Math.abs(row - middle) < 10)) rows.push(middle); }
+  return rows.length; }"""
+# Each file input's own box as drawn: the browser's "Choose File · No file chosen" is unseen,
+# its label drawn as a button (a border), and clicking the label reaches the input.
+FILE_BUTTONS = """() => [...document.querySelectorAll('label.upload')]
+  .filter(label => label.offsetParent !== null).map(label => {
+  const input = label.querySelector('input[type=file]');
+  const style = getComputedStyle(label);
+  return [input.id, getComputedStyle(input).opacity, style.borderTopStyle,
+          label.getBoundingClientRect().height]; })"""
+
+
+def test_the_bars_are_one_row_with_buttons_for_files(browser, live_server):
+    """Seen at the last stop: the gallery's bar wrapped onto a second row at 1280 px, its
+    *open session* and *add* the browser's bare file inputs ("Choose File · No file chosen");
+    the rig bar as well. Both are one row of buttons now (this failed before: 2 rows)."""
+    page = open_app(browser, live_server["url"], "?test&size=8", width=1280)
+    try:
+        assert page.evaluate(ROWS, "gallery-controls") == 1
+        shown = page.evaluate(FILE_BUTTONS)
+        assert {"open-session", "upload"} <= {name for name, *_ in shown}
+        with page.expect_file_chooser() as chooser:  # the label opens the file picker
+            page.click("label.upload:has(#upload)")
+        assert chooser.value.is_multiple()
+        page.click("#tab-player")
+        shown += page.evaluate(FILE_BUTTONS)
+        assert "load-mapping" in {name for name, *_ in shown}
+        for name, opacity, border, height in shown:
+            assert opacity == "0" and border == "solid" and 15 < height < 40, name
+        rigs = page.evaluate("fetch('api/library').then(r => r.json()).then(l => l.rigs)")
+        page.evaluate(f"window.eigendance.rig.open('{rigs[0]['id']}')")
+        page.evaluate("window.eigendance.rig.setView('gallery')")
+        page.wait_for_selector("#rig-gallery-view:not([hidden])")
+        assert page.evaluate(ROWS, "rig-gallery-controls") == 1
+        assert [name for name, *_ in page.evaluate(FILE_BUTTONS)] == ["rig-open-session"]
+    finally:
+        page.close()
