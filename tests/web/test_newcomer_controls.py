@@ -106,6 +106,30 @@ def test_a_song_without_a_model_does_not_show_a_rig_s_name(browser, web_files, t
             page.close()
 
 
+def test_a_rig_chosen_with_no_song_says_it_needs_one_and_opens_once_one_comes(browser,
+                                                                            web_files,
+                                                                            tmp_path):
+    """`eigendance serve` with no file, a built-in rig chosen in the model menu: the page said
+    "Could not show this rig: no song with id ''" in red. It says the rig needs a song, and the
+    song then added opens the rig chosen (before: "the library needs a model")."""
+    with running_server(["-k", "12"], tmp_path, web_files["cache"]) as server:
+        page = open_app(browser, server["url"], "?test")
+        try:
+            page.select_option("#mesh", label="loop4")
+            page.wait_for_function("document.getElementById('status').textContent"
+                                   ".includes('needs a song')", timeout=20_000)
+            assert page.text_content("#status").startswith("loop4 needs a song to dance to")
+            assert page.is_hidden("#error"), page.text_content("#error-text")
+            page.set_input_files("#upload", web_files["song"])
+            page.wait_for_function("document.querySelectorAll('#rig-tiles .rig-tile').length > 0"
+                                   " && window.eigendance.rig.info().name === 'loop4'",
+                                   timeout=60_000)
+            assert page.is_hidden("#error"), page.text_content("#error-text")
+            assert not page.errors, page.errors
+        finally:
+            page.close()
+
+
 def test_the_slow_page_notice_agrees_with_the_readout_and_moves_no_tile(browser, live_server):
     """Item 8: without a GPU, 16 tiles at full resolution are slow: the notice's frame rate is
     the readout's, and its coming moves neither the tiles nor the help button. `?fps=60`: a

@@ -51,6 +51,8 @@ export class App {
   rule: GalleryRule | null = null;
   /** the library had a mesh and a song, and the first gallery was asked for */
   private started = false;
+  /** a rig chosen in the model menu while the library had no song: opened once one comes */
+  private chosenRig: string | null = null;
   /** a problem with the options (bad `?size=`), kept in front of the first "ready" */
   private notice = "";
   private readoutAt = 0;
@@ -160,6 +162,13 @@ export class App {
         const library = await this.library.refresh();
         if (library.songs.length) await loadStartSong(this, library);
         this.started = library.songs.length > 0;
+      }
+      if (!this.library.songId) { // `serve` with no file, a rig chosen: say what it needs
+        const name = this.library.rigName(rigId) || "a rig";
+        this.messages.status(`${name} needs a song to dance to: drop one here, or add one `
+          + "with add model / song / mapping");
+        this.chosenRig = rigId; // a song added then opens it (loadFirst)
+        return;
       }
       await this.rigs.open(rigId, this.rule?.max ?? 16);
       $<HTMLSelectElement>("mesh").value = `rig:${rigId}`;
@@ -349,7 +358,10 @@ export class App {
    * its gallery of modes instead. Returns false while the library lacks a model or a song. */
   private async loadFirst(library: api.Library): Promise<boolean> {
     const start = startModel(library, this.options.mesh); // the session's model, or the first
-    if (start.rig && library.songs.length) return this.loadFirstRig(library, start.rig);
+    const chosen = !library.meshes.length && library.rigs?.some((r) => r.id === this.chosenRig)
+      ? this.chosenRig : null; // a rig chosen in the menu before there was a song
+    const rig = start.rig ?? chosen;
+    if (rig && library.songs.length) return this.loadFirstRig(library, rig);
     if (!library.meshes.length || !library.songs.length) {
       const missing = library.meshes.length ? "a song" : "a model";
       this.messages.status(`the library needs ${missing}: drop a file here`);

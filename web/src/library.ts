@@ -34,6 +34,8 @@ export class Library {
               private readonly problem: (text: string) => void) {}
 
   get meshName(): string { return this.items?.meshes.find((m) => m.id === this.meshId)?.name ?? ""; }
+  /** The name of rig `id` as the library lists it ("" when it does not). */
+  rigName(id: string): string { return this.items?.rigs?.find((r) => r.id === id)?.name ?? ""; }
   get songName(): string { return this.items?.songs.find((s) => s.id === this.songId)?.name ?? ""; }
   get mappings(): { id: string; name: string }[] { return this.items?.mappings ?? []; }
 
