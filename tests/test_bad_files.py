@@ -85,6 +85,33 @@ def test_a_mesh_file_cut_short_or_indexing_past_its_vertices_is_one_line(tmp_pat
     assert sorted(os.listdir(tmp_path)) == [name]
 
 
+def binary_tetra_ply() -> bytes:
+    """The tetrahedron as a binary little-endian PLY, its bytes laid out by hand: 4 vertices of
+    3 float32 (48 bytes), 4 faces of a uchar count and 3 int32 (52 bytes)."""
+    header = TETRA_PLY.split("end_header\n")[0].replace("format ascii 1.0",
+                                                        "format binary_little_endian 1.0")
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "<f4").tobytes()
+    faces = b"".join(np.uint8(3).tobytes() + np.array(face, "<i4").tobytes()
+                     for face in ([0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3]))
+    return (header + "end_header\n").encode() + vertices + faces
+
+
+@pytest.mark.parametrize("keep", [90, 47, 0])
+def test_a_binary_ply_cut_short_is_one_line_with_its_counts(tmp_path, capfd, keep):
+    """Stop 37 left it: trimesh said "PLY is unexpected length!". The body needs 48 + 4 × 13
+    = 100 bytes (by hand, above); cut to `keep` of them it says what the header declares."""
+    data = binary_tetra_ply()
+    path = tmp_path / "cut.ply"
+    path.write_bytes(data[:len(data) - 100 + keep])
+    refused(["basis", path, "-k", 2, "-o", tmp_path / "b.npz"], capfd,
+            "cut.ply: the PLY header declares 4 vertex and 4 face elements, at least 100 "
+            f"bytes; the file holds {keep} after its header (a file cut short?)")
+    whole = tmp_path / "whole.ply"
+    whole.write_bytes(data)
+    mesh = load_mesh(whole)  # the check refuses only the cut
+    assert len(mesh.vertices) == 4 and len(mesh.faces) == 4
+
+
 def test_relative_obj_indices_count_back_from_the_face(tmp_path):
     """OBJ's -1 is the last vertex *before the face* (trimesh counted from the file's end: the
     second face became the first one again and the first vertex was lost)."""

@@ -159,9 +159,9 @@ def check_off(path: str, name: str) -> None:
 
 
 def check_ply(path: str, name: str) -> None:
-    """InputError for an ASCII PLY file that holds fewer lines than the elements its header
-    declares (a file cut short: trimesh reads the faces there are as a smaller mesh; a binary
-    PLY cut short is refused by trimesh).
+    """InputError for a PLY file that holds less than the elements its header declares (a file
+    cut short): an ASCII one fewer lines (trimesh read the faces there were as a smaller mesh),
+    a binary one fewer bytes (`check_binary_ply`).
 
     Parameters
     ----------
@@ -173,12 +173,13 @@ def check_ply(path: str, name: str) -> None:
     if not data.startswith(b"ply") or end < 0:
         return  # not a header trimesh reads: its own message says so
     header = [line.split() for line in data[:end].decode("ascii", "replace").splitlines()]
-    if ["format", "ascii", "1.0"] not in header:
-        return
     try:
         elements = [(words[1], int(words[2])) for words in header if words[:1] == ["element"]]
     except (IndexError, ValueError):
         raise InputError(f"{name}: a PLY element must give its name and count") from None
+    if ["format", "ascii", "1.0"] not in header:
+        check_binary_ply(data[data.find(b"\n", end) + 1:], header, elements, name)
+        return
     body = sum(1 for line in data[end:].split(b"\n")[1:] if line.strip())
     declared = sum(max(0, count) for _, count in elements)
     if body < declared:
@@ -190,6 +191,49 @@ def check_ply(path: str, name: str) -> None:
                          + " and ".join(f"{count} {kind}" for kind, count in elements)
                          + " elements; the file holds " + " and ".join(map(str, held))
                          + " (a file cut short?)")
+
+
+# Bytes of each PLY scalar type (the PLY format's names and their sized aliases).
+PLY_SIZES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort": 2, "int16": 2,
+             "uint16": 2, "int": 4, "uint": 4, "int32": 4, "uint32": 4, "float": 4,
+             "float32": 4, "double": 8, "float64": 8}
+
+
+def check_binary_ply(body: bytes, header: list, elements: list, name: str) -> None:
+    """InputError for a binary PLY whose body is shorter than its header's elements need: the
+    fixed-size properties exactly, a list at least its count (and three indices for a face's
+    vertex list: a face has three corners or more). trimesh said only "PLY is unexpected
+    length!". A header this cannot size (an unknown type) is left to trimesh.
+
+    Parameters
+    ----------
+    body : the bytes after the header's end_header line.
+    header : the header's lines, split in words.
+    elements : (name, count) of each element, in order.
+    name : how messages call the file.
+    """
+    needs, current = {}, None
+    for words in header:
+        if words[:1] == ["element"]:
+            current = words[1]
+            needs[current] = 0
+        elif words[:1] == ["property"] and current is not None:
+            if words[1:2] == ["list"] and len(words) >= 5:
+                least = 3 if words[4] in ("vertex_indices", "vertex_index") else 0
+                sizes = PLY_SIZES.get(words[2]), PLY_SIZES.get(words[3])
+                if None in sizes:
+                    return
+                needs[current] += sizes[0] + least * sizes[1]
+            elif len(words) >= 3 and words[1] in PLY_SIZES:
+                needs[current] += PLY_SIZES[words[1]]
+            else:
+                return
+    need = sum(needs.get(kind, 0) * max(0, count) for kind, count in elements)
+    if len(body) < need:
+        raise InputError(f"{name}: the PLY header declares "
+                         + " and ".join(f"{count} {kind}" for kind, count in elements)
+                         + f" elements, at least {need} bytes; the file holds {len(body)} "
+                         "after its header (a file cut short?)")
 
 
 def check_stl_length(path: str, name: str) -> None:
