@@ -132,7 +132,7 @@ def rig_files() -> list[str]:
 
 def test_high_modes_are_shown_slow_enough_to_see_and_say_both_frequencies(browser, live_server):
     """Item 7: a mode above what a page shows plays time-scaled to 1.5 Hz at most, its tile
-    saying the natural and the shown frequency (the hand's last page: modes of 2–20 Hz)."""
+    saying the played and the shown frequency (the hand's last page: modes of 2–20 Hz)."""
     page = open_app(browser, live_server["url"], "?test", 1280, 800)
     try:
         open_rig_from_menu(page, live_server["url"], "hand")
@@ -140,10 +140,14 @@ def test_high_modes_are_shown_slow_enough_to_see_and_say_both_frequencies(browse
             page.click("#rig-more-modes")
         labels = page.locator("#rig-tiles .caption").all_text_contents()
         assert labels and all(", shown at " in label for label in labels), labels
+        scale = page.evaluate("window.eigendance.rig.playerMapping()")["modes"]["time_scale"]
+        naturals = page.evaluate("window.eigendance.rig.info().frequencies")
         for label in labels:
-            natural, shown = (float(x.split(" Hz")[0]) for x in
-                              label.split(" · ")[1].split(", shown at "))
-            assert natural > 1.5 and shown == 1.5, label
+            played, shown = (float(x.split(" Hz")[0]) for x in
+                             label.split(" · ")[1].split(", shown at "))
+            assert played > 1.5 and shown == 1.5, label
+            mode = int(label.split(" · ")[0].split()[1]) - 1  # as played: natural × time scale
+            assert played == pytest.approx(naturals[mode] * scale, abs=0.006), label
     finally:
         page.close()
 

@@ -58,7 +58,7 @@ def label(mode: int, natural: float, scale: float) -> str:
         said = f"{natural * scale:.2f} Hz" + ("" if abs(scale - 1) < 5e-3
                                               else f" (×{scale:.2f} time scale)")
     else:
-        said = f"{natural:.2f} Hz, shown at {shown:.2f} Hz"
+        said = f"{natural * scale:.2f} Hz, shown at {shown:.2f} Hz"  # as played, and shown
     return f"mode {mode + 1} · {said}"
 
 

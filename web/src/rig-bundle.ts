@@ -107,8 +107,10 @@ export function playedFrequency(natural: number, timeScale: number): string {
 export const SHOWN_HZ = { low: 0.4, high: 1.5 };
 
 /** A mode tile's time scale: the mode at `natural` Hz × the palette's `timeScale`, brought
- * into SHOWN_HZ; and its label, the natural and the shown frequency ("42.10 Hz, shown at
- * 1.50 Hz"; one number when they agree). */
+ * into SHOWN_HZ; and its label, the frequency as played (s·ν, as everywhere) and the shown
+ * one ("56.13 Hz, shown at 1.50 Hz"; one number, with the time scale, when they agree). The
+ * natural frequency had stood there beside played ones: "mode 11 · 1.42 Hz (×1.33 time
+ * scale)" then "mode 12 · 1.16 Hz, shown at 1.50 Hz", the higher mode reading lower. */
 export function shownMode(natural: number, timeScale: number): { timeScale: number;
   label: string } {
   if (!(natural > 0)) return { timeScale, label: playedFrequency(natural, timeScale) };
@@ -117,7 +119,7 @@ export function shownMode(natural: number, timeScale: number): { timeScale: numb
     return { timeScale, label: playedFrequency(natural, timeScale) };
   }
   return { timeScale: shown / natural,
-    label: `${natural.toFixed(2)} Hz, shown at ${shown.toFixed(2)} Hz` };
+    label: `${(natural * timeScale).toFixed(2)} Hz, shown at ${shown.toFixed(2)} Hz` };
 }
 
 /** "mode 4", "modes 1–3, 5": 0-based mode indices as the page numbers them (from 1). */

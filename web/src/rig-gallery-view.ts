@@ -303,9 +303,11 @@ export class RigGalleryView {
       const mode = prepared.selected[0];
       const natural = rig.frequencies[mode];
       label.textContent = `mode ${mode + 1} · ${shownMode(natural, this.events.timeScale()).label}`;
-      label.title = `natural frequency ${natural.toFixed(3)} Hz, shown × `
-        + `${prepared.timeScale.toFixed(3)} (a page shows ${SHOWN_HZ.low}–${SHOWN_HZ.high} Hz); `
-        + "the player plays it at the palette's time scale; click to select, then combine";
+      const palette = this.events.timeScale();
+      label.title = `natural frequency ${natural.toFixed(3)} Hz; played at the palette's time `
+        + `scale ×${palette.toFixed(2)}: ${(natural * palette).toFixed(3)} Hz; this tile shows it `
+        + `× ${prepared.timeScale.toFixed(3)} (a page shows ${SHOWN_HZ.low}–${SHOWN_HZ.high} Hz); `
+        + "click to select, then combine";
       element.classList.toggle("selected", this.selectedModes.has(mode));
     } else {
       label.textContent = `#${index + 1} · ${danceLabel(rig, prepared)}`
