@@ -99,3 +99,17 @@ def wait_for(condition, seconds=5.0) -> bool:
             return True
         time.sleep(0.002)
     return False
+
+
+def folded_over(rest, faces, moved):
+    """Which faces are folded over (their normal against the rest normal) in each frame
+    (F, n, 3) → (F, m) bool, and each face's area weight (m,): an independent reading of what a
+    gallery's fold cap promises, from positions alone."""
+    import numpy as np
+
+    def normals(x):
+        return np.cross(x[..., faces[:, 1], :] - x[..., faces[:, 0], :],
+                        x[..., faces[:, 2], :] - x[..., faces[:, 0], :])
+    at_rest = normals(rest)
+    return (np.einsum("fij,ij->fi", normals(moved), at_rest) < 0,
+            np.linalg.norm(at_rest, axis=-1))

@@ -18,7 +18,7 @@ from eigendance.inputs.defaults import DEFAULT_K
 from eigendance.music.dancer import edge_strain, first_positive_root, fold_scale
 from eigendance.music.gallery import initial_gallery
 from eigendance.music.spectrogram import Spectrogram
-from helpers import fixture_path
+from helpers import fixture_path, folded_over
 
 # An edge at most this many times its rest length in any frame of the song. The cap allows a
 # linearised change of 3 rest lengths (a length of at most 4×), measured on the 16 frames that
@@ -90,12 +90,7 @@ def test_edge_strain_is_the_largest_change_of_an_edge_over_its_length():
 
 def folded_share(rest, faces, moved):
     """The largest share of the surface's area turned past edge-on in any frame (F, n, 3)."""
-    def normals(x):
-        return np.cross(x[..., faces[:, 1], :] - x[..., faces[:, 0], :],
-                        x[..., faces[:, 2], :] - x[..., faces[:, 0], :])
-    at_rest = normals(rest)
-    area = np.linalg.norm(at_rest, axis=-1)
-    over = np.einsum("fij,ij->fi", normals(moved), at_rest) < 0
+    over, area = folded_over(rest, faces, moved)
     return float((over * area).sum(axis=1).max() / area.sum())
 
 

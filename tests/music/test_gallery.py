@@ -32,7 +32,7 @@ from eigendance.music.gallery import (
 )
 from eigendance.music.mapping import Mapping
 from eigendance.music.spectrogram import Spectrogram
-from helpers import bumpy_sphere, fixture_path, required, sphere
+from helpers import bumpy_sphere, fixture_path, folded_over, required, sphere
 
 CAT = os.path.join(os.path.dirname(__file__), "..", "..", "src", "eigendance", "data",
                    "cat_lowres.obj")
@@ -154,14 +154,8 @@ def folded_weight(basis, song, item, factor):
     rest = basis.vertices
     moved = basis.filter_positions(1 + factor * (phi - 1))
     loudest = np.argsort(np.sqrt(((moved - rest) ** 2).sum(-1).mean(-1)))[-16:]
-    faces = basis.faces
-
-    def normals(x):
-        return np.cross(x[..., faces[:, 1], :] - x[..., faces[:, 0], :],
-                        x[..., faces[:, 2], :] - x[..., faces[:, 0], :])
-    at_rest = normals(rest)
-    area = np.linalg.norm(at_rest, axis=-1)
-    over = (np.einsum("fij,ij->fi", normals(moved[loudest]), at_rest) < 0).any(axis=0)
+    over, area = folded_over(rest, basis.faces, moved[loudest])
+    over = over.any(axis=0)  # a face folded in any of them
     return float(area[over].sum() / area.sum())
 
 

@@ -42,8 +42,13 @@ export interface Options {
 /** The render scale `?scale=` asks for, or null (dynamic resolution) when absent or not a
  * number in [0.1, 1]. */
 export function fixedScale(raw: string | null): number | null {
+  return numberIn(raw, 0.1, 1);
+}
+
+/** `raw` as a number in [low, high], or null when absent, empty or outside. */
+function numberIn(raw: string | null, low: number, high: number): number | null {
   const value = raw === null || raw.trim() === "" ? NaN : Number(raw);
-  return Number.isFinite(value) && value >= 0.1 && value <= 1 ? value : null;
+  return Number.isFinite(value) && value >= low && value <= high ? value : null;
 }
 
 /** The frame rates `?fps=` may ask for. */
@@ -52,8 +57,7 @@ export const MIN_FPS = 1, MAX_FPS = 120;
 /** The frame rate `?fps=` asks the page to aim at (a projector's 30 or 60), or null (the
  * default target) when absent or not a number in [MIN_FPS, MAX_FPS]. */
 export function targetFps(raw: string | null): number | null {
-  const value = raw === null || raw.trim() === "" ? NaN : Number(raw);
-  return Number.isFinite(value) && value >= MIN_FPS && value <= MAX_FPS ? value : null;
+  return numberIn(raw, MIN_FPS, MAX_FPS);
 }
 
 export function readOptions(search: string): Options {

@@ -302,8 +302,8 @@ export class RigGalleryView {
     if (this.mode === "modes") {
       const mode = prepared.selected[0];
       const natural = rig.frequencies[mode];
-      label.textContent = `mode ${mode + 1} · ${shownMode(natural, this.events.timeScale()).label}`;
       const palette = this.events.timeScale();
+      label.textContent = `mode ${mode + 1} · ${shownMode(natural, palette).label}`;
       label.title = `natural frequency ${natural.toFixed(3)} Hz; played at the palette's time `
         + `scale ×${palette.toFixed(2)}: ${(natural * palette).toFixed(3)} Hz; this tile shows it `
         + `× ${prepared.timeScale.toFixed(3)} (a page shows ${SHOWN_HZ.low}–${SHOWN_HZ.high} Hz); `
